@@ -1,0 +1,32 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/common/errors.xsl - how every robomda stylesheet reports an error.
+
+  Reads:   nothing (a function module, included by the stage stylesheets).
+  Writes:  nothing.
+  Params:  none.
+  Errors:  raises the code it is given, in namespace urn:robomda:error.
+
+  Contract with the driver (src/robomda/diagnostics.py): the error's
+  description is "MESSAGE [xmi:id=ID]". The driver maps ID back to the file,
+  line and element of the user's XMI. ID is the xmi:id of the offending model
+  element (in the PIM and PSMs, the @id / @xmi-id that element carries);
+  "" when no element is at fault. Each code is declared, with its meaning, in
+  the header of the stylesheet that raises it and listed in docs/errors.md.
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:f="urn:robomda:xslt:function"
+    xmlns:err="urn:robomda:error"
+    exclude-result-prefixes="#all">
+
+  <!-- Raise error $code about the model element with id $id. -->
+  <xsl:function name="f:fail" as="none">
+    <xsl:param name="code" as="xs:string"/>
+    <xsl:param name="id" as="xs:string?"/>
+    <xsl:param name="message" as="xs:string"/>
+    <xsl:sequence select="error(QName('urn:robomda:error', 'err:' || $code),
+                                $message || ' [xmi:id=' || string($id) || ']')"/>
+  </xsl:function>
+</xsl:stylesheet>
