@@ -8,7 +8,8 @@
   Errors:  raises the code it is given, in namespace urn:robomda:error.
 
   Contract with the driver (src/robomda/diagnostics.py): the error's
-  description is "MESSAGE [xmi:id=ID]". The driver maps ID back to the file,
+  description is "CODE: MESSAGE [xmi:id=ID]" (Saxon's Python API passes on
+  the description only, so the code travels in it too). The driver maps ID back to the file,
   line and element of the user's XMI. ID is the xmi:id of the offending model
   element (in the PIM and PSMs, the @id / @xmi-id that element carries);
   "" when no element is at fault. Each code is declared, with its meaning, in
@@ -27,6 +28,6 @@
     <xsl:param name="id" as="xs:string?"/>
     <xsl:param name="message" as="xs:string"/>
     <xsl:sequence select="error(QName('urn:robomda:error', 'err:' || $code),
-                                $message || ' [xmi:id=' || string($id) || ']')"/>
+                                $code || ': ' || $message || ' [xmi:id=' || string($id) || ']')"/>
   </xsl:function>
 </xsl:stylesheet>

@@ -1,0 +1,98 @@
+"""The ``robomda`` command line: a thin layer over :mod:`robomda.api`."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from robomda import __version__
+from robomda.api import generate, import_model, targets
+from robomda.diagnostics import EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, RobomdaError
+from robomda.output import atomic_write
+
+__all__ = ["main"]
+
+_EXIT_CODES = """exit codes:
+  0  success
+  1  the model has errors (each reported as FILE:LINE:COL: error: [CODE] ...)
+  2  usage error, or input that cannot be read (missing, not XML, not UML XMI)
+  3  internal error in robomda (please report it with the model)"""
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="robomda",
+        description="Generate robot middleware code and deployment files from UML XMI models.",
+        epilog=_EXIT_CODES, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--version", action="version", version=f"robomda {__version__}")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+
+    gen = sub.add_parser(
+        "generate", help="generate a middleware package from an XMI model",
+        description="Run the target's chain (import, bind, PSM, text) on MODEL and write the package into OUT. "
+                    "Nothing is written if any step fails; files you edit are never overwritten.",
+        epilog=_EXIT_CODES, formatter_class=argparse.RawDescriptionHelpFormatter)
+    gen.add_argument("model", type=Path, metavar="MODEL", help="the UML XMI file (.xmi, .uml, .xml)")
+    gen.add_argument("-o", "--output", type=Path, required=True, metavar="OUT", help="output folder (the package root)")
+    gen.add_argument("-t", "--target", default="orocos", choices=targets(), help="middleware target (default: orocos)")
+    gen.add_argument("--package-name", default="", metavar="NAME",
+                     help="package / CMake project name (default: derived from the model name)")
+    gen.add_argument("--save-stages", type=Path, metavar="DIR",
+                     help="also write every intermediate model (PIM, PSM, file set) into DIR")
+
+    imp = sub.add_parser(
+        "import", help="write the platform-independent model (PIM) of an XMI model",
+        description="Import MODEL into robomda's PIM (validated against schemas/pim/1/pim.xsd) and write it, "
+                    "so you can see what robomda understood of your model.",
+        epilog=_EXIT_CODES, formatter_class=argparse.RawDescriptionHelpFormatter)
+    imp.add_argument("model", type=Path, metavar="MODEL", help="the UML XMI file")
+    imp.add_argument("-o", "--output", type=Path, required=True, metavar="OUT",
+                     help="a file ending in .xml, or a folder that receives MODEL-NAME.pim.xml")
+    imp.add_argument("--no-bind", action="store_true",
+                     help="stop after the import proper (skip the platform binding)")
+    return parser
+
+
+def _pim_destination(model: Path, out: Path) -> Path:
+    if out.suffix.lower() == ".xml" and not out.is_dir():
+        return out
+    return out / f"{model.stem.split('.')[0]}.pim.xml"
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = _parser().parse_args(argv)
+    try:
+        if args.command == "generate":
+            done = generate(args.model, args.output, args.target, package_name=args.package_name)
+            if args.save_stages:
+                for name, text in done.stages.items():
+                    atomic_write(args.save_stages / f"{name}.xml", text.encode("utf-8"))
+            report = done.report
+            if report is not None:
+                print(f"robomda: {args.target} package in {args.output}: {len(report.written)} written, "
+                      f"{len(report.unchanged)} unchanged, {len(report.kept_user)} user files kept"
+                      + (f", fresh copies beside them: {', '.join(report.fresh_copies)}" if report.fresh_copies else "")
+                      + (f", removed stale: {', '.join(report.removed)}" if report.removed else "")
+                      + (f"; kept edited stale files: {', '.join(report.kept_stale)}" if report.kept_stale else ""))
+        else:
+            text = import_model(args.model, bind=not args.no_bind)
+            dest = _pim_destination(args.model, args.output)
+            atomic_write(dest, text.encode("utf-8"))
+            print(f"robomda: PIM written to {dest}")
+    except RobomdaError as exc:
+        for diag in exc.diagnostics:
+            print(diag.format(), file=sys.stderr)
+        return exc.exit_code
+    except OSError as exc:
+        print(f"robomda: error: {exc}", file=sys.stderr)
+        return EXIT_INPUT
+    except Exception as exc:  # noqa: BLE001 - the last guard: a bug, reported without a traceback
+        print(f"robomda: internal error: {type(exc).__name__}: {exc} (please report it with the model)",
+              file=sys.stderr)
+        return EXIT_INTERNAL
+    return EXIT_OK
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,184 @@
+"""Diagnostics that point at the user's XMI: file, line, column, element.
+
+Every failure robomda reports - an XML parse error, a schema violation of an
+intermediate model, an ``error()`` raised by a stylesheet - becomes a
+:class:`Diagnostic`. Stylesheets raise errors as ``CODE: MESSAGE [xmi:id=ID]``
+(see ``xslt/common/errors.xsl``); :class:`XmiLocator` maps ID back to the line
+of the XMI element that carries it.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from lxml import etree
+
+__all__ = [
+    "Diagnostic",
+    "RobomdaError",
+    "XmiLocator",
+    "EXIT_OK",
+    "EXIT_FINDINGS",
+    "EXIT_INPUT",
+    "EXIT_INTERNAL",
+    "parse_stylesheet_error",
+]
+
+EXIT_OK = 0
+EXIT_FINDINGS = 1  # the model has errors
+EXIT_INPUT = 2  # usage error, unreadable or unsupported input
+EXIT_INTERNAL = 3  # a bug in robomda (never a traceback: reported like this)
+
+# Codes that mean "this input cannot be read at all" rather than "this model
+# has an error": they exit with EXIT_INPUT.
+INPUT_CODES = frozenset({"XML001", "IO001", "IMP001", "IMP002"})
+
+_STYLESHEET_ERROR = re.compile(r"(?P<code>[A-Z]{2,5}[0-9]{3}): (?P<message>.*?) \[xmi:id=(?P<id>[^\]]*)\]\s*$", re.S)
+
+
+@dataclass(frozen=True)
+class Diagnostic:
+    """One finding, located in the user's model where possible."""
+
+    severity: str
+    code: str
+    message: str
+    file: str | None = None
+    line: int | None = None
+    column: int | None = None
+    element_kind: str | None = None
+    element_name: str | None = None
+    xmi_id: str | None = None
+    step: str | None = None
+
+    def format(self) -> str:
+        """``FILE:LINE:COL: severity: [CODE] message (kind 'name', xmi:id)``."""
+        where = ""
+        if self.file:
+            where = self.file
+            if self.line:
+                where += f":{self.line}"
+                if self.column:
+                    where += f":{self.column}"
+            where += ": "
+        text = f"{where}{self.severity}: [{self.code}] {self.message}"
+        if self.xmi_id or self.element_kind:
+            parts = []
+            if self.element_kind:
+                parts.append(f"{self.element_kind} '{self.element_name or ''}'")
+            if self.xmi_id:
+                parts.append(self.xmi_id)
+            text += f" ({', '.join(parts)})"
+        return text
+
+
+@dataclass
+class RobomdaError(Exception):
+    """A run failed; ``diagnostics`` say why and where, ``exit_code`` how badly."""
+
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+    exit_code: int = EXIT_FINDINGS
+
+    def __str__(self) -> str:
+        return "\n".join(d.format() for d in self.diagnostics)
+
+
+def parse_stylesheet_error(text: str) -> tuple[str, str, str] | None:
+    """Split a robomda stylesheet error into (code, message, xmi id)."""
+    match = _STYLESHEET_ERROR.search(text.strip())
+    if not match:
+        return None
+    return match["code"], " ".join(match["message"].split()), match["id"]
+
+
+@dataclass(frozen=True)
+class _Where:
+    line: int
+    column: int
+    kind: str
+    name: str
+
+
+class XmiLocator:
+    """Maps xmi:id values of one XMI file to line, column, kind and name.
+
+    The file is read only when a diagnostic needs a location, so a clean run
+    pays nothing for it.
+    """
+
+    def __init__(self, path: Path) -> None:
+        self.path = path
+        self._index: dict[str, _Where] | None = None
+
+    def _build(self) -> dict[str, _Where]:
+        index: dict[str, _Where] = {}
+        try:
+            raw = self.path.read_bytes()
+            parser = etree.XMLParser(huge_tree=True, resolve_entities=False, no_network=True)
+            root = etree.fromstring(raw, parser)
+        except (OSError, etree.XMLSyntaxError):
+            return index
+        lines = raw.decode("utf-8", errors="replace").split("\n")
+        for el in root.iter(etree.Element):
+            xid = _xmi_id(el)
+            if xid is None or xid in index:
+                continue
+            line = el.sourceline or 0
+            index[xid] = _Where(line, _column(lines, line, xid), _kind(el), el.get("name", ""))
+        return index
+
+    def locate(self, xmi_id: str | None) -> _Where | None:
+        if not xmi_id:
+            return None
+        if self._index is None:
+            self._index = self._build()
+        return self._index.get(xmi_id)
+
+    def diagnostic(self, code: str, message: str, xmi_id: str | None, *, severity: str = "error",
+                   step: str | None = None, line: int | None = None, column: int | None = None) -> Diagnostic:
+        """A diagnostic about the element with ``xmi_id`` (or at ``line``)."""
+        where = self.locate(xmi_id)
+        return Diagnostic(
+            severity=severity,
+            code=code,
+            message=message,
+            file=str(self.path),
+            line=where.line if where else line,
+            column=where.column if where else column,
+            element_kind=where.kind if where else None,
+            element_name=where.name if where else None,
+            xmi_id=xmi_id or None,
+            step=step,
+        )
+
+
+def _xmi_id(el: etree._Element) -> str | None:
+    for key, value in el.attrib.items():
+        if key.startswith("{") and key.endswith("}id") and "xmi" in key.lower():
+            return value
+        if key == "xmi.id":
+            return value
+    return None
+
+
+def _kind(el: etree._Element) -> str:
+    for key, value in el.attrib.items():
+        if key.startswith("{") and key.endswith("}type") and "xmi" in key.lower():
+            return value
+    qname = etree.QName(el)
+    prefix = el.prefix
+    return f"{prefix}:{qname.localname}" if prefix else qname.localname
+
+
+def _column(lines: list[str], line: int, xid: str) -> int:
+    """1-based column of the start tag that carries ``xid`` on ``line``."""
+    if not 0 < line <= len(lines):
+        return 1
+    text = lines[line - 1]
+    at = text.find(f'"{xid}"')
+    if at < 0:
+        at = text.find(f"'{xid}'")
+    start = text.rfind("<", 0, at if at >= 0 else len(text))
+    return start + 1 if start >= 0 else 1
