@@ -8,6 +8,7 @@ stage's output, all in memory: nothing is written here.
 
 from __future__ import annotations
 
+import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -63,6 +64,8 @@ class RunResult:
 
     stages: dict[str, str] = field(default_factory=dict)
     tree: etree._Element | None = None
+    # per step: (name, seconds in XSLT, seconds in XSD validation)
+    timings: list[tuple[str, float, float]] = field(default_factory=list)
 
     @property
     def output(self) -> str:
@@ -105,6 +108,7 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
     previous: str | None = None
     for step in pipeline.steps:
         params = {p.name: (p.value if p.value is not None else context.get(p.source or "", "")) for p in step.params}
+        started = time.perf_counter()
         try:
             if previous is None:
                 text = engine.transform(step.stylesheet, params, source_file=model)
@@ -112,7 +116,9 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
                 text = engine.transform(step.stylesheet, params, source_text=previous)
         except TransformError as exc:
             raise _transform_failure(exc, step, locator) from None
+        transformed = time.perf_counter()
         tree, violations = validate(text, step.schema)
+        result.timings.append((step.name, transformed - started, time.perf_counter() - transformed))
         if violations:
             raise RobomdaError([
                 locator.diagnostic("SCHEMA", f"the {step.name} step wrote a model that breaks "

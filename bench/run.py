@@ -1,0 +1,109 @@
+"""robomda benchmark: end-to-end cost as the model grows.
+
+    python bench/run.py                 # sizes 100, 1000, 10000
+    python bench/run.py --sizes 100 1000
+
+For each size it writes a synthetic ring model (bench/synth.py), then, in a
+fresh process per size (so peak memory is that size's own), runs the Orocos
+chain end to end (XMI to files on disk) after one warm-up run on a tiny model
+(so stylesheet compilation is not counted) and reports: wall time, time in
+XSLT and in XSD validation per step, peak resident memory, and a SaxonC
+identity transform of the same XMI as a floor. Every figure comes from the
+same run; compare ratios, not absolute seconds, across machines.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+sys.path.insert(0, str(HERE.parent / "src"))
+
+from synth import write_model  # noqa: E402
+
+_IDENTITY = """<xsl:stylesheet version="3.0" xmlns:xsl="http://www.w3.org/1999/XSL/Transform">
+<xsl:mode on-no-match="shallow-copy"/></xsl:stylesheet>"""
+
+
+def _one(size: int, workdir: Path) -> dict[str, object]:
+    """Measure one size in this process (called in a child process)."""
+    from robomda.api import _engine, generate
+
+    warm = write_model(2, workdir / "warm.xmi")
+    generate(warm, workdir / "warm-out")
+    model = write_model(size, workdir / f"synth-{size}.xmi")
+
+    started = time.perf_counter()
+    done = generate(model, workdir / f"out-{size}")
+    wall = time.perf_counter() - started
+
+    identity = workdir / "identity.xsl"
+    identity.write_text(_IDENTITY)
+    engine = _engine()
+    engine.transform(identity, {}, source_file=warm)
+    started = time.perf_counter()
+    engine.transform(identity, {}, source_file=model)
+    floor = time.perf_counter() - started
+
+    return {
+        "size": size,
+        "xmi_bytes": model.stat().st_size,
+        "wall_s": wall,
+        "xslt_s": sum(t for _, t, _ in done.timings),
+        "xsd_s": sum(v for _, _, v in done.timings),
+        "steps": [[name, t, v] for name, t, v in done.timings],
+        "identity_s": floor,
+        "files": len(done.report.written) if done.report else 0,
+        "peak_rss_mib": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024,
+    }
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--sizes", type=int, nargs="+", default=[100, 1000, 10000])
+    parser.add_argument("--one", type=int, help=argparse.SUPPRESS)
+    parser.add_argument("--workdir", type=Path, help=argparse.SUPPRESS)
+    args = parser.parse_args()
+    if args.one:
+        print(json.dumps(_one(args.one, args.workdir)))
+        return 0
+
+    rows = []
+    with tempfile.TemporaryDirectory(prefix="robomda-bench-") as tmp:
+        for size in args.sizes:
+            work = Path(tmp) / str(size)
+            work.mkdir()
+            proc = subprocess.run([sys.executable, __file__, "--one", str(size), "--workdir", str(work)],
+                                  capture_output=True, text=True)
+            if proc.returncode != 0:
+                print(f"size {size} failed:\n{proc.stderr}", file=sys.stderr)
+                return 1
+            rows.append(json.loads(proc.stdout.strip().splitlines()[-1]))
+
+    print(f"{'components':>10} {'XMI MiB':>8} {'total s':>8} {'XSLT s':>7} {'XSD s':>7} "
+          f"{'identity s':>10} {'total/identity':>14} {'peak MiB':>9} {'files':>6}")
+    for r in rows:
+        print(f"{r['size']:>10} {r['xmi_bytes'] / 2**20:>8.1f} {r['wall_s']:>8.2f} {r['xslt_s']:>7.2f} "
+              f"{r['xsd_s']:>7.2f} {r['identity_s']:>10.3f} {r['wall_s'] / r['identity_s']:>14.1f} "
+              f"{r['peak_rss_mib']:>9.0f} {r['files']:>6}")
+    print("\nper step (XSLT s / XSD s):")
+    for r in rows:
+        print(f"  {r['size']:>6}: " + ", ".join(f"{n} {t:.2f}/{v:.2f}" for n, t, v in r["steps"]))
+    by_size = {r["size"]: r["wall_s"] for r in rows}
+    sizes = sorted(by_size)
+    for small, large in zip(sizes, sizes[1:]):
+        print(f"t({large})/t({small}) = {by_size[large] / by_size[small]:.1f} "
+              f"(linear would be {large / small:.0f})")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,74 @@
+"""The file-set writer: all or nothing, and never over a file the user owns."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from lxml import etree
+
+from robomda.diagnostics import RobomdaError
+from robomda.output import NEW_SUFFIX, STATE_FILE, write_fileset
+
+FS = "urn:robomda:fileset:1"
+
+
+def fileset(*files: tuple[str, str, str]) -> etree._Element:
+    root = etree.Element(f"{{{FS}}}files", target="test")
+    for path, text, mode in files:
+        node = etree.SubElement(root, f"{{{FS}}}file", path=path, mode=mode, stylesheet="x.xsl")
+        node.text = text
+    return root
+
+
+def test_first_run_writes_everything_and_records_generated_files(tmp_path: Path) -> None:
+    report = write_fileset(fileset(("src/a.cpp", "A\n", "generated"), ("src/u.cpp", "U\n", "user")), tmp_path)
+    assert sorted(report.written) == ["src/a.cpp", "src/u.cpp"]
+    assert (tmp_path / "src/a.cpp").read_text() == "A\n"
+    state = (tmp_path / STATE_FILE).read_text()
+    assert "src/a.cpp" in state and "src/u.cpp" not in state
+
+
+def test_second_run_rewrites_generated_and_keeps_user_edits(tmp_path: Path) -> None:
+    write_fileset(fileset(("a.cpp", "A1\n", "generated"), ("u.cpp", "U1\n", "user")), tmp_path)
+    (tmp_path / "u.cpp").write_text("my code\n")
+    report = write_fileset(fileset(("a.cpp", "A2\n", "generated"), ("u.cpp", "U2\n", "user")), tmp_path)
+    assert (tmp_path / "a.cpp").read_text() == "A2\n"
+    assert (tmp_path / "u.cpp").read_text() == "my code\n"
+    assert (tmp_path / ("u.cpp" + NEW_SUFFIX)).read_text() == "U2\n"
+    assert report.kept_user == ["u.cpp"] and report.fresh_copies == ["u.cpp" + NEW_SUFFIX]
+
+
+def test_unchanged_files_are_not_rewritten(tmp_path: Path) -> None:
+    files = fileset(("a.cpp", "A\n", "generated"))
+    write_fileset(files, tmp_path)
+    assert write_fileset(files, tmp_path).unchanged == ["a.cpp"]
+
+
+@pytest.mark.parametrize("how", ["foreign", "edited"])
+def test_a_file_robomda_does_not_own_stops_the_run_before_any_write(tmp_path: Path, how: str) -> None:
+    if how == "edited":
+        write_fileset(fileset(("a.cpp", "A1\n", "generated")), tmp_path)
+    (tmp_path / "a.cpp").write_text("the user's own file\n")
+    with pytest.raises(RobomdaError) as caught:
+        write_fileset(fileset(("b.cpp", "B\n", "generated"), ("a.cpp", "A2\n", "generated")), tmp_path)
+    assert caught.value.diagnostics[0].code == "OUT001"
+    assert "a.cpp" in caught.value.diagnostics[0].message
+    assert (tmp_path / "a.cpp").read_text() == "the user's own file\n"
+    assert not (tmp_path / "b.cpp").exists()
+
+
+def test_stale_generated_files_are_removed_only_when_unedited(tmp_path: Path) -> None:
+    write_fileset(fileset(("old.cpp", "O\n", "generated"), ("edited.cpp", "E\n", "generated")), tmp_path)
+    (tmp_path / "edited.cpp").write_text("changed\n")
+    report = write_fileset(fileset(("new.cpp", "N\n", "generated")), tmp_path)
+    assert report.removed == ["old.cpp"] and not (tmp_path / "old.cpp").exists()
+    assert report.kept_stale == ["edited.cpp"] and (tmp_path / "edited.cpp").read_text() == "changed\n"
+
+
+def test_output_that_is_a_file_is_refused(tmp_path: Path) -> None:
+    target = tmp_path / "out"
+    target.write_text("x")
+    with pytest.raises(RobomdaError) as caught:
+        write_fileset(fileset(("a.cpp", "A\n", "generated")), target)
+    assert caught.value.exit_code == 2
