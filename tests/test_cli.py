@@ -1,0 +1,49 @@
+"""The command line: usage, bad input, exit codes, and nothing written on failure."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from robomda.cli import main
+
+
+def run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
+    code = main(list(argv))
+    captured = capsys.readouterr()
+    return code, captured.out, captured.err
+
+
+@pytest.mark.parametrize("command", ["generate", "import"])
+def test_help_names_the_options_and_exit_codes(capsys: pytest.CaptureFixture[str], command: str) -> None:
+    with pytest.raises(SystemExit) as done:
+        main([command, "--help"])
+    assert done.value.code == 0
+    out = capsys.readouterr().out
+    assert "-o OUT" in out and "exit codes" in out and "MODEL" in out
+
+
+def test_missing_model_is_an_input_error(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    code, _, err = run(capsys, "generate", str(tmp_path / "nope.xmi"), "-o", str(tmp_path / "out"))
+    assert code == 2
+    assert "[IO001]" in err and "nope.xmi" in err
+    assert not (tmp_path / "out").exists()
+
+
+def test_malformed_xml_names_file_line_and_column(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    model = tmp_path / "broken.xmi"
+    model.write_text('<?xml version="1.0"?>\n<xmi:XMI xmlns:xmi="http://www.omg.org/spec/XMI/20131001">\n'
+                     "  <uml:Model>\n</xmi:XMI>\n")
+    code, _, err = run(capsys, "generate", str(model), "-o", str(tmp_path / "out"))
+    assert code == 2
+    first = err.splitlines()[0]
+    assert first.startswith(f"{model}:3:") and "[XML001]" in first
+    assert not (tmp_path / "out").exists()
+
+
+def test_unknown_target_is_refused_by_the_parser(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    with pytest.raises(SystemExit) as done:
+        main(["generate", "m.xmi", "-o", str(tmp_path), "--target", "player"])
+    assert done.value.code == 2
+    assert "invalid choice" in capsys.readouterr().err
