@@ -23,7 +23,8 @@
     exclude-result-prefixes="#all">
 
   <!-- Raise error $code about the model element with id $id. -->
-  <xsl:function name="f:fail" as="none">
+  <xsl:function name="f:fail" as="item()*">
+    <!-- item()* so a call fits any context; it never returns -->
     <xsl:param name="code" as="xs:string"/>
     <xsl:param name="id" as="xs:string?"/>
     <xsl:param name="message" as="xs:string"/>
