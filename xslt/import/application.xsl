@@ -1,0 +1,333 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/import/application.xsl - the application part of the PIM (component
+  diagram, seed 000 Tables 1, 2 and 4).
+
+  Reads:   the normalised XMI, from the model root (fp:root-of) down.
+  Writes:  pim:package, pim:primitive, pim:datatype, pim:enumeration,
+           pim:class, pim:interface, pim:component and what they hold
+           (schemas/pim/1/pim.xsd); mode mp:packageable.
+  Params:  none.
+  Errors:  none raised here: the check pass (check.xsl) has reported every
+           dangling reference before this runs.
+
+  Rules (by UML metaclass, xmi:type or the feature's default type)
+  - Package, Model (nested models too) -> pim:package. Contents:
+    packagedElement, ownedMember, ownedType; nested classifiers:
+    nestedClassifier and a component's packagedElement.
+  - Deployment elements (Node, Device, ExecutionEnvironment, Artifact,
+    DeploymentSpecification, CommunicationPath) are skipped here: they go
+    to pim:platform wherever they are in the model (platform.xsl).
+  - Class / Component / Interface: generalization (general; an href into
+    another model is skipped), provides (InterfaceRealization owned by or
+    with client = the classifier; EA <provided xmi:idref>; a generic
+    Realization to an interface), requires (Usage with client = the
+    classifier; EA <required xmi:idref>), attributes, ports, parts
+    (composite Property typed by a Class or Component, owned by a class or
+    component), operations, connectors.
+  - Component realization: realization (ComponentRealization, realizing-
+    Classifier, else its client) and EA's Realization class -> component.
+  - Interfaces, usages and realizations that point into another model
+    (href) have no PIM element to refer to and are not written.
+  - Port: type (interface or class), explicit provided / required (EA
+    children; Usage or InterfaceRealization whose client is the port),
+    isConjugated, isService, isBehavior.
+  - Connector: kind from @kind, else delegation when an end has no
+    partWithPort and its role is a port of the connector's owner; ends with
+    role and part (partWithPort). A connector with an end outside the model
+    (href role) is not written.
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:map="http://www.w3.org/2005/xpath-functions/map"
+    xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:mp="urn:robomda:xslt:mode:private"
+    xmlns:tp="urn:robomda:xslt:template:private"
+    xmlns:x="urn:robomda:import:xmi"
+    xmlns:pim="urn:robomda:pim:1"
+    exclude-result-prefixes="#all">
+
+  <xsl:mode name="mp:packageable" on-no-match="deep-skip"/>
+  <xsl:mode name="mp:feature" on-no-match="deep-skip"/>
+
+  <!-- the packageable elements owned by $e (a package or a classifier) -->
+  <xsl:function name="fp:owned-packageables" as="element()*">
+    <xsl:param name="e" as="element()"/>
+    <xsl:sequence select="$e/(packagedElement | ownedMember | ownedType | nestedClassifier)"/>
+  </xsl:function>
+
+  <!-- ========================================================= packages -->
+  <xsl:template match="*[fp:meta(.) = ('Package', 'Model')]" mode="mp:packageable"
+                as="element(pim:package)">
+    <pim:package id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+      <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
+      <xsl:apply-templates select="fp:owned-packageables(.)" mode="mp:packageable"/>
+    </pim:package>
+  </xsl:template>
+
+  <!-- ============================================== simple classifiers -->
+  <xsl:template match="*[fp:meta(.) eq 'PrimitiveType']" mode="mp:packageable"
+                as="element(pim:primitive)">
+    <pim:primitive id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+      <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
+    </pim:primitive>
+  </xsl:template>
+
+  <xsl:template match="*[fp:meta(.) eq 'DataType']" mode="mp:packageable"
+                as="element(pim:datatype)">
+    <pim:datatype id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+      <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
+      <xsl:apply-templates select="generalization" mode="mp:feature"/>
+      <xsl:apply-templates select="ownedAttribute[fp:meta(.) ne 'Port']" mode="mp:feature"/>
+      <xsl:apply-templates select="ownedOperation" mode="mp:feature"/>
+    </pim:datatype>
+  </xsl:template>
+
+  <xsl:template match="*[fp:meta(.) eq 'Enumeration']" mode="mp:packageable"
+                as="element(pim:enumeration)">
+    <pim:enumeration id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+      <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
+      <xsl:for-each select="ownedLiteral">
+        <pim:literal id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+          <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
+        </pim:literal>
+      </xsl:for-each>
+    </pim:enumeration>
+  </xsl:template>
+
+  <!-- ====================================================== classifiers -->
+  <xsl:template match="*[fp:meta(.) eq 'Class']" mode="mp:packageable" as="element(pim:class)">
+    <pim:class id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}"
+        abstract="{fp:bool(@isAbstract, false())}" active="{fp:bool(@isActive, false())}">
+      <xsl:call-template name="tp:classifier-body"/>
+      <xsl:apply-templates select="fp:owned-packageables(.)" mode="mp:packageable"/>
+    </pim:class>
+  </xsl:template>
+
+  <xsl:template match="*[fp:meta(.) eq 'Interface']" mode="mp:packageable" as="element(pim:interface)">
+    <pim:interface id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+      <xsl:call-template name="tp:classifier-body"/>
+      <xsl:apply-templates select="fp:owned-packageables(.)" mode="mp:packageable"/>
+    </pim:interface>
+  </xsl:template>
+
+  <xsl:template match="*[fp:meta(.) eq 'Component']" mode="mp:packageable" as="element(pim:component)">
+    <xsl:variable name="c" as="element()" select="."/>
+    <pim:component id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}"
+        abstract="{fp:bool(@isAbstract, false())}">
+      <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
+      <xsl:variable name="realizations" as="element()*"
+          select="realization[fp:meta(.) eq 'ComponentRealization']
+                  | key('fp:dep-by-supplier', fp:id(.))[fp:meta(.) eq 'ComponentRealization']
+                    [not(fp:meta(..) eq 'Component')]
+                  | fp:ea-realizations(.)"/>
+      <xsl:for-each select="$realizations">
+        <xsl:variable name="r" as="element()" select="."/>
+        <xsl:variable name="classifiers" as="element()*"
+            select="if (exists(fp:ref-ids(., 'realizingClassifier')))
+                    then fp:targets(., 'realizingClassifier')
+                    else (fp:targets(., 'client') except $c,
+                          fp:targets(., 'supplier') except $c)[1]"/>
+        <xsl:for-each select="$classifiers">
+          <pim:realization id="{fp:nth-id($r, position())}" classifier="{fp:id(.)}"/>
+        </xsl:for-each>
+      </xsl:for-each>
+      <xsl:call-template name="tp:classifier-body">
+        <xsl:with-param name="decorate" select="false()"/>
+      </xsl:call-template>
+      <xsl:apply-templates select="fp:owned-packageables(.)" mode="mp:packageable"/>
+    </pim:component>
+  </xsl:template>
+
+  <!-- the pim:classifier-body group of the context classifier -->
+  <xsl:template name="tp:classifier-body" as="element()*">
+    <xsl:param name="decorate" as="xs:boolean" select="true()"/>
+    <xsl:variable name="c" as="element()" select="."/>
+    <xsl:variable name="id" as="xs:string" select="fp:id(.)"/>
+    <xsl:variable name="meta" as="xs:string" select="fp:meta(.)"/>
+    <xsl:if test="$decorate">
+      <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
+    </xsl:if>
+    <xsl:apply-templates select="generalization" mode="mp:feature"/>
+    <!-- provides -->
+    <xsl:variable name="realizations" as="element()*"
+        select="interfaceRealization
+                | key('fp:dep-by-client', $id)[fp:meta(.) = ('InterfaceRealization', 'Realization')]"/>
+    <xsl:for-each select="$realizations">
+      <xsl:variable name="r" as="element()" select="."/>
+      <xsl:for-each select="fp:realized-interfaces(.)">
+        <pim:provides id="{fp:nth-id($r, position())}" interface="{fp:id(.)}">
+          <xsl:if test="position() eq 1">
+            <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="$r"/></xsl:call-template>
+          </xsl:if>
+        </pim:provides>
+      </xsl:for-each>
+    </xsl:for-each>
+    <xsl:for-each select="fp:exposed(., 'provided')">
+      <xsl:variable name="exposed" as="element()" select="."/>
+      <xsl:for-each select="fp:interface-of(.)">
+        <pim:provides id="{fp:id($exposed)}" interface="{fp:id(.)}"/>
+      </xsl:for-each>
+    </xsl:for-each>
+    <!-- requires -->
+    <xsl:for-each select="key('fp:dep-by-client', $id)[fp:meta(.) eq 'Usage']">
+      <xsl:variable name="u" as="element()" select="."/>
+      <xsl:variable name="clients" as="xs:string*" select="distinct-values(fp:ref-ids(., 'client'))"/>
+      <xsl:variable name="offset" as="xs:integer"
+          select="(index-of($clients, $id)[1] - 1) * count(fp:ref-ids(., 'supplier'))"/>
+      <xsl:for-each select="fp:used-interfaces(.)">
+        <pim:requires id="{fp:nth-id($u, $offset + position())}" interface="{fp:id(.)}">
+          <xsl:if test="position() eq 1 and $offset eq 0">
+            <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="$u"/></xsl:call-template>
+          </xsl:if>
+        </pim:requires>
+      </xsl:for-each>
+    </xsl:for-each>
+    <xsl:for-each select="fp:exposed(., 'required')">
+      <xsl:variable name="exposed" as="element()" select="."/>
+      <xsl:for-each select="fp:interface-of(.)">
+        <pim:requires id="{fp:id($exposed)}" interface="{fp:id(.)}"/>
+      </xsl:for-each>
+    </xsl:for-each>
+    <!-- structural features -->
+    <xsl:variable name="properties" as="element()*"
+        select="ownedAttribute[fp:meta(.) ne 'Port']"/>
+    <xsl:variable name="parts" as="element()*"
+        select="if ($meta = ('Class', 'Component')) then $properties[fp:is-part(.)] else ()"/>
+    <xsl:apply-templates select="$properties except $parts" mode="mp:feature"/>
+    <xsl:apply-templates select="(ownedAttribute | ownedPort)[fp:meta(.) eq 'Port']" mode="mp:feature"/>
+    <xsl:for-each select="$parts">
+      <pim:part id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+        <xsl:sequence select="fp:typed(.)"/>
+        <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
+      </pim:part>
+    </xsl:for-each>
+    <xsl:apply-templates select="ownedOperation" mode="mp:feature"/>
+    <xsl:apply-templates select="ownedConnector[not(end/role/@href or end/partWithPort/@href)]"
+        mode="mp:feature"/>
+    <xsl:for-each select="ownedConnector[end/role/@href or end/partWithPort/@href]">
+      <xsl:message select="'robomda import: connector ' || fp:label(.) || ' [xmi:id=' || fp:id(.)
+                           || '] has an end in another model; not imported'"/>
+    </xsl:for-each>
+  </xsl:template>
+
+  <!-- a composite property typed by a class or component: a part -->
+  <xsl:function name="fp:is-part" as="xs:boolean">
+    <xsl:param name="p" as="element()"/>
+    <xsl:variable name="t" as="element()?" select="fp:type-element($p)"/>
+    <xsl:variable name="href-type" as="element()?" select="$p/type[@href][1]"/>
+    <xsl:sequence select="$p/@aggregation = 'composite'
+        and (fp:meta(($t, $href-type)[1]) = ('Class', 'Component'))"/>
+  </xsl:function>
+
+  <!-- the interfaces an InterfaceRealization or Realization realizes -->
+  <xsl:function name="fp:realized-interfaces" as="element()*">
+    <xsl:param name="r" as="element()"/>
+    <xsl:variable name="contract" as="element()*" select="fp:targets($r, 'contract')"/>
+    <xsl:variable name="all" as="element()*"
+        select="(if (exists($contract)) then $contract else fp:targets($r, 'supplier')) ! fp:interface-of(.)"/>
+    <xsl:sequence select="$all/."/>
+  </xsl:function>
+
+  <!-- the interfaces a Usage uses -->
+  <xsl:function name="fp:used-interfaces" as="element()*">
+    <xsl:param name="u" as="element()"/>
+    <xsl:sequence select="(fp:targets($u, 'supplier') ! fp:interface-of(.))/."/>
+  </xsl:function>
+
+  <!-- ========================================================= features -->
+  <xsl:template match="generalization" mode="mp:feature" as="element(pim:generalization)?">
+    <xsl:variable name="g" as="element()" select="."/>
+    <xsl:for-each select="fp:targets(., 'general')[1]">
+      <pim:generalization id="{fp:id($g)}" general="{fp:id(.)}"/>
+    </xsl:for-each>
+  </xsl:template>
+
+  <xsl:template match="ownedAttribute | ownedEnd" mode="mp:feature" as="element(pim:attribute)">
+    <pim:attribute id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+      <xsl:sequence select="fp:typed(.)"/>
+      <xsl:attribute name="visibility" select="fp:visibility(.)"/>
+      <xsl:attribute name="static" select="fp:bool(@isStatic, false())"/>
+      <xsl:attribute name="read-only" select="fp:bool(@isReadOnly, false())"/>
+      <xsl:attribute name="aggregation"
+          select="if (@aggregation = ('shared', 'composite')) then string(@aggregation) else 'none'"/>
+      <xsl:for-each select="fp:default(.)">
+        <xsl:attribute name="default" select="."/>
+      </xsl:for-each>
+      <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
+    </pim:attribute>
+  </xsl:template>
+
+  <xsl:template match="*[fp:meta(.) eq 'Port']" mode="mp:feature" as="element(pim:port)">
+    <xsl:variable name="id" as="xs:string" select="fp:id(.)"/>
+    <pim:port id="{$id}" name="{@name}" qualified-name="{fp:qname(.)}">
+      <xsl:sequence select="fp:typed(.)"/>
+      <xsl:attribute name="visibility" select="fp:visibility(.)"/>
+      <xsl:attribute name="conjugated" select="fp:bool(@isConjugated, false())"/>
+      <xsl:attribute name="service" select="fp:bool(@isService, true())"/>
+      <xsl:attribute name="behavior" select="fp:bool(@isBehavior, false())"/>
+      <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
+      <xsl:variable name="provided" as="element()*"
+          select="fp:exposed(., 'provided') ! fp:interface-of(.),
+                  fp:targets(., 'provided')[fp:meta(.) eq 'Interface'],
+                  key('fp:dep-by-client', $id)[fp:meta(.) = ('InterfaceRealization', 'Realization')]
+                    ! fp:realized-interfaces(.)"/>
+      <xsl:for-each select="distinct-values($provided ! fp:id(.))">
+        <pim:provided interface="{.}"/>
+      </xsl:for-each>
+      <xsl:variable name="required" as="element()*"
+          select="fp:exposed(., 'required') ! fp:interface-of(.),
+                  fp:targets(., 'required')[fp:meta(.) eq 'Interface'],
+                  key('fp:dep-by-client', $id)[fp:meta(.) eq 'Usage'] ! fp:used-interfaces(.)"/>
+      <xsl:for-each select="distinct-values($required ! fp:id(.))">
+        <pim:required interface="{.}"/>
+      </xsl:for-each>
+    </pim:port>
+  </xsl:template>
+
+  <xsl:template match="ownedOperation" mode="mp:feature" as="element(pim:operation)">
+    <pim:operation id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}"
+        visibility="{fp:visibility(.)}" static="{fp:bool(@isStatic, false())}"
+        abstract="{fp:bool(@isAbstract, false())}" query="{fp:bool(@isQuery, false())}">
+      <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
+      <!-- a void return parameter is no return (EA writes one for every
+           operation) -->
+      <xsl:for-each select="ownedParameter[not(@direction = 'return' and fp:typed(.)[name() eq 'primitive'] = 'void')]">
+        <pim:parameter id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+          <xsl:sequence select="fp:typed(.)"/>
+          <xsl:attribute name="direction"
+              select="if (@direction = ('in', 'out', 'inout', 'return')) then string(@direction) else 'in'"/>
+          <xsl:for-each select="fp:default(.)">
+            <xsl:attribute name="default" select="."/>
+          </xsl:for-each>
+          <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
+        </pim:parameter>
+      </xsl:for-each>
+    </pim:operation>
+  </xsl:template>
+
+  <xsl:template match="ownedConnector" mode="mp:feature" as="element(pim:connector)?">
+    <xsl:variable name="owner" as="element()" select=".."/>
+    <xsl:variable name="ends" as="element()*" select="end[exists(fp:targets(., 'role'))]"/>
+    <xsl:if test="count($ends) ge 2">
+      <xsl:variable name="kind" as="xs:string" select="
+          if (@kind = ('assembly', 'delegation')) then string(@kind)
+          else if (some $end in $ends satisfies
+                     (empty(fp:ref-ids($end, 'partWithPort'))
+                      and (fp:targets($end, 'role')[1]/.. is $owner)
+                      and fp:meta(fp:targets($end, 'role')[1]) eq 'Port'))
+          then 'delegation' else 'assembly'"/>
+      <pim:connector id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}" kind="{$kind}">
+        <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
+        <xsl:for-each select="$ends">
+          <pim:end id="{fp:id(.)}" role="{fp:id(fp:targets(., 'role')[1])}">
+            <xsl:for-each select="fp:targets(., 'partWithPort')[1]">
+              <xsl:attribute name="part" select="fp:id(.)"/>
+            </xsl:for-each>
+          </pim:end>
+        </xsl:for-each>
+      </pim:connector>
+    </xsl:if>
+  </xsl:template>
+</xsl:stylesheet>

@@ -1,0 +1,68 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/import/check.xsl - the reference checks of the XMI import.
+
+  Reads:   the normalised XMI.
+  Writes:  nothing; fp:problems describes what is wrong with one element,
+           import.xsl raises the first problem in document order (so the
+           reported element does not depend on the engine's evaluation
+           order).
+  Params:  none.
+  Errors:  the descriptions of IMP010-IMP019 (codes documented in
+           import.xsl). A reference is dangling when it is an id that no
+           element of the file (outside xmi:Extension) carries and that is
+           not a tool built-in type (EAJava_int ...). An href into another
+           file is never dangling.
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:map="http://www.w3.org/2005/xpath-functions/map"
+    xmlns:fp="urn:robomda:xslt:function:private"
+    exclude-result-prefixes="#all">
+
+  <!-- which references of which metaclass are checked, with the code -->
+  <xsl:variable name="checked-references" as="map(xs:string, map(*))" select="map {
+      'Property':             map { 'code': 'IMP010', 'refs': ('type') },
+      'Parameter':            map { 'code': 'IMP010', 'refs': ('type') },
+      'Port':                 map { 'code': 'IMP011', 'refs': ('type') },
+      'Generalization':       map { 'code': 'IMP012', 'refs': ('general') },
+      'ComponentRealization': map { 'code': 'IMP013', 'refs': ('realizingClassifier', 'client', 'supplier') },
+      'Realization':          map { 'code': 'IMP013', 'refs': ('client', 'supplier') },
+      'InterfaceRealization': map { 'code': 'IMP014', 'refs': ('client', 'supplier', 'contract') },
+      'Usage':                map { 'code': 'IMP015', 'refs': ('client', 'supplier') },
+      'Deployment':           map { 'code': 'IMP016', 'refs': ('client', 'supplier', 'deployedArtifact', 'location') },
+      'Manifestation':        map { 'code': 'IMP017', 'refs': ('client', 'supplier', 'utilizedElement') },
+      'ConnectorEnd':         map { 'code': 'IMP018', 'refs': ('role', 'partWithPort') },
+      'CommunicationPath':    map { 'code': 'IMP019', 'refs': ('memberEnd') }
+    }"/>
+
+  <!-- the problems of one element: maps with code, id, message -->
+  <xsl:function name="fp:problems" as="map(*)*">
+    <xsl:param name="e" as="element()"/>
+    <xsl:variable name="meta" as="xs:string" select="fp:meta($e)"/>
+    <xsl:variable name="rule" as="map(*)?" select="$checked-references($meta)"/>
+    <xsl:if test="exists($rule)">
+      <xsl:for-each select="$rule?refs">
+        <xsl:variable name="prop" as="xs:string" select="."/>
+        <xsl:for-each select="fp:dangling($e, fp:refs($e, $prop))">
+          <xsl:sequence select="map {
+              'code': $rule?code,
+              'id': fp:id($e),
+              'message': fp:describe($e) || ' refers by ' || $prop || ' to ''' || . ||
+                         ''', which is not in the model' ||
+                         (if ($meta eq 'Port') then ' (the port''s interface or class is missing)' else '')
+            }"/>
+        </xsl:for-each>
+      </xsl:for-each>
+    </xsl:if>
+  </xsl:function>
+
+  <!-- "Property 'speed' of Class 'Arm'" -->
+  <xsl:function name="fp:describe" as="xs:string">
+    <xsl:param name="e" as="element()"/>
+    <xsl:variable name="owner" as="element()?" select="$e/ancestor::*[@name][1]"/>
+    <xsl:sequence select="fp:label($e) ||
+        (if ($owner) then ' of ' || fp:label($owner) else '')"/>
+  </xsl:function>
+</xsl:stylesheet>

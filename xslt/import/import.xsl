@@ -1,0 +1,239 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/import/import.xsl - entry point of the XMI import: UML 2.x XMI -> PIM.
+
+  Reads:   UML 2.x XMI as UML tools export it (global context item: the XMI
+           document): xmi:XMI-wrapped or bare uml:Model / uml:Package; XMI
+           2.0, 2.1 (http://schema.omg.org/spec/XMI/2.1), 2.4.x and 2.5.x
+           (http://www.omg.org/spec/XMI/YYYYMMDD); UML namespaces of Eclipse
+           UML2, OMG and Enterprise Architect, matched by pattern.
+           Dialects: Papyrus / Eclipse UML2 / Modelio / RobotML
+           (dialect-eclipse.xsl), Enterprise Architect (dialect-ea.xsl),
+           MagicDraw / Cameo (dialect-magicdraw.xsl), StarUML and Visual
+           Paradigm (dialect-other.xsl).
+  Writes:  a PIM valid against schemas/pim/1/pim.xsd (urn:robomda:pim:1):
+           application (application.xsl), platform (platform.xsl),
+           stereotypes and comments (stereotypes.xsl). Deterministic and
+           engine-independent: no generate-id(), no clock; ids missing in
+           the XMI become "robomda.<path>" (xmi-common.xsl, fp:id).
+  Params:  source-name (xs:string, default ''): the XMI file's name without
+           directories; written to pim:model/@source.
+  Modules: xmi-common.xsl (normalisation, keys, references, types),
+           check.xsl (dangling references), application.xsl, platform.xsl,
+           stereotypes.xsl, dialect-*.xsl; data:
+           ../common/primitive-types.xml.
+
+  Errors (namespace urn:robomda:error, raised with f:fail; the description
+  is "CODE: message [xmi:id=ID]", ID being the offending element's xmi:id):
+    IMP001  unsupported: XMI 1.x (root XMI with xmi.version / XMI.content).
+    IMP002  unsupported: not UML XMI (the root is neither xmi:XMI nor a UML
+            Model / Package, or no UML 2.x namespace is used).
+    IMP003  unsupported: an xmi:XMI document without a uml:Model or
+            uml:Package.
+    IMP004  duplicate xmi:id (outside xmi:Extension blocks); ID is the
+            duplicated id.
+    IMP010  a Property or Parameter whose type is an id not in the file.
+    IMP011  a Port whose type (its interface or class) is not in the file.
+    IMP012  a Generalization whose general is not in the file.
+    IMP013  a ComponentRealization / Realization whose realizingClassifier,
+            client or supplier is not in the file.
+    IMP014  an InterfaceRealization whose client, supplier or contract is
+            not in the file.
+    IMP015  a Usage whose client or supplier is not in the file.
+    IMP016  a Deployment whose client (location), supplier or
+            deployedArtifact is not in the file.
+    IMP017  a Manifestation whose client, supplier or utilizedElement is not
+            in the file.
+    IMP018  a connector end whose role or partWithPort is not in the file.
+    IMP019  a CommunicationPath whose memberEnd is not in the file.
+  For IMP010-IMP019 ID is the referencing element's xmi:id and the message
+  names the element, its owner, the property and the missing id. An href to
+  another file (a library type, an imported model) is never dangling.
+  Non-fatal notes go to xsl:message ("robomda import: ...").
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:f="urn:robomda:xslt:function"
+    xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:mp="urn:robomda:xslt:mode:private"
+    xmlns:tp="urn:robomda:xslt:template:private"
+    xmlns:u="urn:robomda:import:uml"
+    xmlns:x="urn:robomda:import:xmi"
+    xmlns:pim="urn:robomda:pim:1"
+    exclude-result-prefixes="#all">
+
+  <xsl:include href="../common/errors.xsl"/>
+  <xsl:include href="xmi-common.xsl"/>
+  <xsl:include href="check.xsl"/>
+  <xsl:include href="stereotypes.xsl"/>
+  <xsl:include href="application.xsl"/>
+  <xsl:include href="platform.xsl"/>
+  <xsl:include href="dialect-eclipse.xsl"/>
+  <xsl:include href="dialect-ea.xsl"/>
+  <xsl:include href="dialect-magicdraw.xsl"/>
+  <xsl:include href="dialect-other.xsl"/>
+
+  <xsl:output method="xml" indent="yes" encoding="UTF-8"/>
+  <xsl:global-context-item as="document-node()" use="optional"/>
+  <xsl:mode on-no-match="fail"/>
+
+  <xsl:param name="source-name" as="xs:string" select="''">
+    <!-- the XMI file's name without directories; goes to pim:model/@source -->
+  </xsl:param>
+
+  <!-- ====================================================== entry -->
+  <!-- Everything derives from the initial match item, not from global
+       variables: the Python driver supplies the XMI as the initial match
+       selection only, fn:transform (xslt/util/run-pipeline.xsl) as both. -->
+  <xsl:template match="/" as="document-node()?">
+    <xsl:variable name="src-root" as="element()" select="*"/>
+    <xsl:variable name="src-model" as="element()?" select="fp:src-model($src-root)"/>
+    <xsl:if test="fp:check-format($src-root, $src-model)">
+      <!-- the normalised copy every rule reads (see xmi-common.xsl) -->
+      <xsl:variable name="norm" as="document-node()">
+        <xsl:document>
+          <xsl:apply-templates select="$src-root" mode="mp:normalise"/>
+        </xsl:document>
+      </xsl:variable>
+      <xsl:variable name="model-el" as="element()" select="fp:model-el($norm)"/>
+      <xsl:variable name="root" as="element()" select="fp:model-root($model-el)"/>
+      <xsl:if test="fp:check-model($norm, $model-el)">
+        <xsl:document>
+          <pim:model id="{fp:id($root)}" name="{$root/@name}" source="{$source-name}"
+              tool="{fp:tool(., $src-model)}" xmi-version="{fp:xmi-version($src-root, $src-model)}"
+              uml-namespace="{namespace-uri($src-model)}">
+            <xsl:call-template name="tp:decoration">
+              <xsl:with-param name="e" select="$root"/>
+            </xsl:call-template>
+            <pim:application>
+              <xsl:apply-templates select="fp:owned-packageables($root)" mode="mp:packageable"/>
+            </pim:application>
+            <xsl:call-template name="tp:platform">
+              <xsl:with-param name="root" select="$root"/>
+            </xsl:call-template>
+          </pim:model>
+        </xsl:document>
+      </xsl:if>
+    </xsl:if>
+  </xsl:template>
+
+  <!-- the UML model element of the original document -->
+  <xsl:function name="fp:src-model" as="element()?">
+    <xsl:param name="src-root" as="element()"/>
+    <xsl:sequence select="
+        if (fp:is-uml-ns(namespace-uri($src-root))
+            and local-name($src-root) = ('Model', 'Package')) then $src-root
+        else if (fp:is-xmi-ns(namespace-uri($src-root)) and local-name($src-root) eq 'XMI')
+          then ($src-root/*[fp:is-uml-ns(namespace-uri())][local-name() eq 'Model'],
+                $src-root/*[fp:is-uml-ns(namespace-uri())][local-name() eq 'Package'])[1]
+        else ()"/>
+  </xsl:function>
+
+  <!-- format checks (IMP001-IMP003); true when the input is UML 2.x XMI -->
+  <xsl:function name="fp:check-format" as="xs:boolean">
+    <xsl:param name="src-root" as="element()"/>
+    <xsl:param name="src-model" as="element()?"/>
+    <xsl:variable name="version-attr" as="attribute()?"
+        select="$src-root/@*[local-name() = ('xmi.version', 'version')][not(fp:is-xmi-ns(namespace-uri()))][1]"/>
+    <xsl:choose>
+      <xsl:when test="local-name($src-root) eq 'XMI'
+                      and (exists($src-root/@*[local-name() eq 'xmi.version'])
+                           or exists($src-root/*[local-name() eq 'XMI.content'])
+                           or not(fp:is-xmi-ns(namespace-uri($src-root))))">
+        <xsl:sequence select="f:fail('IMP001', '',
+            'unsupported: XMI 1.x (xmi.version=' || ($version-attr, '?')[1] ||
+            '); export the model as XMI 2.x / UML 2.x')"/>
+      </xsl:when>
+      <xsl:when test="empty($src-model)
+                      and not(fp:is-xmi-ns(namespace-uri($src-root)) and local-name($src-root) eq 'XMI')">
+        <xsl:sequence select="f:fail('IMP002', '',
+            'unsupported: not UML XMI (root element ' || name($src-root) ||
+            (if (namespace-uri($src-root)) then ' in namespace ' || namespace-uri($src-root) else '') ||
+            '); expected xmi:XMI or uml:Model of a UML 2.x namespace')"/>
+      </xsl:when>
+      <xsl:when test="empty($src-model)">
+        <xsl:sequence select="f:fail('IMP003', '',
+            'unsupported: the xmi:XMI document holds no uml:Model or uml:Package of a UML 2.x namespace'
+            || ' (namespaces: ' || string-join(distinct-values($src-root/*/namespace-uri()), ', ') || ')')"/>
+      </xsl:when>
+      <xsl:otherwise>
+        <xsl:sequence select="true()"/>
+      </xsl:otherwise>
+    </xsl:choose>
+  </xsl:function>
+
+  <!-- model checks: duplicate ids (IMP004), then the first dangling
+       reference in document order (IMP010-IMP019, check.xsl) -->
+  <xsl:function name="fp:check-model" as="xs:boolean">
+    <xsl:param name="norm" as="document-node()"/>
+    <xsl:param name="model-el" as="element()"/>
+    <xsl:variable name="duplicates" as="xs:string*">
+      <xsl:for-each-group select="$norm//@x:id" group-by="string(.)">
+        <xsl:if test="count(current-group()) gt 1">
+          <xsl:sequence select="current-grouping-key()"/>
+        </xsl:if>
+      </xsl:for-each-group>
+    </xsl:variable>
+    <xsl:variable name="problems" as="map(*)*"
+        select="$model-el/descendant-or-self::* ! fp:problems(.)"/>
+    <xsl:choose>
+      <xsl:when test="exists($duplicates)">
+        <xsl:variable name="holders" as="element()*" select="key('fp:by-id', $duplicates[1], $norm)"/>
+        <xsl:sequence select="f:fail('IMP004', $duplicates[1],
+            'duplicate xmi:id ''' || $duplicates[1] || ''' on ' || count($holders) || ' elements: '
+            || string-join($holders ! fp:label(.), ', '))"/>
+      </xsl:when>
+      <xsl:when test="exists($problems)">
+        <xsl:sequence select="f:fail($problems[1]?code, $problems[1]?id, $problems[1]?message)"/>
+      </xsl:when>
+      <xsl:otherwise>
+        <xsl:sequence select="true()"/>
+      </xsl:otherwise>
+    </xsl:choose>
+  </xsl:function>
+
+  <!-- ============================================= tool and versions -->
+  <xsl:function name="fp:exporter" as="xs:string">
+    <xsl:param name="src-root" as="element()"/>
+    <xsl:variable name="doc" as="element()*"
+        select="$src-root/*[local-name() eq 'Documentation'][fp:is-xmi-ns(namespace-uri())]"/>
+    <xsl:sequence select="normalize-space(string-join(
+        ($doc/@*[local-name() = ('exporter', 'Exporter')], $doc/*[local-name() = ('exporter', 'Exporter')]), ' '))"/>
+  </xsl:function>
+
+  <xsl:function name="fp:tool" as="xs:string">
+    <xsl:param name="src" as="document-node()"/>
+    <xsl:param name="src-model" as="element()"/>
+    <xsl:variable name="exporter" as="xs:string" select="fp:exporter($src/*)"/>
+    <xsl:sequence select="
+        if (fp:is-ea($src, $exporter)) then 'enterprise-architect'
+        else if (fp:is-magicdraw($src, $exporter)) then 'magicdraw'
+        else if (fp:is-staruml($src, $exporter)) then 'staruml'
+        else if (fp:is-visual-paradigm($src, $exporter)) then 'visual-paradigm'
+        else if (fp:is-modelio($src, $exporter)) then 'modelio'
+        else if (fp:is-papyrus($src, $exporter)) then 'papyrus'
+        else if (fp:is-eclipse-uml2(namespace-uri($src-model))) then 'eclipse-uml2'
+        else 'unknown'"/>
+  </xsl:function>
+
+  <!-- xmi:version as written, else from the XMI namespace -->
+  <xsl:function name="fp:xmi-version" as="xs:string">
+    <xsl:param name="src-root" as="element()"/>
+    <xsl:param name="src-model" as="element()"/>
+    <xsl:variable name="written" as="xs:string?"
+        select="($src-root/@*[local-name() eq 'version'][fp:is-xmi-ns(namespace-uri())],
+                 $src-model/@*[local-name() eq 'version'][fp:is-xmi-ns(namespace-uri())])[1]/string()"/>
+    <xsl:variable name="ns" as="xs:string?"
+        select="($src-root/namespace::*[fp:is-xmi-ns(.)], $src-root/@*[fp:is-xmi-ns(namespace-uri())]/namespace-uri())[1]"/>
+    <xsl:variable name="step" as="xs:string" select="replace(string($ns), '^.*/', '')"/>
+    <xsl:sequence select="
+        if ($written) then $written
+        else if ($step eq '20100901') then '2.4'
+        else if ($step eq '20110701') then '2.4.1'
+        else if ($step eq '20131001') then '2.5'
+        else if ($step eq '20161101') then '2.5.1'
+        else if ($step eq 'XMI') then '2.0'
+        else $step"/>
+  </xsl:function>
+</xsl:stylesheet>

@@ -1,0 +1,125 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/import/platform.xsl - the platform part of the PIM (deployment
+  diagram, seed 000 Table 3).
+
+  Reads:   the normalised XMI: every deployment element anywhere
+           under the model root, whatever package or classifier owns it.
+  Writes:  pim:platform with pim:node (nested), pim:artifact and
+           pim:communication-path (schemas/pim/1/pim.xsd).
+  Params:  none.
+  Errors:  none raised here: check.xsl has reported dangling references.
+
+  Rules
+  - Node, Device, ExecutionEnvironment -> pim:node kind node / device /
+    execution-environment. A node owned by another node (nestedNode,
+    packagedElement, nestedClassifier or ownedMember of a node) is a child
+    node; every other node is a top-level pim:node.
+  - Node attributes: its owned Properties (not ports).
+  - Deployment (owned by the node, or anywhere with client = the node):
+    deployed = deployedArtifact, plus supplier, local ids only, in order,
+    without duplicates.
+  - Artifact and DeploymentSpecification (nested artifacts too) ->
+    top-level pim:artifact; @file-name = fileName. Manifestation (owned by
+    the artifact, or anywhere with client = the artifact): element =
+    utilizedElement, else supplier.
+  - CommunicationPath -> pim:communication-path; its ends are the types of
+    its memberEnd properties (ownedEnd, or ends owned by the nodes), or of
+    its ownedEnds when memberEnd is not written. A path with fewer than two
+    node ends is not written.
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:mp="urn:robomda:xslt:mode:private"
+    xmlns:tp="urn:robomda:xslt:template:private"
+    xmlns:pim="urn:robomda:pim:1"
+    exclude-result-prefixes="#all">
+
+  <xsl:mode name="mp:platform" on-no-match="deep-skip"/>
+
+  <xsl:template name="tp:platform" as="element(pim:platform)">
+    <xsl:param name="root" as="element()"/>
+    <xsl:variable name="all" as="element()*" select="$root/descendant-or-self::*[fp:meta(.) = $platform-metas]"/>
+    <pim:platform>
+      <xsl:apply-templates select="$all[fp:meta(.) = $node-metas][not(fp:meta(..) = $node-metas)]"
+          mode="mp:platform"/>
+      <xsl:apply-templates select="$all[fp:meta(.) = $artifact-metas]" mode="mp:platform"/>
+      <xsl:apply-templates select="$all[fp:meta(.) eq 'CommunicationPath']" mode="mp:platform"/>
+    </pim:platform>
+  </xsl:template>
+
+  <xsl:template match="*" mode="mp:platform" priority="-1" as="empty-sequence()"/>
+
+  <xsl:template match="*[fp:meta(.) = $node-metas]" mode="mp:platform" as="element(pim:node)">
+    <xsl:variable name="meta" as="xs:string" select="fp:meta(.)"/>
+    <pim:node id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}"
+        kind="{if ($meta eq 'Device') then 'device'
+               else if ($meta eq 'ExecutionEnvironment') then 'execution-environment'
+               else 'node'}">
+      <xsl:call-template name="tp:decoration">
+        <xsl:with-param name="e" select="."/>
+      </xsl:call-template>
+      <xsl:apply-templates select="ownedAttribute[fp:meta(.) ne 'Port']" mode="mp:feature"/>
+      <xsl:for-each select="deployment | key('fp:dep-by-client', fp:id(.))[fp:meta(.) eq 'Deployment']">
+        <xsl:variable name="deployed" as="xs:string*"
+            select="distinct-values((fp:targets(., 'deployedArtifact'), fp:targets(., 'supplier')) ! fp:id(.))"/>
+        <xsl:if test="exists($deployed)">
+          <pim:deployment id="{fp:id(.)}" name="{@name}" deployed="{$deployed}">
+            <xsl:call-template name="tp:decoration">
+              <xsl:with-param name="e" select="."/>
+            </xsl:call-template>
+          </pim:deployment>
+        </xsl:if>
+      </xsl:for-each>
+      <xsl:apply-templates select="*[fp:meta(.) = $node-metas]" mode="mp:platform"/>
+    </pim:node>
+  </xsl:template>
+
+  <xsl:template match="*[fp:meta(.) = $artifact-metas]" mode="mp:platform" as="element(pim:artifact)">
+    <pim:artifact id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+      <xsl:if test="@fileName">
+        <xsl:attribute name="file-name" select="@fileName"/>
+      </xsl:if>
+      <xsl:call-template name="tp:decoration">
+        <xsl:with-param name="e" select="."/>
+      </xsl:call-template>
+      <xsl:apply-templates select="ownedAttribute[fp:meta(.) ne 'Port']" mode="mp:feature"/>
+      <xsl:for-each select="manifestation | key('fp:dep-by-client', fp:id(.))[fp:meta(.) eq 'Manifestation']">
+        <xsl:variable name="m" as="element()" select="."/>
+        <xsl:variable name="elements" as="element()*"
+            select="if (exists(fp:ref-ids(., 'utilizedElement'))) then fp:targets(., 'utilizedElement')
+                    else fp:targets(., 'supplier')"/>
+        <xsl:for-each select="$elements">
+          <pim:manifestation id="{fp:nth-id($m, position())}" name="{$m/@name}" element="{fp:id(.)}"/>
+        </xsl:for-each>
+      </xsl:for-each>
+    </pim:artifact>
+  </xsl:template>
+
+  <xsl:template match="*[fp:meta(.) eq 'CommunicationPath']" mode="mp:platform"
+                as="element(pim:communication-path)?">
+    <xsl:variable name="member-ends" as="element()*" select="fp:targets(., 'memberEnd')"/>
+    <xsl:variable name="ends" as="element()*"
+        select="if (exists($member-ends)) then $member-ends else ownedEnd"/>
+    <xsl:variable name="nodes" as="element()*"
+        select="$ends ! fp:type-element(.)[fp:meta(.) = $node-metas]"/>
+    <xsl:choose>
+      <xsl:when test="count($nodes) ge 2">
+        <pim:communication-path id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+          <xsl:call-template name="tp:decoration">
+            <xsl:with-param name="e" select="."/>
+          </xsl:call-template>
+          <xsl:for-each select="$nodes">
+            <pim:end node="{fp:id(.)}"/>
+          </xsl:for-each>
+        </pim:communication-path>
+      </xsl:when>
+      <xsl:otherwise>
+        <xsl:message select="'robomda import: communication path ' || fp:label(.) || ' [xmi:id='
+                             || fp:id(.) || '] does not connect two nodes; not imported'"/>
+      </xsl:otherwise>
+    </xsl:choose>
+  </xsl:template>
+</xsl:stylesheet>

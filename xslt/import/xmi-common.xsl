@@ -1,0 +1,442 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/import/xmi-common.xsl - the tool-neutral core of the XMI import.
+
+  Reads:   UML 2.x XMI of any XMI version (2.0, 2.1, 2.4.x, 2.5.x) and any UML
+           namespace (Eclipse UML2 http://www.eclipse.org/uml2/N.N.N/UML,
+           OMG http://www.omg.org/spec/UML/YYYYMMDD, EA/StarUML
+           http://schema.omg.org/spec/UML/2.x); namespaces are matched by
+           pattern (fp:is-uml-ns, fp:is-xmi-ns), never by a fixed list.
+  Writes:  nothing itself. It provides
+           - mode mp:normalise: a copy of the XMI in fixed namespaces
+             (UML elements in urn:robomda:import:uml, XMI elements and
+             attributes in urn:robomda:import:xmi, xmi:type reduced to the
+             UML metaclass name), without xmi:Extension / eAnnotations
+             blocks. Every later step reads this copy, so one set of
+             rules serves every XMI and UML version;
+           - the keys (every id look-up goes through xsl:key);
+           - functions for ids, metaclasses, references, qualified names,
+             value specifications, multiplicities, types and comments.
+  Params:  none.
+  Errors:  none raised here; callers raise the IMP codes listed in
+           import.xsl with the facts these functions return.
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:map="http://www.w3.org/2005/xpath-functions/map"
+    xmlns:f="urn:robomda:xslt:function"
+    xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:mp="urn:robomda:xslt:mode:private"
+    xmlns:u="urn:robomda:import:uml"
+    xmlns:x="urn:robomda:import:xmi"
+    xmlns:pt="urn:robomda:primitive-types"
+    exclude-result-prefixes="#all">
+
+  <!-- ===================================================== namespaces -->
+  <xsl:variable name="U" as="xs:string" select="'urn:robomda:import:uml'"/>
+  <xsl:variable name="X" as="xs:string" select="'urn:robomda:import:xmi'"/>
+
+  <!-- UML metamodel namespaces (not profiles such as .../StandardProfile) -->
+  <xsl:function name="fp:is-uml-ns" as="xs:boolean">
+    <xsl:param name="uri" as="xs:string"/>
+    <xsl:sequence select="matches($uri,
+        '^https?://(www\.eclipse\.org/uml2/[0-9.]+/UML|(schema|www)\.omg\.org/(spec/)?UML(/[0-9.]+)?)/?$', 'i')"/>
+  </xsl:function>
+
+  <!-- XMI namespaces: 2.0 http://www.omg.org/XMI, 2.1
+       http://schema.omg.org/spec/XMI/2.1, 2.4+ http://www.omg.org/spec/XMI/YYYYMMDD -->
+  <xsl:function name="fp:is-xmi-ns" as="xs:boolean">
+    <xsl:param name="uri" as="xs:string"/>
+    <xsl:sequence select="matches($uri,
+        '^https?://(schema|www)\.omg\.org/(spec/)?XMI(/[0-9.]+)?/?$', 'i')"/>
+  </xsl:function>
+
+  <!-- ================================================== normalisation -->
+  <xsl:mode name="mp:normalise" on-no-match="shallow-copy"/>
+  <!-- hook for dialect modules: extra attributes on a normalised element -->
+  <xsl:mode name="mp:normalise-extra" on-no-match="deep-skip"/>
+
+  <xsl:template match="*" mode="mp:normalise" as="element()">
+    <xsl:variable name="ns" as="xs:string" select="namespace-uri()"/>
+    <xsl:choose>
+      <xsl:when test="fp:is-uml-ns($ns)">
+        <xsl:element name="u:{local-name()}" namespace="{$U}">
+          <xsl:apply-templates select="@*" mode="mp:normalise"/>
+          <xsl:apply-templates select="." mode="mp:normalise-extra"/>
+          <xsl:apply-templates select="node()" mode="mp:normalise"/>
+        </xsl:element>
+      </xsl:when>
+      <xsl:when test="fp:is-xmi-ns($ns)">
+        <xsl:element name="x:{local-name()}" namespace="{$X}">
+          <xsl:apply-templates select="@*" mode="mp:normalise"/>
+          <xsl:apply-templates select="node()" mode="mp:normalise"/>
+        </xsl:element>
+      </xsl:when>
+      <xsl:otherwise>
+        <xsl:element name="{name()}" namespace="{$ns}">
+          <xsl:apply-templates select="@*" mode="mp:normalise"/>
+          <xsl:apply-templates select="." mode="mp:normalise-extra"/>
+          <xsl:apply-templates select="node()" mode="mp:normalise"/>
+        </xsl:element>
+      </xsl:otherwise>
+    </xsl:choose>
+  </xsl:template>
+
+  <!-- tool extension blocks carry no UML semantics: dropped -->
+  <xsl:template match="*[local-name() = 'Extension'][fp:is-xmi-ns(namespace-uri())]
+                       | eAnnotations" mode="mp:normalise" as="empty-sequence()"/>
+  <xsl:template match="comment() | processing-instruction()" mode="mp:normalise"
+                as="empty-sequence()"/>
+
+  <xsl:template match="@*" mode="mp:normalise" as="attribute()">
+    <xsl:choose>
+      <xsl:when test="fp:is-xmi-ns(namespace-uri())">
+        <xsl:attribute name="x:{local-name()}" namespace="{$X}"
+            select="if (local-name() = 'type') then fp:norm-type(.) else string(.)"/>
+      </xsl:when>
+      <xsl:otherwise>
+        <xsl:copy/>
+      </xsl:otherwise>
+    </xsl:choose>
+  </xsl:template>
+
+  <!-- xmi:type="uml:Class" -> "Class"; a non-UML type -> "{uri}local" -->
+  <xsl:function name="fp:norm-type" as="xs:string">
+    <xsl:param name="a" as="attribute()"/>
+    <xsl:variable name="v" as="xs:string" select="normalize-space($a)"/>
+    <xsl:variable name="prefix" as="xs:string" select="substring-before($v, ':')"/>
+    <xsl:variable name="uri" as="xs:string"
+        select="if ($prefix) then string(namespace-uri-for-prefix($prefix, $a/..)) else ''"/>
+    <xsl:sequence select="if (not(contains($v, ':')) or fp:is-uml-ns($uri))
+                          then replace($v, '^.*:', '')
+                          else '{' || $uri || '}' || substring-after($v, ':')"/>
+  </xsl:function>
+
+  <!-- ================================================================ keys -->
+  <xsl:key name="fp:by-id" match="*[@x:id]" use="string(@x:id)"/>
+
+  <xsl:variable name="dependency-metas" as="xs:string+"
+      select="('Usage', 'InterfaceRealization', 'Realization', 'ComponentRealization',
+               'Deployment', 'Manifestation')"/>
+
+  <xsl:key name="fp:dep-by-client" match="*[@client or client][fp:meta(.) = $dependency-metas]"
+      use="fp:ref-ids(., 'client')"/>
+  <xsl:key name="fp:dep-by-supplier" match="*[@supplier or supplier][fp:meta(.) = $dependency-metas]"
+      use="fp:ref-ids(., 'supplier')"/>
+  <xsl:key name="fp:comment-by-annotated" match="ownedComment"
+      use="fp:ref-ids(., 'annotatedElement')"/>
+  <!-- stereotype applications: top-level elements outside the UML and XMI
+       namespaces that point at model elements with base_* attributes -->
+  <xsl:key name="fp:stereotype-by-base"
+      match="/x:XMI/*[not(namespace-uri() = ($U, $X))][@*[starts-with(local-name(), 'base_')]]"
+      use="@*[starts-with(local-name(), 'base_')]/tokenize(.)"/>
+
+  <!-- the UML model element of a normalised document (a bare uml:Model or
+       uml:Package, else the first uml:Model, else uml:Package, of xmi:XMI) -->
+  <xsl:key name="fp:model" match="/u:Model | /u:Package | /x:XMI/u:Model | /x:XMI/u:Package"
+      use="'model'"/>
+
+  <xsl:function name="fp:model-el" as="element()?">
+    <xsl:param name="n" as="node()"/>
+    <xsl:variable name="models" as="element()*" select="key('fp:model', 'model', root($n))"/>
+    <xsl:sequence select="($models[self::u:Model], $models)[1]"/>
+  </xsl:function>
+
+  <!-- the element the PIM model stands for (fp:model-root, dialect-ea.xsl) -->
+  <xsl:function name="fp:root-of" as="element()?">
+    <xsl:param name="n" as="node()"/>
+    <xsl:sequence select="fp:model-el($n) ! fp:model-root(.)"/>
+  </xsl:function>
+
+  <!-- =================================================== ids, metaclass -->
+  <!-- the element's xmi:id, or a deterministic synthetic id "robomda.<path>"
+       anchored at the nearest ancestor that has an xmi:id -->
+  <xsl:function name="fp:id" as="xs:string">
+    <xsl:param name="e" as="element()"/>
+    <xsl:sequence select="if ($e/@x:id) then string($e/@x:id) else fp:synthetic-id($e)"/>
+  </xsl:function>
+
+  <xsl:function name="fp:synthetic-id" as="xs:string">
+    <xsl:param name="e" as="element()"/>
+    <xsl:variable name="anchor" as="element()?" select="$e/ancestor::*[@x:id][1]"/>
+    <xsl:variable name="steps" as="element()*"
+        select="$e/ancestor-or-self::*[empty($anchor) or . >> $anchor]"/>
+    <xsl:sequence select="string-join(('robomda', $anchor/@x:id/string(),
+                                       $steps ! fp:step(.)), '.')"/>
+  </xsl:function>
+
+  <xsl:function name="fp:step" as="xs:string">
+    <xsl:param name="s" as="element()"/>
+    <xsl:variable name="n" as="xs:string"
+        select="if (namespace-uri($s) = ($U, $X)) then local-name($s) else replace(name($s), ':', '-')"/>
+    <xsl:variable name="same" as="element()*" select="$s/../*[node-name(.) eq node-name($s)]"/>
+    <xsl:sequence select="if (count($same) gt 1)
+                          then $n || '-' || (count($s/preceding-sibling::*[node-name(.) eq node-name($s)]) + 1)
+                          else $n"/>
+  </xsl:function>
+
+  <!-- a derived id for the n-th (n > 1) PIM element made from one XMI element -->
+  <xsl:function name="fp:nth-id" as="xs:string">
+    <xsl:param name="e" as="element()"/>
+    <xsl:param name="n" as="xs:integer"/>
+    <xsl:sequence select="if ($n eq 1) then fp:id($e) else 'robomda.' || fp:id($e) || '.' || $n"/>
+  </xsl:function>
+
+  <!-- the UML metaclass: xmi:type, else the element name (root uml:Model),
+       else the type XMI lets a tool omit: the declared type of the feature -->
+  <xsl:variable name="default-metas" as="map(xs:string, xs:string)" select="map {
+      'ownedAttribute': 'Property', 'ownedEnd': 'Property', 'ownedOperation': 'Operation',
+      'ownedParameter': 'Parameter', 'generalization': 'Generalization',
+      'interfaceRealization': 'InterfaceRealization', 'realization': 'ComponentRealization',
+      'deployment': 'Deployment', 'manifestation': 'Manifestation',
+      'ownedConnector': 'Connector', 'end': 'ConnectorEnd', 'nestedNode': 'Node',
+      'nestedArtifact': 'Artifact', 'ownedComment': 'Comment',
+      'ownedLiteral': 'EnumerationLiteral', 'ownedPort': 'Port' }"/>
+
+  <xsl:function name="fp:meta" as="xs:string">
+    <xsl:param name="e" as="element()"/>
+    <xsl:sequence select="
+        if ($e/@x:type) then string($e/@x:type)
+        else if (namespace-uri($e) eq $U) then local-name($e)
+        else if (namespace-uri($e) eq '') then (map:get($default-metas, local-name($e)), '')[1]
+        else ''"/>
+  </xsl:function>
+
+  <xsl:variable name="node-metas" as="xs:string+" select="('Node', 'Device', 'ExecutionEnvironment')"/>
+  <xsl:variable name="artifact-metas" as="xs:string+" select="('Artifact', 'DeploymentSpecification')"/>
+  <xsl:variable name="platform-metas" as="xs:string+"
+      select="($node-metas, $artifact-metas, 'CommunicationPath')"/>
+
+  <!-- ===================================================== references -->
+  <!-- ids referenced by property $prop: an attribute (an id list) or child
+       elements with xmi:idref -->
+  <xsl:function name="fp:ref-ids" as="xs:string*">
+    <xsl:param name="e" as="element()"/>
+    <xsl:param name="prop" as="xs:string"/>
+    <xsl:sequence select="($e/@*[local-name() eq $prop][namespace-uri() eq '']/tokenize(.),
+                           $e/*[local-name() eq $prop][namespace-uri() eq '']/@x:idref/string())"/>
+  </xsl:function>
+
+  <!-- all references of property $prop, as maps: map{'id': ...} for a
+       reference inside the file, map{'href': ..., 'el': ...} for an href -->
+  <xsl:function name="fp:refs" as="map(*)*">
+    <xsl:param name="e" as="element()"/>
+    <xsl:param name="prop" as="xs:string"/>
+    <xsl:sequence select="
+        ($e/@*[local-name() eq $prop][namespace-uri() eq '']/tokenize(.) ! map { 'id': . },
+         for $c in $e/*[local-name() eq $prop][namespace-uri() eq '']
+         return if ($c/@x:idref) then map { 'id': string($c/@x:idref) }
+                else if ($c/@href) then map { 'href': string($c/@href), 'el': $c }
+                else ())"/>
+  </xsl:function>
+
+  <!-- the element with xmi:id $id in the document of $ctx -->
+  <xsl:function name="fp:element" as="element()?">
+    <xsl:param name="ctx" as="node()"/>
+    <xsl:param name="id" as="xs:string?"/>
+    <xsl:sequence select="if ($id) then key('fp:by-id', $id, root($ctx))[1] else ()"/>
+  </xsl:function>
+
+  <!-- the local elements referenced by property $prop (hrefs and unknown
+       ids dropped: the check pass reports unknown ids first) -->
+  <xsl:function name="fp:targets" as="element()*">
+    <xsl:param name="e" as="element()"/>
+    <xsl:param name="prop" as="xs:string"/>
+    <xsl:sequence select="fp:ref-ids($e, $prop) ! fp:element($e, .)"/>
+  </xsl:function>
+
+  <!-- the ids among $refs that are neither in the file nor a tool built-in -->
+  <xsl:function name="fp:dangling" as="xs:string*">
+    <xsl:param name="ctx" as="node()"/>
+    <xsl:param name="refs" as="map(*)*"/>
+    <xsl:sequence select="$refs[map:contains(., 'id')] ! .?id
+                          [empty(fp:element($ctx, .))][empty(fp:builtin-library(.))]"/>
+  </xsl:function>
+
+  <!-- ================================================ qualified names -->
+  <xsl:function name="fp:qname" as="xs:string">
+    <xsl:param name="e" as="element()"/>
+    <xsl:variable name="root" as="element()" select="fp:root-of($e)"/>
+    <xsl:sequence select="string-join($e/ancestor-or-self::*[not(. &lt;&lt; $root)] ! string(@name), '::')"/>
+  </xsl:function>
+
+  <xsl:function name="fp:label" as="xs:string">
+    <xsl:param name="e" as="element()"/>
+    <xsl:sequence select="(fp:meta($e)[.], local-name($e))[1] ||
+                          (if ($e/@name) then ' ''' || $e/@name || '''' else '')"/>
+  </xsl:function>
+
+  <!-- ================================================ value specifications -->
+  <!-- the value of a ValueSpecification as written in the model -->
+  <xsl:function name="fp:value" as="xs:string?">
+    <xsl:param name="v" as="element()?"/>
+    <xsl:variable name="meta" as="xs:string" select="if ($v) then fp:meta($v) else ''"/>
+    <xsl:variable name="value" as="xs:string?"
+        select="($v/@value, $v/value[not(@xsi:nil = 'true')])[1]/string()"
+        xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance"/>
+    <xsl:sequence select="
+        if (empty($v)) then ()
+        else if ($meta = ('LiteralInteger', 'LiteralUnlimitedNatural', 'LiteralReal'))
+          then ($value, '0')[1]
+        else if ($meta eq 'LiteralBoolean') then ($value, 'false')[1]
+        else if ($meta eq 'LiteralNull') then ()
+        else if ($meta = ('OpaqueExpression', 'TimeExpression', 'Duration'))
+          then ($v/@body, $v/body, $v/expr/@body)[1]/string()
+        else if ($meta eq 'Expression') then ($v/@symbol/string(), $value)[1]
+        else if ($meta eq 'InstanceValue')
+          then (fp:targets($v, 'instance')/@name/string(), $v/@name/string(), $value)[1]
+        else $value"/>
+  </xsl:function>
+
+  <!-- a multiplicity bound: "*" for unlimited -->
+  <xsl:function name="fp:bound" as="xs:string?">
+    <xsl:param name="e" as="element()"/>
+    <xsl:param name="which" as="xs:string"/>
+    <xsl:variable name="spec" as="element()?" select="$e/*[local-name() eq $which || 'Value'][1]"/>
+    <xsl:variable name="raw" as="xs:string?"
+        select="if ($spec) then fp:value($spec) else $e/@*[local-name() eq $which]/string()"/>
+    <xsl:sequence select="if ($raw = ('-1', '*')) then '*' else $raw"/>
+  </xsl:function>
+
+  <!-- the default value of a Property or Parameter, absent when none -->
+  <xsl:function name="fp:default" as="xs:string?">
+    <xsl:param name="e" as="element()"/>
+    <xsl:sequence select="if ($e/defaultValue) then fp:value($e/defaultValue[1])
+                          else $e/@default/string()"/>
+  </xsl:function>
+
+  <!-- ============================================================ types -->
+  <xsl:variable name="primitive-table" as="document-node()"
+      select="doc('../common/primitive-types.xml')"/>
+  <xsl:key name="fp:primitive" match="pt:type" use="../@name || '|' || @name"/>
+
+  <xsl:function name="fp:primitive-kind" as="xs:string?">
+    <xsl:param name="library" as="xs:string"/>
+    <xsl:param name="name" as="xs:string?"/>
+    <xsl:sequence select="if (not($name)) then ()
+        else (key('fp:primitive', $library || '|' || $name, $primitive-table),
+              key('fp:primitive', 'generic|' || lower-case(normalize-space($name)), $primitive-table)
+             )[1]/@kind/string()"/>
+  </xsl:function>
+
+  <!-- the library of an href, by the patterns of the table; else external -->
+  <xsl:function name="fp:href-library" as="xs:string">
+    <xsl:param name="href" as="xs:string"/>
+    <xsl:variable name="doc" as="xs:string" select="replace($href, '#.*$', '')"/>
+    <xsl:sequence select="($primitive-table/pt:primitive-types/pt:library
+                           [pt:href[matches($doc, @pattern, 'i')]][1]/@name/string(), 'external')[1]"/>
+  </xsl:function>
+
+  <!-- the library of a tool built-in type id (EAJava_int), if it is one -->
+  <xsl:function name="fp:builtin-library" as="xs:string?">
+    <xsl:param name="id" as="xs:string"/>
+    <xsl:sequence select="$primitive-table/pt:primitive-types/pt:library
+                          [pt:tool-id[starts-with($id, @prefix)]][1]/@name/string()"/>
+  </xsl:function>
+
+  <xsl:function name="fp:builtin-name" as="xs:string">
+    <xsl:param name="id" as="xs:string"/>
+    <xsl:variable name="prefix" as="xs:string"
+        select="($primitive-table//pt:tool-id[starts-with($id, @prefix)])[1]/@prefix"/>
+    <xsl:sequence select="substring($id, string-length($prefix) + 1)"/>
+  </xsl:function>
+
+  <!-- the name of a type referenced by href: the dialect's name for it
+       (mp:normalise-extra, x:referent-path), else the fragment's last step,
+       else the last path step of the document -->
+  <xsl:function name="fp:href-name" as="xs:string">
+    <xsl:param name="href" as="xs:string"/>
+    <xsl:param name="el" as="element()?"/>
+    <xsl:variable name="fragment" as="xs:string" select="substring-after($href, '#')"/>
+    <xsl:sequence select="
+        if ($el/@x:referent-path) then tokenize($el/@x:referent-path, '::')[last()]
+        else if ($fragment) then tokenize(replace($fragment, '/+$', ''), '/')[last()]
+        else replace(tokenize(replace($href, '/+$', ''), '/')[last()], '\.[^.]*$', '')"/>
+  </xsl:function>
+
+  <!-- a local type that robomda may treat as a primitive: a PrimitiveType,
+       or a DataType without attributes (StarUML writes int, string ... so) -->
+  <xsl:function name="fp:is-primitive-like" as="xs:boolean">
+    <xsl:param name="t" as="element()"/>
+    <xsl:variable name="meta" as="xs:string" select="fp:meta($t)"/>
+    <xsl:sequence select="$meta eq 'PrimitiveType'
+                          or ($meta eq 'DataType' and empty($t/ownedAttribute))"/>
+  </xsl:function>
+
+  <!-- the pim:typed attributes (type, type-name, type-library, primitive,
+       lower, upper) of a typed element; lower and upper are always written,
+       1 when the model leaves them unset (the UML default) -->
+  <xsl:function name="fp:typed" as="attribute()*">
+    <xsl:param name="e" as="element()"/>
+    <xsl:variable name="ref" as="map(*)?" select="fp:refs($e, 'type')[1]"/>
+    <xsl:choose>
+      <xsl:when test="empty($ref)"/>
+      <xsl:when test="map:contains($ref, 'href')">
+        <xsl:variable name="lib" as="xs:string" select="fp:href-library($ref?href)"/>
+        <xsl:variable name="name" as="xs:string" select="fp:href-name($ref?href, $ref?el)"/>
+        <xsl:attribute name="type-name" select="$name"/>
+        <xsl:attribute name="type-library" select="$lib"/>
+        <xsl:for-each select="fp:primitive-kind($lib, $name)">
+          <xsl:attribute name="primitive" select="."/>
+        </xsl:for-each>
+      </xsl:when>
+      <xsl:when test="exists(fp:element($e, $ref?id))">
+        <xsl:variable name="t" as="element()" select="fp:element($e, $ref?id)"/>
+        <xsl:attribute name="type" select="fp:id($t)"/>
+        <xsl:attribute name="type-name" select="string($t/@name)"/>
+        <xsl:attribute name="type-library" select="'local'"/>
+        <xsl:if test="fp:is-primitive-like($t)">
+          <xsl:for-each select="fp:primitive-kind('local', $t/@name)">
+            <xsl:attribute name="primitive" select="."/>
+          </xsl:for-each>
+        </xsl:if>
+      </xsl:when>
+      <xsl:when test="exists(fp:builtin-library($ref?id))">
+        <xsl:variable name="lib" as="xs:string" select="fp:builtin-library($ref?id)"/>
+        <xsl:variable name="name" as="xs:string" select="fp:builtin-name($ref?id)"/>
+        <xsl:attribute name="type-name" select="$name"/>
+        <xsl:attribute name="type-library" select="$lib"/>
+        <xsl:for-each select="fp:primitive-kind($lib, $name)">
+          <xsl:attribute name="primitive" select="."/>
+        </xsl:for-each>
+      </xsl:when>
+    </xsl:choose>
+    <!-- always explicit: tools differ in writing the default 1..1 or not -->
+    <xsl:attribute name="lower" select="(fp:bound($e, 'lower'), '1')[1]"/>
+    <xsl:attribute name="upper" select="(fp:bound($e, 'upper'), '1')[1]"/>
+  </xsl:function>
+
+  <!-- the local type element of a typed element, if any -->
+  <xsl:function name="fp:type-element" as="element()?">
+    <xsl:param name="e" as="element()"/>
+    <xsl:sequence select="fp:targets($e, 'type')[1]"/>
+  </xsl:function>
+
+  <!-- ========================================================= comments -->
+  <!-- the documentation of an element: bodies of the comments annotating
+       it, and of the comments it owns that annotate nothing -->
+  <xsl:function name="fp:doc" as="xs:string?">
+    <xsl:param name="e" as="element()"/>
+    <xsl:variable name="comments" as="element()*"
+        select="key('fp:comment-by-annotated', fp:id($e), root($e))
+                | $e/ownedComment[empty(fp:ref-ids(., 'annotatedElement'))]"/>
+    <xsl:variable name="bodies" as="xs:string*"
+        select="$comments ! string((@body, body)[1])[normalize-space()]"/>
+    <xsl:sequence select="if (exists($bodies)) then string-join($bodies, '&#10;&#10;') else ()"/>
+  </xsl:function>
+
+  <!-- ========================================================= booleans -->
+  <xsl:function name="fp:bool" as="xs:string">
+    <xsl:param name="a" as="attribute()?"/>
+    <xsl:param name="default" as="xs:boolean"/>
+    <xsl:sequence select="if (empty($a)) then string($default)
+                          else string(normalize-space(lower-case($a)) = ('true', '1'))"/>
+  </xsl:function>
+
+  <xsl:function name="fp:visibility" as="xs:string">
+    <xsl:param name="e" as="element()"/>
+    <xsl:variable name="v" as="xs:string" select="lower-case(normalize-space($e/@visibility))"/>
+    <xsl:sequence select="if ($v = ('public', 'protected', 'private', 'package')) then $v else 'public'"/>
+  </xsl:function>
+</xsl:stylesheet>
