@@ -86,10 +86,13 @@ class Engine:
         with _captured_stderr() as err:
             try:
                 if source_file is not None:
-                    result = executable.transform_to_string(source_file=str(source_file.resolve()))
+                    node = self._proc.parse_xml(xml_file_name=str(source_file.resolve()))
                 else:
                     node = self._proc.parse_xml(xml_text=source_text)
-                    result = executable.transform_to_string(xdm_node=node)
+                # as Saxon's command line does with -s: the source is both the
+                # global context item and the initial match selection
+                executable.set_global_context_item(xdm_item=node)
+                result = executable.apply_templates_returning_string(xdm_value=node)
             except PySaxonApiError as exc:
                 failure = exc
         if failure is not None or result is None:

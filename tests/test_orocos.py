@@ -1,0 +1,331 @@
+"""Tests of the Orocos chain: 10-bind, 20-orocos-psm, m2t/orocos (one module each).
+
+Runs the stylesheets directly with saxonche on hand-written PIMs
+(tests/data/orocos/) and, when present, on the fixture models
+(import -> bind -> psm -> text).
+"""
+from __future__ import annotations
+
+import re
+import xml.etree.ElementTree as ET
+from functools import lru_cache
+from pathlib import Path
+
+import pytest
+import xmlschema
+from saxonche import PySaxonProcessor
+
+ROOT = Path(__file__).resolve().parents[1]
+DATA = ROOT / "tests" / "data" / "orocos"
+XSLT = ROOT / "xslt"
+PIM = "{urn:robomda:pim:1}"
+O = "{urn:robomda:psm-orocos:1}"
+FS = "{urn:robomda:fileset:1}"
+
+ALLOWED_COMPONENT_CHILDREN = {
+    "Activity", "AutoConf", "AutoStart", "AutoConnect", "AutoSave", "AutoUnload", "Ports", "Peers",
+    "Properties", "PropertyFile", "UpdateProperties", "LoadProperties", "RunScript", "ProgramScript",
+    "StateMachineScript", "Service", "Plugin", "Provides", "Master", "Server", "UseNamingService"}
+
+_PROC = PySaxonProcessor(license=False)
+_XSLT = _PROC.new_xslt30_processor()
+
+
+@lru_cache(maxsize=None)
+def _compiled(stylesheet: str):
+    return _XSLT.compile_stylesheet(stylesheet_file=str(XSLT / stylesheet))
+
+
+def run(stylesheet: str, source: Path | str, **params: str) -> str:
+    exe = _compiled(stylesheet)
+    exe.clear_parameters()
+    for k, v in params.items():
+        exe.set_parameter(k, _PROC.make_string_value(v))
+    if isinstance(source, Path):
+        return exe.transform_to_string(source_file=str(source))
+    return exe.transform_to_string(xdm_node=_PROC.parse_xml(xml_text=source))
+
+
+@lru_cache(maxsize=None)
+def schema(rel: str) -> xmlschema.XMLSchema:
+    return xmlschema.XMLSchema(str(ROOT / "schemas" / rel))
+
+
+def chain(pim_text: str, package: str = "", model_dir: str = "."):
+    bound = run("m2m/10-bind.xsl", pim_text)
+    schema("pim/1/pim.xsd").validate(bound)
+    psm = run("m2m/20-orocos-psm.xsl", bound, **{"package-name": package})
+    schema("psm-orocos/1/psm-orocos.xsd").validate(psm)
+    files = run("m2t/orocos/main.xsl", psm, **{"model-dir-from-output": model_dir})
+    schema("fileset/1/fileset.xsd").validate(files)
+    return ET.fromstring(bound), ET.fromstring(psm), {
+        f.get("path"): f for f in ET.fromstring(files).iter(FS + "file")}
+
+
+@lru_cache(maxsize=None)
+def case(name: str):
+    return chain((DATA / f"{name}.pim.xml").read_text())
+
+
+# ---------------------------------------------------------------- bind
+def test_bind_composite_instances_and_activity():
+    bound, _, _ = case("composite")
+    b = bound.find(PIM + "binding")
+    assert b.get("instances-from") == "parts" and b.get("connections-from") == "connectors"
+    inst = {i.get("name"): i for i in b.iter(PIM + "instance")}
+    assert list(inst) == ["guppy", "vision", "controller"]
+    a = inst["guppy"].find(PIM + "activity")
+    assert (a.get("period"), a.get("priority"), a.get("scheduler")) == ("0.003", "50", "RT")
+    assert a.get("period-source") == "stereotype"
+    assert inst["vision"].find(PIM + "activity").get("cpu-affinity") == "2"
+    assert inst["controller"].find(PIM + "activity").get("scheduler-source") == "default"
+    assert {i.get("middleware") for i in inst.values()} == {"OROCOS"}
+    host = b.find(PIM + "host")
+    assert (host.get("hostname"), host.get("address")) == ("robotpc", "10.0.0.2")
+
+
+def test_bind_composite_ports_and_connections():
+    bound, _, _ = case("composite")
+    b = bound.find(PIM + "binding")
+    vis = [c for c in b.iter(PIM + "bound-component") if c.get("component") == "CVis"][0]
+    dirs = {p.get("name"): p.get("direction") for p in vis.iter(PIM + "data-port")}
+    assert dirs == {"imageIn_IForce": "out", "imageIn_IVisionValue": "in"}
+    conns = {c.get("name"): c for c in b.iter(PIM + "connection")}
+    assert list(conns) == ["IVisionValueConn", "forceConn"]
+    c = conns["IVisionValueConn"]
+    assert [r.get("instance") for r in c.iter(PIM + "reader")] == ["vision", "controller"]
+    pol = c.find(PIM + "policy")
+    assert (pol.get("type"), pol.get("size"), pol.get("lock-policy"), pol.get("init")) == \
+        ("CIRCULAR_BUFFER", "10", "LOCKED", "true")
+    assert conns["forceConn"].find(PIM + "policy").get("source") == "interface"
+    libs = {l.get("name"): l for l in b.iter(PIM + "library")}
+    assert set(libs) == {"guppy", "vision_algo"}  # A3 is not stereotyped Library
+    assert libs["guppy"].get("target") == "guppy_driver" and libs["vision_algo"].get("absolute") == "true"
+
+
+def test_bind_unprofiled_conventions():
+    bound, _, _ = case("unprofiled")
+    b = bound.find(PIM + "binding")
+    assert b.get("connections-from") == "interfaces"
+    inst = {i.get("name"): i.find(PIM + "activity") for i in b.iter(PIM + "instance")}
+    assert list(inst) == ["Prosilica", "ImageProcessor", "Planner"]  # abstract component skipped
+    p = inst["Prosilica"]
+    assert (p.get("period"), p.get("period-source"), p.get("priority"), p.get("scheduler"),
+            p.get("scheduler-source")) == ("0.05", "realizing-class", "50", "OTHER", "execution-environment")
+    assert inst["Planner"].get("period") == "0"
+    names = [c.get("name") for c in b.iter(PIM + "connection")]
+    assert names == ["IImageConn", "IScrewPositionConn"]
+    host = b.find(PIM + "host")
+    assert host.get("address") == "localhost"
+
+
+def _mutate(name: str, old: str, new: str) -> str:
+    text = (DATA / f"{name}.pim.xml").read_text()
+    assert old in text
+    return text.replace(old, new, 1)
+
+
+@pytest.mark.parametrize("name,old,new,code", [
+    ("unprofiled", 'name="OROCOS" qualified-name="MekaPC::OROCOS"', 'name="Zenoh" qualified-name="MekaPC::OROCOS"', "BND003"),
+    ("unprofiled", '<pim:attribute id="IPos.a"', '<pim:attribute id="IPos.b" name="extra" qualified-name="x" visibility="public"/><pim:attribute id="IPos.a"', "BND005"),
+    ("unprofiled", 'type="IImg" type-name="IImage" type-library="local"/>\n    </pim:component>\n    <pim:component id="C2"',
+     'type="NoSuch" type-name="IImage" type-library="local"/>\n    </pim:component>\n    <pim:component id="C2"', "BND002"),
+    ("composite", '<pim:realization id="CCam.r" classifier="Guppy"/>', '<pim:realization id="CCam.r" classifier="Gone"/>', "BND001"),
+])
+def test_bind_errors(name, old, new, code):
+    with pytest.raises(Exception) as exc:
+        run("m2m/10-bind.xsl", _mutate(name, old, new))
+    assert code in str(exc.value) and "xmi:id=" in str(exc.value)
+
+
+def test_bind_interface_without_datum():
+    text = _mutate("unprofiled", '''      <pim:attribute id="IPos.a" name="screwPosition" qualified-name="IScrewPosition::screwPosition" type-name="double" type-library="c" primitive="float64" visibility="public"/>\n''', "")
+    with pytest.raises(Exception) as exc:
+        run("m2m/10-bind.xsl", text)
+    assert "BND004" in str(exc.value) and "IScrewPosition" in str(exc.value)
+
+
+# ----------------------------------------------------------------- PSM
+def test_psm_task_contexts():
+    _, psm, _ = case("composite")
+    tcs = {t.get("class"): t for t in psm.iter(O + "task-context")}
+    assert set(tcs) == {"Camera", "Vision", "ForceController"}
+    cam = tcs["Camera"]
+    assert cam.get("type-name") == "headlamp_assembly::Camera" and cam.get("kind") == "wrapper"
+    assert cam.find(O + "realizing-class").get("cpp-name") == "::atomic::GuppyF080C"
+    port = cam.find(O + "port")
+    assert (port.get("rtt-class"), port.get("xml-type"), port.get("accessor")) == \
+        ("RTT::OutputPort<int>", "long", "getVisionValue")
+    ops = {o.get("name"): o for o in cam.iter(O + "operation")}
+    assert set(ops) == {"setWidth", "getWidth", "setName"}  # protected only, lifecycle excluded
+    assert ops["getWidth"].get("thread") == "RTT::ClientThread"      # query
+    assert ops["setName"].get("thread") == "RTT::ClientThread"       # OperationThread tag
+    assert ops["setWidth"].get("thread") == "RTT::OwnThread"
+    assert [p.get("decl-type") for p in ops["setName"].iter(O + "parameter")] == ["const std::string&", "std::string&"]
+    assert [p.get("name") for p in cam.iter(O + "property")] == ["ip"]  # Configurable only
+    assert [p.get("name") for p in tcs["Vision"].iter(O + "property")] == ["threshold", "debug"]
+    assert tcs["ForceController"].get("kind") == "base"
+
+
+def test_psm_connections_and_instances():
+    _, psm, _ = case("composite")
+    k = {c.get("name"): c for c in psm.iter(O + "connection")}
+    assert (k["IVisionValueConn"].get("type-code"), k["IVisionValueConn"].get("lock-policy-code")) == ("2", "1")
+    assert (k["forceConn"].get("type-code"), k["forceConn"].get("size")) == ("1", "5")
+    inst = {i.get("name"): i for i in psm.iter(O + "instance")}
+    assert inst["guppy"].find(O + "activity").get("scheduler") == "ORO_SCHED_RT"
+    assert inst["controller"].find(O + "activity").get("periodic") == "false"
+    assert {(p.get("name"), p.get("value")) for p in inst["vision"].iter(O + "property-value")} == \
+        {("threshold", "12"), ("debug", "1")}
+
+
+def test_psm_package_parameter():
+    bound = run("m2m/10-bind.xsl", DATA / "unprofiled.pim.xml")
+    psm = ET.fromstring(run("m2m/20-orocos-psm.xsl", bound, **{"package-name": "My Robot"}))
+    assert psm.get("package") == "my_robot"
+    tc = [t for t in psm.iter(O + "task-context") if t.get("class") == "Prosilica"][0]
+    # unprofiled R4: public/protected, not read-only, not a convention name, mappable type
+    assert [p.get("name") for p in tc.iter(O + "property")] == ["ip", "width"]
+    assert [p.get("xml-default") for p in tc.iter(O + "property")] == ["10.0.0.9", "640"]
+
+
+def test_psm_unsupported_type():
+    text = _mutate("unprofiled", 'type-name="double" type-library="c" primitive="float64" visibility="public"/>',
+                   'type-name="Pose" type-library="c" visibility="public"/>')
+    with pytest.raises(Exception) as exc:
+        run("m2m/20-orocos-psm.xsl", run("m2m/10-bind.xsl", text))
+    assert "ORO001" in str(exc.value) and "screws" in str(exc.value)
+
+
+# ---------------------------------------------------------------- text
+def _deploy_xml(files, name):
+    text = files[f"deploy/{name}.xml"].text
+    assert '<!DOCTYPE properties SYSTEM "cpf.dtd">' in text
+    return text, ET.fromstring(text.encode())
+
+
+@pytest.mark.parametrize("name", ["composite", "unprofiled"])
+def test_text_common(name):
+    _, psm, files = case(name)
+    pkg = psm.get("package")
+    for path, f in files.items():
+        assert "robomda" in f.text.split("\n")[0] + f.text.split("\n")[1] + f.text.split("\n")[2]
+        assert "/work/" not in f.text and "\r" not in f.text
+        assert f.get("stylesheet", "").startswith("m2t/orocos/")
+    text, root = _deploy_xml(files, psm.get("deploy-name"))
+    declared = {t.get("type-name"): {p.get("name") for p in t.iter(O + "property")} for t in psm.iter(O + "task-context")}
+    conn_names = [s.get("name") for s in root.findall("struct") if s.get("type") == "ConnPolicy"]
+    assert root.find("simple[@name='Import']/value").text == pkg
+    port_uses: dict[str, int] = {}
+    for comp in root.findall("struct"):
+        if comp.get("type") == "ConnPolicy":
+            fields = [c.get("name") for c in comp]
+            assert fields[:4] == ["type", "size", "lock_policy", "init"]
+            continue
+        kids = [c.get("name") for c in comp]
+        assert set(kids) <= ALLOWED_COMPONENT_CHILDREN, kids
+        act = comp.find("struct[@name='Activity']")
+        assert {"Period", "Priority", "Scheduler"} <= {c.get("name") for c in act}
+        assert act.find("simple[@name='Scheduler']/value").text in ("ORO_SCHED_RT", "ORO_SCHED_OTHER")
+        for p in comp.findall("struct[@name='Properties']/simple"):
+            assert p.get("name") in declared[comp.get("type")]
+            assert p.get("type") != "int"
+        for p in comp.findall("struct[@name='Ports']/simple"):
+            port_uses[p.find("value").text] = port_uses.get(p.find("value").text, 0) + 1
+    assert all(port_uses.get(n, 0) >= 2 for n in conn_names)  # no dangling connection names
+    cmake = files["CMakeLists.txt"].text
+    assert f"project({pkg})" in cmake and "find_package(OROCOS-RTT REQUIRED)" in cmake
+    assert "UseOROCOS-RTT.cmake" in cmake and "orocos_generate_package()" in cmake
+    assert re.search(r"CMAKE_CXX_STANDARD (14|17)\b", cmake) and "20" not in re.findall(r"CMAKE_CXX_STANDARD (\d+)", cmake)
+    assert f"orocos_component({pkg} " in cmake
+    comps = files["src/components.cpp"].text
+    assert "ORO_CREATE_COMPONENT_LIBRARY()" in comps
+    for t in psm.iter(O + "task-context"):
+        assert f"ORO_LIST_COMPONENT_TYPE({t.get('type-name')})" in comps
+    pkgxml = ET.fromstring(files["package.xml"].text.encode())
+    assert pkgxml.get("format") == "3" and pkgxml.find("name").text == pkg
+    ops = files[f"deploy/{psm.get('deploy-name')}.ops"].text
+    assert f'import("{pkg}")' in ops and "var ConnPolicy" in ops and ".start()" in ops
+    lua = files[f"deploy/{psm.get('deploy-name')}.lua"].text
+    assert "os.exit(ok and 0 or 1)" in lua and '"Running"' in lua
+
+
+def test_text_wrapper_cpp():
+    _, _, files = case("composite")
+    hpp = files["include/headlamp_assembly/Camera.hpp"].text
+    assert "class Camera : public RTT::TaskContext, public ::atomic::GuppyF080C" in hpp
+    assert "#include <guppy/GuppyF080C.hpp>" in hpp and "RTT::OutputPort<int> port_image;" in hpp
+    cpp = files["src/Camera.cpp"].text
+    assert 'this->ports()->addPort(port_image).doc("Vision value");' in cpp
+    assert "port_image.setDataSample(0);" in cpp
+    assert 'this->addProperty("ip", ::atomic::GuppyF080C::ip).doc("Camera IP address");' in cpp
+    assert 'this->addOperation("setWidth", &Camera::setWidth, this, RTT::OwnThread)' in cpp
+    assert "return ::atomic::GuppyF080C::configure();" in cpp
+    assert "port_image.write(::atomic::GuppyF080C::getVisionValue());" in cpp
+    vis = files["src/Vision.cpp"].text
+    assert "addEventPort(port_imageIn_IVisionValue)" in vis
+    assert "::VisionAlgo::setVisionValue(imageIn_IVisionValue_sample);" in vis
+    assert vis.index("setVisionValue(") < vis.index("::VisionAlgo::update();") < vis.index("port_imageIn_IForce.write(")
+    assert cpp.count("{") == cpp.count("}") and vis.count("(") == vis.count(")")
+
+
+def test_text_base_and_user_files():
+    _, _, files = case("composite")
+    assert files["include/headlamp_assembly/ForceControllerBase.hpp"].get("mode") == "generated"
+    user = files["src/ForceController.cpp"]
+    assert user.get("mode") == "user" and "Written once" in user.text
+    assert "class ForceController : public ForceControllerBase" in files["include/headlamp_assembly/ForceController.hpp"].text
+    assert "stiffness(100.0)" in files["src/ForceControllerBase.cpp"].text
+    _, _, files2 = case("unprofiled")
+    base = files2["include/meka/PlannerBase.hpp"].text
+    assert "virtual bool reset() = 0;" in base
+    assert "bool Planner::reset()" in files2["src/Planner.cpp"].text
+
+
+def test_text_deploy_values():
+    _, _, files = case("composite")
+    text = files["deploy/headlamp_assembly.xml"].text
+    root = ET.fromstring(text.encode())
+    cp = root.find("struct[@name='IVisionValueConn']")
+    assert [cp.find(f"simple[@name='{n}']/value").text for n in ("type", "size", "lock_policy", "init")] == ["2", "10", "1", "1"]
+    vis = root.find("struct[@name='vision']")
+    assert vis.find("struct[@name='Activity']/simple[@name='CpuAffinity']/value").text == "2"
+    assert vis.find("struct[@name='Properties']/simple[@name='debug']/value").text == "1"
+    ops = files["deploy/headlamp_assembly.ops"].text
+    assert 'setActivity("guppy", 0.003, 50, ORO_SCHED_RT)' in ops
+    assert 'setActivityOnCPU("vision", 0.0, 20, ORO_SCHED_RT, 1)' in ops
+    assert 'connect("guppy.image", "controller.vision", cp_IVisionValueConn)' in ops
+    assert 'guppy.ip = "192.168.0.10"' in ops
+
+
+def test_text_library_paths():
+    _, _, files = chain((DATA / "composite.pim.xml").read_text(), model_dir="../models/")
+    cmake = files["CMakeLists.txt"].text
+    assert 'set(HEADLAMP_ASSEMBLY_GUPPY_DIR "${CMAKE_CURRENT_SOURCE_DIR}/../models/atomic/guppy" CACHE PATH' in cmake
+    assert 'set(HEADLAMP_ASSEMBLY_VISION_ALGO_DIR "/opt/atomic/vision" CACHE PATH' in cmake
+    assert "add_subdirectory(\"${HEADLAMP_ASSEMBLY_GUPPY_DIR}\" guppy-build)" in cmake
+    assert "target_link_libraries(headlamp_assembly guppy_driver)" in cmake
+
+
+def test_deterministic():
+    a = run("m2m/10-bind.xsl", DATA / "composite.pim.xml")
+    assert a == run("m2m/10-bind.xsl", DATA / "composite.pim.xml")
+
+
+# ------------------------------------------------------------ fixtures
+@pytest.mark.parametrize("case_name", ["headlamp", "meka"])
+def test_fixture_chain(case_name):
+    xmi = ROOT / "fixtures" / "cases" / case_name / "model.xmi"
+    if not xmi.exists() or not (XSLT / "import" / "import.xsl").exists():
+        pytest.skip("fixture or importer missing")
+    pim = run("import/import.xsl", xmi, **{"source-name": "model.xmi"})
+    bound, psm, files = chain(pim, model_dir="..")
+    acts = {a.find(O + "activity").get("scheduler") for a in psm.iter(O + "instance")}
+    periods = {a.find(O + "activity").get("period") for a in psm.iter(O + "instance")}
+    if case_name == "headlamp":
+        assert acts == {"ORO_SCHED_RT"} and periods == {"0.003"}
+    else:
+        assert acts == {"ORO_SCHED_OTHER"} and periods == {"0.05"}
+    assert all(a.find(O + "activity").get("priority") == "50" for a in psm.iter(O + "instance"))
+    assert len(list(psm.iter(O + "connection"))) >= 1
+    assert "../atomic" in files["CMakeLists.txt"].text

@@ -1,0 +1,115 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/common/naming.xsl - identifiers and name styles shared by the stages.
+
+  Reads:   nothing (a function module, included by stage stylesheets).
+  Writes:  nothing.
+  Params:  none.
+  Errors:  none.
+
+  Functions (namespace f = urn:robomda:xslt:function)
+    f:words($name)            the words of a UML name: split at non-alphanumerics
+                              and at lower/digit -> upper and UPPER -> Upper-lower
+                              boundaries ("GX1050Camera" -> GX1050, Camera;
+                              "visionValue" -> vision, Value; "IOPort" -> IO, Port)
+    f:cpp-identifier($name)   a valid C++ identifier keeping the name's case:
+                              invalid characters -> "_", leading digit -> "n",
+                              empty -> "unnamed", C++ keyword -> keyword + "_"
+    f:snake-case($name)       lower snake_case identifier ("visionValue" -> vision_value)
+    f:upper-camel($name)      UpperCamelCase identifier ("vision value" -> VisionValue)
+    f:upper-first($s)         first letter upper-cased, rest unchanged
+    f:lower-first($s)         first letter lower-cased, rest unchanged
+    f:is-cpp-identifier($s)   true when $s is a valid, non-keyword C++ identifier
+    f:escape-cpp-keyword($s)  $s + "_" when $s is a C++ keyword (or reserved
+                              name such as a leading "_" + upper letter)
+    f:unique-names($names)    the names made unique in order: a repeated name
+                              gets "_2", "_3" ... (first occurrence unchanged)
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:f="urn:robomda:xslt:function"
+    xmlns:fp="urn:robomda:xslt:function:private"
+    exclude-result-prefixes="#all">
+
+  <xsl:variable name="fp:cpp-keywords" as="xs:string+" select="(
+    'alignas', 'alignof', 'and', 'and_eq', 'asm', 'auto', 'bitand', 'bitor',
+    'bool', 'break', 'case', 'catch', 'char', 'char8_t', 'char16_t', 'char32_t',
+    'class', 'compl', 'concept', 'const', 'consteval', 'constexpr', 'constinit',
+    'const_cast', 'continue', 'co_await', 'co_return', 'co_yield', 'decltype',
+    'default', 'delete', 'do', 'double', 'dynamic_cast', 'else', 'enum',
+    'explicit', 'export', 'extern', 'false', 'float', 'for', 'friend', 'goto',
+    'if', 'inline', 'int', 'long', 'mutable', 'namespace', 'new', 'noexcept',
+    'not', 'not_eq', 'nullptr', 'operator', 'or', 'or_eq', 'private',
+    'protected', 'public', 'register', 'reinterpret_cast', 'requires', 'return',
+    'short', 'signed', 'sizeof', 'static', 'static_assert', 'static_cast',
+    'struct', 'switch', 'template', 'this', 'thread_local', 'throw', 'true',
+    'try', 'typedef', 'typeid', 'typename', 'union', 'unsigned', 'using',
+    'virtual', 'void', 'volatile', 'wchar_t', 'while', 'xor', 'xor_eq',
+    'final', 'override', 'RTT', 'std')"/>
+
+  <xsl:function name="f:words" as="xs:string*">
+    <xsl:param name="name" as="xs:string?"/>
+    <xsl:variable name="spaced" as="xs:string"
+        select="replace(replace(string($name), '([a-z0-9])([A-Z])', '$1 $2'),
+                        '([A-Z]+)([A-Z][a-z])', '$1 $2')"/>
+    <xsl:sequence select="tokenize($spaced, '[^A-Za-z0-9]+')[. ne '']"/>
+  </xsl:function>
+
+  <xsl:function name="f:escape-cpp-keyword" as="xs:string">
+    <xsl:param name="s" as="xs:string"/>
+    <xsl:sequence select="if ($s = $fp:cpp-keywords or matches($s, '^_[A-Z_]') or contains($s, '__'))
+                          then $s || '_' else $s"/>
+  </xsl:function>
+
+  <xsl:function name="f:cpp-identifier" as="xs:string">
+    <xsl:param name="name" as="xs:string?"/>
+    <xsl:variable name="clean" as="xs:string"
+        select="replace(replace(normalize-space(string($name)), '[^A-Za-z0-9_]', '_'), '_{2,}', '_')"/>
+    <xsl:variable name="lead" as="xs:string"
+        select="if ($clean = ('', '_')) then 'unnamed'
+                else if (matches($clean, '^[0-9]')) then 'n' || $clean
+                else $clean"/>
+    <xsl:sequence select="f:escape-cpp-keyword($lead)"/>
+  </xsl:function>
+
+  <xsl:function name="f:snake-case" as="xs:string">
+    <xsl:param name="name" as="xs:string?"/>
+    <xsl:variable name="w" as="xs:string*" select="f:words($name)"/>
+    <xsl:sequence select="if (empty($w)) then 'unnamed'
+                          else f:cpp-identifier(lower-case(string-join($w, '_')))"/>
+  </xsl:function>
+
+  <xsl:function name="f:upper-first" as="xs:string">
+    <xsl:param name="s" as="xs:string?"/>
+    <xsl:sequence select="upper-case(substring(string($s), 1, 1)) || substring(string($s), 2)"/>
+  </xsl:function>
+
+  <xsl:function name="f:lower-first" as="xs:string">
+    <xsl:param name="s" as="xs:string?"/>
+    <xsl:sequence select="lower-case(substring(string($s), 1, 1)) || substring(string($s), 2)"/>
+  </xsl:function>
+
+  <xsl:function name="f:upper-camel" as="xs:string">
+    <xsl:param name="name" as="xs:string?"/>
+    <xsl:variable name="w" as="xs:string*"
+        select="tokenize(string($name), '[^A-Za-z0-9]+')[. ne '']"/>
+    <xsl:sequence select="if (empty($w)) then 'Unnamed'
+                          else f:cpp-identifier(string-join($w ! f:upper-first(.), ''))"/>
+  </xsl:function>
+
+  <xsl:function name="f:is-cpp-identifier" as="xs:boolean">
+    <xsl:param name="s" as="xs:string?"/>
+    <xsl:sequence select="matches(string($s), '^[A-Za-z_][A-Za-z0-9_]*$')
+                          and f:escape-cpp-keyword(string($s)) eq string($s)"/>
+  </xsl:function>
+
+  <xsl:function name="f:unique-names" as="xs:string*">
+    <xsl:param name="names" as="xs:string*"/>
+    <xsl:sequence select="for $i in 1 to count($names)
+                          return
+                            let $n := $names[$i],
+                                $k := count($names[position() lt $i][. eq $n])
+                            return if ($k eq 0) then $n else $n || '_' || ($k + 1)"/>
+  </xsl:function>
+</xsl:stylesheet>

@@ -1,0 +1,632 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/m2m/10-bind.xsl - resolve the platform binding of a PIM.
+
+  Reads:   a PIM, urn:robomda:pim:1 (schemas/pim/1/pim.xsd), as written by
+           xslt/import/import.xsl; an existing pim:binding is replaced.
+  Writes:  the same PIM with pim:binding appended (schemas/pim/1/binding.xsd).
+  Params:  none.
+
+  What it resolves (docs/profile.md: stereotypes of profile "robomda" first,
+  else the unprofiled conventions of seed 000, else defaults):
+  - instances: when a composite component has parts typed by components and
+    is not itself the type of a part ("top composite"), the parts of all top
+    composites are the instances and their assembly connectors the
+    connections; otherwise one instance per non-abstract component that has
+    ports or a realization, named after the component. Instance names are
+    made valid C++ identifiers (xslt/common/naming.xsl).
+  - per instance: execution environment (the ExecutionEnvironment that the
+    part, component, top composite, realizing class, or an artifact that
+    manifests one of them, is deployed to; else the only one of the model),
+    its middleware (Middleware::kind, else the EE name), host (the enclosing
+    Node, else the node holding the deployment, else the only host), and
+    activity (Activity tags on part > component > realizing class; else the
+    attributes sample / priority / scheduler / cpuAffinity of the realizing
+    class; priority / scheduler / cpuAffinity also of the EE; else 0 / 0 /
+    OTHER / 0).
+  - per component type: realizing class (+ AtomicCode header / cppName) and
+    data ports. A port's interfaces: its explicit provided / required lists;
+    else, typed by an interface: "in" when the component or its realizing
+    class requires (Usage) it, "out" when it provides it, else "out"
+    ("in" if the port is conjugated); typed by a class: the interfaces that
+    class provides (out) and requires (in), swapped if conjugated. The datum
+    is the one attribute of the interface.
+  - connections: connector mode groups connector writer->reader pairs by
+    writer port (one connection point per output port); ball-and-socket mode
+    makes one connection point per interface with all its writers and
+    readers. Name: the (first) connector's name, else <Interface>Conn, made a
+    unique identifier. Policy: ConnectionPolicy on the connector > writer port
+    > reader port > interface > default DATA / 1 / LOCK_FREE / init false /
+    pull false / topic "".
+  - libraries (Artifacts stereotyped Library; if none is, every Artifact):
+    path (Library::path > fileName > name), target (Library::target > name),
+    includeDir (Library::includeDir > "include").
+  - hosts: Nodes, and Nodes / Devices stereotyped Host; hostname (Host tag >
+    name), address (Host tag > "localhost" when the model has one host, else
+    the hostname).
+
+  Errors (namespace urn:robomda:error, raised with f:fail):
+    BND001  dangling reference: an id attribute points to no PIM element
+    BND002  a port is typed by, provides or requires a missing interface
+    BND003  unknown middleware name (names the ExecutionEnvironment)
+    BND004  an interface used by a port carries no datum (no attribute)
+    BND005  an interface used by a port carries several data (attributes)
+    BND006  an instance is deployed to no execution environment and the model
+            has none or several
+    BND007  a connector joins no output port to an input port of the same
+            data type
+    BND008  an input port is fed by several connection points (connector mode)
+    BND009  two instances get the same name
+    BND010  invalid tag / convention value (period, priority, scheduler,
+            cpuAffinity, connection type, size, lock policy, boolean)
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:pim="urn:robomda:pim:1"
+    xmlns:f="urn:robomda:xslt:function"
+    xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:m="urn:robomda:xslt:mode"
+    xmlns:mp="urn:robomda:xslt:mode:private"
+    exclude-result-prefixes="#all">
+
+  <xsl:include href="../common/errors.xsl"/>
+  <xsl:include href="../common/naming.xsl"/>
+
+  <xsl:output method="xml" indent="yes" encoding="UTF-8"/>
+
+  <xsl:mode on-no-match="shallow-copy"/>
+  <xsl:mode name="m:bind" on-no-match="shallow-copy"/>
+
+  <xsl:key name="fp:id" match="*[@id]" use="@id"/>
+  <xsl:key name="fp:part-by-type" match="pim:part" use="@type"/>
+  <xsl:key name="fp:deployment-by-deployed" match="pim:deployment" use="tokenize(@deployed)"/>
+  <xsl:key name="fp:manifestation-by-element" match="pim:manifestation" use="@element"/>
+  <!-- keys on the temporary working tree ($fp:work) -->
+  <xsl:key name="fp:bc" match="pim:bound-component" use="@component"/>
+  <xsl:key name="fp:ip-by-interface" match="fp:ip" use="@interface"/>
+  <xsl:key name="fp:ip-by-end" match="fp:ip" use="@part || '|' || @port"/>
+  <xsl:key name="fp:instance-by-part" match="pim:instance" use="@xmi-id"/>
+  <xsl:key name="fp:instance-by-name" match="pim:instance" use="@name"/>
+
+  <xsl:variable name="fp:profile-uri" as="xs:string" select="'http://robomda.org/profile/robomda/1'"/>
+
+  <!-- ============================================================ entry -->
+  <xsl:template match="/" as="document-node()">
+    <xsl:document>
+      <xsl:apply-templates select="node()" mode="m:bind"/>
+    </xsl:document>
+  </xsl:template>
+
+  <xsl:template match="pim:model" mode="m:bind" as="element(pim:model)">
+    <xsl:sequence select="fp:check-references(.)"/>
+    <xsl:copy>
+      <xsl:copy-of select="@*"/>
+      <xsl:apply-templates select="node() except pim:binding" mode="m:bind"/>
+      <xsl:call-template name="fp:binding"/>
+    </xsl:copy>
+  </xsl:template>
+
+  <!-- ============================================== reference checks -->
+  <xsl:function name="fp:check-references" as="empty-sequence()">
+    <xsl:param name="model" as="element(pim:model)"/>
+    <xsl:variable name="root" as="document-node()" select="root($model[1])"/>
+    <xsl:for-each select="$model//pim:port">
+      <xsl:variable name="port" as="element(pim:port)" select="."/>
+      <xsl:for-each select="@type[not(key('fp:id', ., $root))],
+                            (pim:provided, pim:required)/@interface[not(key('fp:id', ., $root)/self::pim:interface)]">
+        <xsl:sequence select="f:fail('BND002', $port/@id,
+            'port ''' || $port/@name || ''' refers to a missing interface ''' || . || '''')"/>
+      </xsl:for-each>
+    </xsl:for-each>
+    <xsl:for-each select="$model//pim:realization/@classifier, $model//pim:part/@type,
+                          $model//pim:generalization/@general,
+                          $model//pim:connector/pim:end/(@role | @part),
+                          $model//pim:manifestation/@element,
+                          $model//pim:communication-path/pim:end/@node,
+                          $model//(pim:provides | pim:requires)/@interface,
+                          $model//pim:attribute/@type, $model//pim:parameter/@type">
+      <xsl:if test="empty(key('fp:id', ., $root))">
+        <xsl:sequence select="f:fail('BND001', (../ancestor-or-self::*[@id])[last()]/@id,
+            'dangling reference ' || name(.) || '=''' || . || ''' on ' || local-name(..))"/>
+      </xsl:if>
+    </xsl:for-each>
+    <xsl:for-each select="$model//pim:deployment">
+      <xsl:variable name="d" as="element(pim:deployment)" select="."/>
+      <xsl:for-each select="tokenize(@deployed)[empty(key('fp:id', ., $root))]">
+        <xsl:sequence select="f:fail('BND001', $d/@id,
+            'dangling reference deployed=''' || . || ''' on deployment ''' || $d/@name || '''')"/>
+      </xsl:for-each>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- f:fail usable where a value is expected (its declared type is
+       statically empty, which a typed branch would reject at compile time) -->
+  <xsl:function name="fp:fail" as="item()*">
+    <xsl:param name="code" as="xs:string"/>
+    <xsl:param name="id" as="xs:string?"/>
+    <xsl:param name="message" as="xs:string"/>
+    <xsl:sequence select="f:fail($code, $id, $message)"/>
+  </xsl:function>
+
+  <!-- ===================================================== stereotypes -->
+  <!-- the robomda stereotype $name applied to $e -->
+  <xsl:function name="fp:stereo" as="element(pim:stereotype)?">
+    <xsl:param name="e" as="element()?"/>
+    <xsl:param name="name" as="xs:string"/>
+    <xsl:sequence select="$e/pim:stereotype[@name eq $name]
+        [lower-case(@profile) eq 'robomda' or @profile-uri eq $fp:profile-uri][1]"/>
+  </xsl:function>
+
+  <!-- a tag value of stereotype $stereo on $e; enumeration literals given by
+       reference resolve to their name; "Kind::LIT" / "Kind.LIT" -> "LIT" -->
+  <xsl:function name="fp:tag" as="xs:string?">
+    <xsl:param name="e" as="element()?"/>
+    <xsl:param name="stereo" as="xs:string"/>
+    <xsl:param name="tag" as="xs:string"/>
+    <xsl:variable name="root" as="document-node()" select="root($e[1])"/>
+    <xsl:variable name="t" as="element()?" select="fp:stereo($e, $stereo)/pim:tag[@name eq $tag][1]"/>
+    <xsl:sequence select="if (empty($t)) then ()
+        else if ($t/@ref = ('true', '1')) then string(key('fp:id', $t/@value, $root)/@name)
+        else string($t/@value)"/>
+  </xsl:function>
+
+  <xsl:function name="fp:literal" as="xs:string">
+    <xsl:param name="v" as="xs:string"/>
+    <xsl:sequence select="replace(normalize-space($v), '^.*(::|\.)([A-Za-z_][A-Za-z0-9_]*)$', '$2')"/>
+  </xsl:function>
+
+  <!-- first tag value found on the elements $es, with its source -->
+  <xsl:function name="fp:first-tag" as="xs:string*">
+    <xsl:param name="es" as="element()*"/>
+    <xsl:param name="stereo" as="xs:string"/>
+    <xsl:param name="tag" as="xs:string"/>
+    <xsl:sequence select="(for $e in $es return fp:tag($e, $stereo, $tag))[normalize-space(.)][1]"/>
+  </xsl:function>
+
+  <!-- default value of the convention attribute $name of $e -->
+  <xsl:function name="fp:conv" as="xs:string?">
+    <xsl:param name="e" as="element()?"/>
+    <xsl:param name="name" as="xs:string"/>
+    <xsl:sequence select="$e/pim:attribute[@name eq $name][@default][1]/@default ! string(.)"/>
+  </xsl:function>
+
+  <!-- ================================================= value parsing -->
+  <xsl:function name="fp:strip" as="xs:string">
+    <xsl:param name="v" as="xs:string"/>
+    <xsl:sequence select="replace(normalize-space($v), '^[&quot;'']|[&quot;'']$', '')"/>
+  </xsl:function>
+
+  <xsl:function name="fp:number" as="xs:double">
+    <xsl:param name="v" as="xs:string"/>
+    <xsl:param name="what" as="xs:string"/>
+    <xsl:param name="id" as="xs:string?"/>
+    <xsl:variable name="s" as="xs:string" select="replace(fp:strip($v), '[fFdD]$', '')"/>
+    <xsl:sequence select="if ($s castable as xs:double and number($s) ge 0) then number($s)
+        else fp:fail('BND010', $id, $what || ': ''' || $v || ''' is not a non-negative number')"/>
+  </xsl:function>
+
+  <xsl:function name="fp:integer" as="xs:integer">
+    <xsl:param name="v" as="xs:string"/>
+    <xsl:param name="what" as="xs:string"/>
+    <xsl:param name="id" as="xs:string?"/>
+    <xsl:variable name="d" as="xs:double" select="fp:number($v, $what, $id)"/>
+    <xsl:sequence select="if ($d eq floor($d)) then xs:integer($d)
+        else fp:fail('BND010', $id, $what || ': ''' || $v || ''' is not an integer')"/>
+  </xsl:function>
+
+  <xsl:function name="fp:boolean" as="xs:boolean">
+    <xsl:param name="v" as="xs:string"/>
+    <xsl:param name="what" as="xs:string"/>
+    <xsl:param name="id" as="xs:string?"/>
+    <xsl:variable name="s" as="xs:string" select="lower-case(fp:strip($v))"/>
+    <xsl:sequence select="if ($s = ('true', '1', 'yes')) then true()
+        else if ($s = ('false', '0', 'no')) then false()
+        else fp:fail('BND010', $id, $what || ': ''' || $v || ''' is not a boolean')"/>
+  </xsl:function>
+
+  <xsl:function name="fp:enum" as="xs:string">
+    <xsl:param name="v" as="xs:string"/>
+    <xsl:param name="allowed" as="xs:string+"/>
+    <xsl:param name="what" as="xs:string"/>
+    <xsl:param name="id" as="xs:string?"/>
+    <xsl:variable name="s" as="xs:string"
+        select="upper-case(replace(fp:literal(fp:strip($v)), '[\s\-]', '_'))"/>
+    <xsl:variable name="hit" as="xs:string?"
+        select="$allowed[replace(., '_', '') eq replace($s, '_', '')][1]"/>
+    <xsl:sequence select="if (exists($hit)) then $hit
+        else fp:fail('BND010', $id, $what || ': ''' || $v || ''' is not one of '
+                    || string-join($allowed, ', '))"/>
+  </xsl:function>
+
+  <!-- ================================================ model look-ups -->
+  <xsl:function name="fp:realizing-class" as="element(pim:class)?">
+    <xsl:param name="c" as="element(pim:component)"/>
+    <xsl:variable name="root" as="document-node()" select="root($c[1])"/>
+    <xsl:sequence select="(for $r in $c/pim:realization
+                           return key('fp:id', $r/@classifier, $root)/self::pim:class)[1]"/>
+  </xsl:function>
+
+  <xsl:function name="fp:execution-environments" as="element(pim:node)*">
+    <xsl:param name="root" as="document-node()"/>
+    <xsl:sequence select="$root/pim:model/pim:platform//pim:node[@kind eq 'execution-environment']"/>
+  </xsl:function>
+
+  <xsl:function name="fp:hosts" as="element(pim:node)*">
+    <xsl:param name="root" as="document-node()"/>
+    <xsl:sequence select="$root/pim:model/pim:platform//pim:node
+                [@kind eq 'node' or exists(fp:stereo(., 'Host'))]"/>
+  </xsl:function>
+
+  <xsl:function name="fp:middleware" as="xs:string">
+    <xsl:param name="ee" as="element(pim:node)"/>
+    <xsl:variable name="tag" as="xs:string?" select="fp:tag($ee, 'Middleware', 'kind')"/>
+    <xsl:variable name="raw" as="xs:string" select="if (normalize-space($tag)) then fp:literal($tag) else string($ee/@name)"/>
+    <xsl:variable name="key" as="xs:string" select="upper-case(replace($raw, '[^A-Za-z0-9]', ''))"/>
+    <xsl:sequence select="
+        if ($key = ('OROCOS', 'OROCOSRTT', 'RTT', 'OROCOSRTT2')) then 'OROCOS'
+        else if ($key = ('ROS', 'ROS1')) then 'ROS'
+        else if ($key eq 'ROS2') then 'ROS2'
+        else if ($key = ('OPENRTM', 'OPENRTMAIST')) then 'OpenRTM'
+        else fp:fail('BND003', $ee/@id, 'unknown middleware ''' || $raw
+                    || ''' of execution environment ''' || $ee/@name
+                    || ''' (expected OROCOS, ROS, ROS2 or OpenRTM)')"/>
+  </xsl:function>
+
+  <!-- ========================================================= binding -->
+  <xsl:template name="fp:binding" as="element(pim:binding)">
+    <xsl:context-item as="element(pim:model)" use="required"/>
+    <xsl:variable name="root" as="document-node()" select="root(.)"/>
+    <xsl:variable name="components" as="element(pim:component)*" select="pim:application//pim:component"/>
+    <xsl:variable name="tops" as="element(pim:component)*"
+        select="$components[pim:part[key('fp:id', @type, $root)/self::pim:component]]
+                           [empty(key('fp:part-by-type', @id, $root))]"/>
+    <xsl:variable name="instances" as="element(pim:instance)*">
+      <xsl:choose>
+        <xsl:when test="exists($tops)">
+          <xsl:for-each select="$tops/pim:part[key('fp:id', @type, $root)/self::pim:component]">
+            <xsl:sequence select="fp:instance(., key('fp:id', @type, $root), ..)"/>
+          </xsl:for-each>
+        </xsl:when>
+        <xsl:otherwise>
+          <xsl:for-each select="$components[not(@abstract = ('true', '1'))][pim:port or pim:realization]">
+            <xsl:sequence select="fp:instance((), ., ())"/>
+          </xsl:for-each>
+        </xsl:otherwise>
+      </xsl:choose>
+    </xsl:variable>
+    <xsl:for-each-group select="$instances" group-by="@name">
+      <xsl:if test="count(current-group()) gt 1">
+        <xsl:sequence select="f:fail('BND009', current-group()[2]/@xmi-id,
+            'two instances are named ''' || current-grouping-key() || '''')"/>
+      </xsl:if>
+    </xsl:for-each-group>
+    <xsl:variable name="bound" as="element(pim:bound-component)*"
+        select="$components[@id = $instances/@component] ! fp:bound-component(.)"/>
+    <!-- working tree: instances, components and one fp:ip per instance data port -->
+    <xsl:variable name="work" as="document-node()">
+      <xsl:document>
+        <fp:work>
+          <xsl:sequence select="$instances, $bound"/>
+          <xsl:for-each select="$instances">
+            <xsl:variable name="inst" as="element(pim:instance)" select="."/>
+            <xsl:for-each select="$bound[@component eq $inst/@component]/pim:data-port">
+              <fp:ip instance="{$inst/@name}" part="{$inst/@xmi-id}" port="{@port}" data-port="{@name}"
+                     direction="{@direction}" interface="{@interface}"
+                     type-key="{(@primitive, @type)[1]}"/>
+            </xsl:for-each>
+          </xsl:for-each>
+        </fp:work>
+      </xsl:document>
+    </xsl:variable>
+    <xsl:variable name="connectors" as="element(pim:connector)*"
+        select="$tops/pim:connector[not(@kind eq 'delegation')][count(pim:end[@part]) ge 2]"/>
+    <xsl:variable name="raw-connections" as="element(pim:connection)*"
+        select="if (exists($connectors)) then fp:connections-from-connectors($connectors, $work)
+                else fp:connections-from-interfaces(., $work)"/>
+    <xsl:variable name="names" as="xs:string*" select="f:unique-names($raw-connections/@name)"/>
+    <pim:binding instances-from="{if (exists($tops)) then 'parts' else 'components'}"
+                 connections-from="{if (exists($connectors)) then 'connectors' else 'interfaces'}">
+      <xsl:sequence select="fp:hosts($root) ! fp:host(.)"/>
+      <xsl:sequence select="fp:libraries(.)"/>
+      <xsl:sequence select="$bound, $instances"/>
+      <xsl:for-each select="$raw-connections">
+        <xsl:variable name="i" as="xs:integer" select="position()"/>
+        <xsl:copy>
+          <xsl:attribute name="name" select="$names[$i]"/>
+          <xsl:sequence select="@* except @name, node()"/>
+        </xsl:copy>
+      </xsl:for-each>
+    </pim:binding>
+  </xsl:template>
+
+  <!-- ========================================================== hosts -->
+  <xsl:function name="fp:host" as="element(pim:host)">
+    <xsl:param name="n" as="element(pim:node)"/>
+    <xsl:variable name="root" as="document-node()" select="root($n)"/>
+    <xsl:variable name="hn" as="xs:string?" select="fp:tag($n, 'Host', 'hostname')[normalize-space(.)]"/>
+    <xsl:variable name="ad" as="xs:string?" select="fp:tag($n, 'Host', 'address')[normalize-space(.)]"/>
+    <xsl:variable name="hostname" as="xs:string" select="($hn, string($n/@name))[1]"/>
+    <pim:host xmi-id="{$n/@id}" name="{$n/@name}" hostname="{$hostname}"
+              hostname-source="{if (exists($hn)) then 'stereotype' else 'name'}"
+              address="{if (exists($ad)) then $ad else if (count(fp:hosts($root)) eq 1) then 'localhost' else $hostname}"
+              address-source="{if (exists($ad)) then 'stereotype' else 'default'}"/>
+  </xsl:function>
+
+  <!-- ====================================================== libraries -->
+  <xsl:function name="fp:libraries" as="element(pim:library)*">
+    <xsl:param name="model" as="element(pim:model)"/>
+    <xsl:variable name="all" as="element(pim:artifact)*" select="$model/pim:platform//pim:artifact"/>
+    <xsl:variable name="profiled" as="element(pim:artifact)*" select="$all[exists(fp:stereo(., 'Library'))]"/>
+    <xsl:for-each select="if (exists($profiled)) then $profiled else $all">
+      <xsl:variable name="p" as="xs:string?" select="fp:tag(., 'Library', 'path')[normalize-space(.)]"/>
+      <xsl:variable name="t" as="xs:string?" select="fp:tag(., 'Library', 'target')[normalize-space(.)]"/>
+      <xsl:variable name="i" as="xs:string?" select="fp:tag(., 'Library', 'includeDir')[normalize-space(.)]"/>
+      <xsl:variable name="path" as="xs:string"
+          select="translate(($p, @file-name[normalize-space(.)], @name)[1], '\', '/')"/>
+      <pim:library xmi-id="{@id}" name="{@name}" path="{$path}"
+                   path-source="{if (exists($p)) then 'stereotype' else if (normalize-space(@file-name)) then 'file-name' else 'name'}"
+                   absolute="{starts-with($path, '/') or matches($path, '^[A-Za-z]:/')}"
+                   target="{($t, @name)[1]}"
+                   target-source="{if (exists($t)) then 'stereotype' else 'name'}"
+                   include-dir="{($i, 'include')[1]}">
+        <xsl:for-each select="pim:manifestation">
+          <pim:manifests element="{@element}"/>
+        </xsl:for-each>
+      </pim:library>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- ====================================================== instances -->
+  <xsl:function name="fp:instance" as="element(pim:instance)">
+    <xsl:param name="part" as="element(pim:part)?"/>
+    <xsl:param name="c" as="element(pim:component)"/>
+    <xsl:param name="top" as="element(pim:component)?"/>
+    <xsl:variable name="root" as="document-node()" select="root($c)"/>
+    <xsl:variable name="r" as="element(pim:class)?" select="fp:realizing-class($c)"/>
+    <xsl:variable name="ids" as="xs:string*" select="($part/@id, $c/@id, $top/@id, $r/@id) ! string(.)"/>
+    <xsl:variable name="artifact-ids" as="xs:string*"
+        select="key('fp:manifestation-by-element', $ids, $root)/../@id ! string(.)"/>
+    <xsl:variable name="deployments" as="element(pim:deployment)*"
+        select="key('fp:deployment-by-deployed', ($ids, $artifact-ids), $root)"/>
+    <xsl:variable name="ees" as="element(pim:node)*" select="fp:execution-environments($root)"/>
+    <xsl:variable name="ee" as="element(pim:node)?"
+        select="(for $d in $deployments
+                 return if ($d/../@kind eq 'execution-environment') then $d/..
+                        else ($d/..//pim:node[@kind eq 'execution-environment'])[1],
+                 if (count($ees) eq 1) then $ees else ())[1]"/>
+    <xsl:variable name="inst-id" as="xs:string" select="string(($part/@id, $c/@id)[1])"/>
+    <xsl:if test="empty($ee)">
+      <xsl:sequence select="f:fail('BND006', $inst-id,
+          'component instance ''' || ($part/@name, $c/@name)[1] || ''' is deployed to no execution environment'
+          || ' and the model has ' || count($ees) || ' of them')"/>
+    </xsl:if>
+    <xsl:variable name="host" as="element(pim:node)?"
+        select="($ee/ancestor::pim:node[. intersect fp:hosts($root)][1],
+                 $deployments/..[. intersect fp:hosts($root)],
+                 if (count(fp:hosts($root)) eq 1) then fp:hosts($root) else ())[1]"/>
+    <pim:instance name="{f:cpp-identifier(($part/@name[normalize-space(.)], $c/@name)[1])}"
+                  xmi-id="{$inst-id}" component="{$c/@id}">
+      <xsl:if test="$top"><xsl:attribute name="composite" select="$top/@id"/></xsl:if>
+      <xsl:if test="$host"><xsl:attribute name="host" select="$host/@id"/></xsl:if>
+      <xsl:attribute name="execution-environment" select="$ee/@id"/>
+      <xsl:attribute name="middleware" select="fp:middleware($ee)"/>
+      <xsl:for-each select="fp:tag($ee, 'Middleware', 'version')[normalize-space(.)]">
+        <xsl:attribute name="middleware-version" select="."/>
+      </xsl:for-each>
+      <xsl:if test="$r"><xsl:attribute name="realization" select="$r/@id"/></xsl:if>
+      <xsl:sequence select="fp:activity(($part, $c, $r), $r, $ee, $inst-id)"/>
+    </pim:instance>
+  </xsl:function>
+
+  <!-- one activity value: (value, source) from stereotype tag, class
+       convention, EE convention or default -->
+  <xsl:function name="fp:activity-value" as="xs:string+">
+    <xsl:param name="stereo-on" as="element()*"/>
+    <xsl:param name="tag" as="xs:string"/>
+    <xsl:param name="r" as="element(pim:class)?"/>
+    <xsl:param name="ee" as="element(pim:node)?"/>
+    <xsl:param name="conv" as="xs:string"/>
+    <xsl:param name="default" as="xs:string"/>
+    <xsl:variable name="t" as="xs:string?" select="fp:first-tag($stereo-on, 'Activity', $tag)"/>
+    <xsl:variable name="c" as="xs:string?" select="fp:conv($r, $conv)[normalize-space(.)]"/>
+    <xsl:variable name="e" as="xs:string?"
+        select="if ($conv eq 'sample') then () else fp:conv($ee, $conv)[normalize-space(.)]"/>
+    <xsl:sequence select="if (exists($t)) then ($t, 'stereotype')
+                          else if (exists($c)) then ($c, 'realizing-class')
+                          else if (exists($e)) then ($e, 'execution-environment')
+                          else ($default, 'default')"/>
+  </xsl:function>
+
+  <xsl:function name="fp:activity" as="element(pim:activity)">
+    <xsl:param name="stereo-on" as="element()*"/>
+    <xsl:param name="r" as="element(pim:class)?"/>
+    <xsl:param name="ee" as="element(pim:node)?"/>
+    <xsl:param name="id" as="xs:string"/>
+    <xsl:variable name="period" as="xs:string+" select="fp:activity-value($stereo-on, 'period', $r, $ee, 'sample', '0')"/>
+    <xsl:variable name="prio" as="xs:string+" select="fp:activity-value($stereo-on, 'priority', $r, $ee, 'priority', '0')"/>
+    <xsl:variable name="sched" as="xs:string+" select="fp:activity-value($stereo-on, 'scheduler', $r, $ee, 'scheduler', 'OTHER')"/>
+    <xsl:variable name="cpu" as="xs:string+" select="fp:activity-value($stereo-on, 'cpuAffinity', $r, $ee, 'cpuAffinity', '0')"/>
+    <xsl:variable name="s" as="xs:string"
+        select="replace(replace(upper-case(fp:literal(fp:strip($sched[1]))), '^(ORO_)?SCHED_', ''), '^OTHERS$', 'OTHER')"/>
+    <pim:activity period="{fp:number($period[1], 'period', $id)}" period-source="{$period[2]}"
+                  priority="{fp:integer($prio[1], 'priority', $id)}" priority-source="{$prio[2]}"
+                  scheduler="{fp:enum($s, ('RT', 'OTHER'), 'scheduler', $id)}" scheduler-source="{$sched[2]}"
+                  cpu-affinity="{fp:integer($cpu[1], 'cpuAffinity', $id)}" cpu-affinity-source="{$cpu[2]}"/>
+  </xsl:function>
+
+  <!-- ============================================ components and ports -->
+  <xsl:function name="fp:bound-component" as="element(pim:bound-component)">
+    <xsl:param name="c" as="element(pim:component)"/>
+    <xsl:variable name="r" as="element(pim:class)?" select="fp:realizing-class($c)"/>
+    <xsl:variable name="h" as="xs:string?" select="fp:tag($r, 'AtomicCode', 'header')[normalize-space(.)]"/>
+    <xsl:variable name="n" as="xs:string?" select="fp:tag($r, 'AtomicCode', 'cppName')[normalize-space(.)]"/>
+    <pim:bound-component component="{$c/@id}" name="{$c/@name}">
+      <xsl:if test="$r">
+        <xsl:attribute name="realization" select="$r/@id"/>
+        <xsl:attribute name="realization-name" select="$r/@name"/>
+        <xsl:attribute name="header" select="($h, $r/@name || '.hpp')[1]"/>
+        <xsl:attribute name="header-source" select="if (exists($h)) then 'stereotype' else 'default'"/>
+        <xsl:attribute name="cpp-name" select="($n, $r/@name)[1]"/>
+        <xsl:attribute name="cpp-name-source" select="if (exists($n)) then 'stereotype' else 'name'"/>
+      </xsl:if>
+      <xsl:for-each select="$c/pim:port">
+        <xsl:sequence select="fp:data-ports(., $c, $r)"/>
+      </xsl:for-each>
+    </pim:bound-component>
+  </xsl:function>
+
+  <!-- (interface id, direction) pairs of a port, flattened: id, dir, id, dir ... -->
+  <xsl:function name="fp:port-interfaces" as="xs:string*">
+    <xsl:param name="p" as="element(pim:port)"/>
+    <xsl:param name="c" as="element(pim:component)"/>
+    <xsl:param name="r" as="element(pim:class)?"/>
+    <xsl:variable name="root" as="document-node()" select="root($p[1])"/>
+    <xsl:variable name="t" as="element()?" select="key('fp:id', $p/@type, $root)"/>
+    <xsl:variable name="conj" as="xs:boolean" select="$p/@conjugated = ('true', '1')"/>
+    <xsl:sequence select="
+        if ($p/pim:provided or $p/pim:required) then
+          ($p/pim:provided ! (string(@interface), 'out'), $p/pim:required ! (string(@interface), 'in'))
+        else if ($t/self::pim:interface) then
+          (string($t/@id),
+           if (($c, $r)/pim:requires/@interface = $t/@id) then 'in'
+           else if (($c, $r)/pim:provides/@interface = $t/@id) then 'out'
+           else if ($conj) then 'in' else 'out')
+        else if ($t/self::pim:class) then
+          ($t/pim:provides ! (string(@interface), if ($conj) then 'in' else 'out'),
+           $t/pim:requires ! (string(@interface), if ($conj) then 'out' else 'in'))
+        else ()"/>
+  </xsl:function>
+
+  <xsl:function name="fp:data-ports" as="element(pim:data-port)*">
+    <xsl:param name="p" as="element(pim:port)"/>
+    <xsl:param name="c" as="element(pim:component)"/>
+    <xsl:param name="r" as="element(pim:class)?"/>
+    <xsl:variable name="root" as="document-node()" select="root($p[1])"/>
+    <xsl:variable name="pairs" as="xs:string*" select="fp:port-interfaces($p, $c, $r)"/>
+    <xsl:variable name="n" as="xs:integer" select="count($pairs) idiv 2"/>
+    <xsl:for-each select="1 to $n">
+      <xsl:variable name="i" as="element()?" select="key('fp:id', $pairs[2 * current() - 1], $root)"/>
+      <xsl:if test="not($i/self::pim:interface)">
+        <xsl:sequence select="f:fail('BND002', $p/@id, 'port ''' || $p/@name
+            || ''' refers to ''' || $pairs[2 * current() - 1] || ''', which is not an interface')"/>
+      </xsl:if>
+      <xsl:variable name="data" as="element(pim:attribute)*" select="$i/pim:attribute"/>
+      <xsl:if test="empty($data)">
+        <xsl:sequence select="f:fail('BND004', $i/@id, 'interface ''' || $i/@name
+            || ''' (port ''' || $p/@name || ''') carries no datum: give it one attribute')"/>
+      </xsl:if>
+      <xsl:if test="count($data) gt 1">
+        <xsl:sequence select="f:fail('BND005', $i/@id, 'interface ''' || $i/@name
+            || ''' (port ''' || $p/@name || ''') carries ' || count($data)
+            || ' attributes (' || string-join($data/@name, ', ') || '): an interface carries exactly one datum')"/>
+      </xsl:if>
+      <pim:data-port port="{$p/@id}"
+                     name="{f:cpp-identifier(if ($n eq 1) then $p/@name else $p/@name || '_' || $i/@name)}"
+                     port-name="{$p/@name}" direction="{$pairs[2 * current()]}"
+                     interface="{$i/@id}" interface-name="{$i/@name}"
+                     datum="{$data/@id}" datum-name="{$data/@name}">
+        <xsl:sequence select="$data/(@primitive, @type, @type-name, @upper)"/>
+      </pim:data-port>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- ==================================================== connections -->
+  <xsl:function name="fp:policy" as="element(pim:policy)">
+    <xsl:param name="candidates" as="element()*"/>
+    <xsl:variable name="e" as="element()?" select="$candidates[exists(fp:stereo(., 'ConnectionPolicy'))][1]"/>
+    <xsl:variable name="id" as="xs:string?" select="$e/@id"/>
+    <xsl:variable name="type" as="xs:string"
+        select="fp:enum((fp:tag($e, 'ConnectionPolicy', 'type')[normalize-space(.)], 'DATA')[1],
+                        ('DATA', 'BUFFER', 'CIRCULAR_BUFFER'), 'connection type', $id)"/>
+    <pim:policy type="{$type}"
+        size="{let $s := fp:tag($e, 'ConnectionPolicy', 'size')[normalize-space(.)]
+               return if (exists($s)) then max((1, fp:integer($s, 'size', $id))) else 1}"
+        lock-policy="{fp:enum((fp:tag($e, 'ConnectionPolicy', 'lockPolicy')[normalize-space(.)], 'LOCK_FREE')[1],
+                             ('UNSYNC', 'LOCKED', 'LOCK_FREE'), 'lock policy', $id)}"
+        init="{fp:boolean((fp:tag($e, 'ConnectionPolicy', 'init')[normalize-space(.)], 'false')[1], 'init', $id)}"
+        pull="{fp:boolean((fp:tag($e, 'ConnectionPolicy', 'pull')[normalize-space(.)], 'false')[1], 'pull', $id)}"
+        topic="{fp:tag($e, 'ConnectionPolicy', 'topic')}"
+        source="{if (empty($e)) then 'default' else if ($e/self::pim:connector) then 'connector'
+                 else if ($e/self::pim:port) then 'port' else 'interface'}">
+      <xsl:if test="$e"><xsl:attribute name="source-element" select="$e/@id"/></xsl:if>
+    </pim:policy>
+  </xsl:function>
+
+  <xsl:function name="fp:connection-name" as="xs:string">
+    <xsl:param name="connector" as="element(pim:connector)?"/>
+    <xsl:param name="interface" as="element(pim:interface)"/>
+    <xsl:sequence select="if (normalize-space($connector/@name)) then f:cpp-identifier($connector/@name)
+                          else f:cpp-identifier($interface/@name || 'Conn')"/>
+  </xsl:function>
+
+  <!-- ball-and-socket: one connection point per interface -->
+  <xsl:function name="fp:connections-from-interfaces" as="element(pim:connection)*">
+    <xsl:param name="model" as="element(pim:model)"/>
+    <xsl:param name="work" as="document-node()"/>
+    <xsl:variable name="root" as="document-node()" select="root($model[1])"/>
+    <xsl:for-each select="$model/pim:application//pim:interface">
+      <xsl:variable name="ips" as="element(fp:ip)*" select="key('fp:ip-by-interface', @id, $work)"/>
+      <xsl:variable name="w" as="element(fp:ip)*" select="$ips[@direction eq 'out']"/>
+      <xsl:variable name="r" as="element(fp:ip)*" select="$ips[@direction eq 'in']"/>
+      <xsl:if test="exists($w) and exists($r)">
+        <pim:connection name="{fp:connection-name((), .)}" xmi-id="{@id}" interface="{@id}">
+          <xsl:sequence select="fp:policy((key('fp:id', ($w, $r)/@port, $root), .))"/>
+          <xsl:for-each select="$w"><pim:writer instance="{@instance}" port="{@port}" data-port="{@data-port}"/></xsl:for-each>
+          <xsl:for-each select="$r"><pim:reader instance="{@instance}" port="{@port}" data-port="{@data-port}"/></xsl:for-each>
+        </pim:connection>
+      </xsl:if>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- connector mode: writer->reader pairs grouped by writer port -->
+  <xsl:function name="fp:connections-from-connectors" as="element(pim:connection)*">
+    <xsl:param name="connectors" as="element(pim:connector)*"/>
+    <xsl:param name="work" as="document-node()"/>
+    <xsl:variable name="root" as="document-node()" select="root($connectors[1])"/>
+    <xsl:variable name="pairs" as="element(fp:pair)*">
+      <xsl:for-each select="$connectors">
+        <xsl:variable name="k" as="element(pim:connector)" select="."/>
+        <xsl:variable name="ips" as="element(fp:ip)*"
+            select="pim:end[@part] ! key('fp:ip-by-end', @part || '|' || @role, $work)"/>
+        <xsl:variable name="found" as="element(fp:pair)*">
+          <xsl:for-each select="$ips[@direction eq 'out']">
+            <xsl:variable name="wr" as="element(fp:ip)" select="."/>
+            <xsl:for-each select="$ips[@direction eq 'in'][@part ne $wr/@part or @port ne $wr/@port]
+                                      [@interface eq $wr/@interface or @type-key eq $wr/@type-key]">
+              <fp:pair connector="{$k/@id}" interface="{$wr/@interface}"
+                       w-instance="{$wr/@instance}" w-port="{$wr/@port}" w-dp="{$wr/@data-port}"
+                       r-instance="{@instance}" r-port="{@port}" r-dp="{@data-port}"/>
+            </xsl:for-each>
+          </xsl:for-each>
+        </xsl:variable>
+        <xsl:if test="empty($found)">
+          <xsl:sequence select="f:fail('BND007', $k/@id, 'connector ''' || $k/@name
+              || ''' joins no output port to an input port of the same data type')"/>
+        </xsl:if>
+        <xsl:sequence select="$found"/>
+      </xsl:for-each>
+    </xsl:variable>
+    <xsl:for-each-group select="$pairs" group-by="@r-instance || '.' || @r-dp">
+      <xsl:if test="count(distinct-values(current-group()/(@w-instance || '.' || @w-dp))) gt 1">
+        <xsl:sequence select="f:fail('BND008', current-group()[1]/@r-port,
+            'input port ' || current-grouping-key() || ' is fed by several output ports ('
+            || string-join(distinct-values(current-group()/(@w-instance || '.' || @w-dp)), ', ') || ')')"/>
+      </xsl:if>
+    </xsl:for-each-group>
+    <xsl:for-each-group select="$pairs" group-by="@w-instance || '.' || @w-dp">
+      <xsl:variable name="g" as="element(fp:pair)+" select="current-group()"/>
+      <xsl:variable name="ks" as="element(pim:connector)*"
+          select="key('fp:id', distinct-values($g/@connector), $root)"/>
+      <xsl:variable name="iface" as="element(pim:interface)" select="key('fp:id', $g[1]/@interface, $root)"/>
+      <pim:connection name="{fp:connection-name($ks[1], $iface)}" xmi-id="{$ks[1]/@id}"
+                      interface="{$iface/@id}" connectors="{$ks/@id}">
+        <xsl:sequence select="fp:policy(($ks, key('fp:id', ($g[1]/@w-port, $g/@r-port), $root), $iface))"/>
+        <pim:writer instance="{$g[1]/@w-instance}" port="{$g[1]/@w-port}" data-port="{$g[1]/@w-dp}"/>
+        <xsl:for-each-group select="$g" group-by="@r-instance || '.' || @r-dp">
+          <pim:reader instance="{@r-instance}" port="{@r-port}" data-port="{@r-dp}"/>
+        </xsl:for-each-group>
+      </pim:connection>
+    </xsl:for-each-group>
+  </xsl:function>
+</xsl:stylesheet>

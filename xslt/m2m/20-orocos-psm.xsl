@@ -1,0 +1,364 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/m2m/20-orocos-psm.xsl - bound PIM -> Orocos RTT 2.x PSM (seed 000 R1-R5).
+
+  Reads:   a bound PIM, urn:robomda:pim:1 with pim:binding (xslt/m2m/10-bind.xsl).
+  Writes:  urn:robomda:psm-orocos:1 (schemas/psm-orocos/1/psm-orocos.xsd).
+  Data:    xslt/m2m/orocos-types.xml (primitive kind -> C++ / cpf XML type, sample).
+  Params:  package-name (see below).
+
+  Rules
+  R1  one TaskContext per component type with an OROCOS instance: class =
+      UpperCamel(component name), namespace = package name, type name
+      namespace::class. kind "wrapper" when the component has a realizing
+      class (the TaskContext derives from it, seed 000 Fig. 11), else "base"
+      (a generated <class>Base plus a user class <class>).
+  R2  one port per bound data port: out -> RTT::OutputPort<T>, in ->
+      RTT::InputPort<T>; member port_<name>; accessor get<Datum> / set<Datum>.
+  R3  operations: the protected operations of the realizing class (base kind:
+      of the component), except the lifecycle names and the names RTT's
+      TaskContext already defines. Thread: OperationThread tag, else
+      ClientThread for a query, else OwnThread. in parameters by value
+      (const T& for strings), out / inout by reference.
+  R4  properties: the attributes stereotyped Configurable of the realizing
+      class (base kind: of the component); without any, the public and
+      protected attributes that are not static, not read-only and not named
+      sample / priority / scheduler / cpuAffinity. Convention-selected
+      attributes of a type RTT cannot marshal are skipped; a Configurable one
+      is an error.
+  R5  activity: deployer type "Activity" for all instances (own thread;
+      Period 0 = non-periodic, else periodic); PeriodicActivity is not used
+      because it shares one thread among components with equal period and
+      priority. Scheduler always explicit.
+  Deployment: instances with middleware OROCOS; connections whose ends are
+  all OROCOS instances (ends on other middlewares are dropped, a connection
+  left without writer or reader is dropped: a name used by one port would
+  need a transport). Peers: a reader instance gets the writer instances of a
+  connection whose interface declares operations (it may call them); data
+  flow alone needs no peers.
+
+  Errors (urn:robomda:error, f:fail):
+    ORO001  a port, operation parameter or Configurable property has a type
+            robomda cannot map to C++ / cpf XML (names the element)
+    ORO002  a property default value is not valid for its type
+    ORO003  the input has no pim:binding (run xslt/m2m/10-bind.xsl first)
+    ORO004  two component types map to the same C++ class name
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:pim="urn:robomda:pim:1"
+    xmlns:o="urn:robomda:psm-orocos:1"
+    xmlns:ty="urn:robomda:orocos-types:1"
+    xmlns:f="urn:robomda:xslt:function"
+    xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:m="urn:robomda:xslt:mode"
+    exclude-result-prefixes="#all">
+
+  <xsl:include href="../common/errors.xsl"/>
+  <xsl:include href="../common/naming.xsl"/>
+
+  <xsl:param name="package-name" as="xs:string" select="''">
+    <!-- the component package (CMake project, deployer Import); '' = lower snake-case of the model name -->
+  </xsl:param>
+
+  <xsl:output method="xml" indent="yes" encoding="UTF-8"/>
+  <xsl:mode name="m:to-psm" on-no-match="fail"/>
+
+  <xsl:key name="fp:id" match="*[@id]" use="@id"/>
+  <xsl:key name="fp:type" match="ty:type" use="@primitive"/>
+  <xsl:key name="fp:bc" match="pim:bound-component" use="@component"/>
+  <xsl:key name="fp:instance" match="pim:instance" use="@name"/>
+  <xsl:key name="fp:connection-by-instance" match="pim:connection" use="(pim:writer | pim:reader)/@instance"/>
+
+  <xsl:variable name="fp:types" as="document-node()" select="doc('orocos-types.xml')"/>
+  <xsl:variable name="fp:reserved-operations" as="xs:string+" select="(
+      'configure', 'start', 'update', 'stop', 'cleanup', 'trigger', 'error', 'recover',
+      'activate', 'isRunning', 'isActive', 'isConfigured', 'inFatalError', 'inException',
+      'inRunTimeError', 'getPeriod', 'setPeriod', 'getCpuAffinity', 'setCpuAffinity',
+      'loadService', 'getName', 'getState')"/>
+  <xsl:variable name="fp:convention-names" as="xs:string+" select="('sample', 'priority', 'scheduler', 'cpuAffinity')"/>
+
+  <xsl:function name="fp:fail" as="item()*">
+    <xsl:param name="code" as="xs:string"/>
+    <xsl:param name="id" as="xs:string?"/>
+    <xsl:param name="message" as="xs:string"/>
+    <xsl:sequence select="f:fail($code, $id, $message)"/>
+  </xsl:function>
+
+  <xsl:function name="fp:stereo" as="element(pim:stereotype)?">
+    <xsl:param name="e" as="element()?"/>
+    <xsl:param name="name" as="xs:string"/>
+    <xsl:sequence select="$e/pim:stereotype[@name eq $name]
+        [lower-case(@profile) eq 'robomda' or @profile-uri eq 'http://robomda.org/profile/robomda/1'][1]"/>
+  </xsl:function>
+
+  <!-- ================================================================ entry -->
+  <xsl:template match="/" as="document-node()">
+    <xsl:document>
+      <xsl:apply-templates select="pim:model" mode="m:to-psm"/>
+    </xsl:document>
+  </xsl:template>
+
+  <xsl:template match="pim:model[empty(pim:binding)]" mode="m:to-psm" as="empty-sequence()">
+    <xsl:sequence select="f:fail('ORO003', @id, 'the model has no platform binding: run xslt/m2m/10-bind.xsl first')"/>
+  </xsl:template>
+
+  <xsl:template match="pim:model" mode="m:to-psm" as="element(o:deployment)">
+    <xsl:variable name="b" as="element(pim:binding)" select="pim:binding"/>
+    <xsl:variable name="pkg" as="xs:string"
+        select="if (normalize-space($package-name)) then f:snake-case($package-name) else f:snake-case(@name)"/>
+    <xsl:variable name="instances" as="element(pim:instance)*" select="$b/pim:instance[@middleware eq 'OROCOS']"/>
+    <xsl:variable name="components" as="element(pim:bound-component)*"
+        select="$b/pim:bound-component[@component = $instances/@component]"/>
+    <xsl:for-each-group select="$components" group-by="f:upper-camel(@name)">
+      <xsl:if test="count(current-group()) gt 1">
+        <xsl:sequence select="f:fail('ORO004', current-group()[2]/@component, 'components '''
+            || string-join(current-group()/@name, ''', ''') || ''' all map to C++ class ' || current-grouping-key())"/>
+      </xsl:if>
+    </xsl:for-each-group>
+    <xsl:variable name="connections" as="element(pim:connection)*"
+        select="$b/pim:connection[pim:writer/@instance = $instances/@name and pim:reader/@instance = $instances/@name]"/>
+    <o:deployment xmi-id="{@id}" model-name="{@name}" deploy-name="{f:snake-case(@name)}"
+                  package="{$pkg}" namespace="{$pkg}" source="{@source}">
+      <xsl:for-each select="$b/pim:library">
+        <o:library xmi-id="{@xmi-id}" name="{@name}" path="{@path}" absolute="{@absolute}"
+                   target="{@target}" include-dir="{@include-dir}"
+                   cmake-var="{upper-case($pkg) || '_' || upper-case(f:snake-case(@name)) || '_DIR'}"
+                   build-dir="{f:snake-case(@name) || '-build'}"/>
+      </xsl:for-each>
+      <xsl:sequence select="$components ! fp:task-context(., $pkg)"/>
+      <xsl:for-each select="$b/pim:host">
+        <o:host xmi-id="{@xmi-id}" name="{@name}" hostname="{@hostname}" address="{@address}"/>
+      </xsl:for-each>
+      <xsl:for-each select="$connections">
+        <o:connection xmi-id="{@xmi-id}" name="{@name}" type="{pim:policy/@type}"
+                      type-code="{index-of(('DATA', 'BUFFER', 'CIRCULAR_BUFFER'), pim:policy/@type) - 1}"
+                      size="{pim:policy/@size}" lock-policy="{pim:policy/@lock-policy}"
+                      lock-policy-code="{index-of(('UNSYNC', 'LOCKED', 'LOCK_FREE'), pim:policy/@lock-policy) - 1}"
+                      init="{pim:policy/@init}" pull="{pim:policy/@pull}" topic="{pim:policy/@topic}">
+          <xsl:for-each select="pim:writer[@instance = $instances/@name]">
+            <o:writer instance="{@instance}" port="{@data-port}" xmi-id="{@port}"/>
+          </xsl:for-each>
+          <xsl:for-each select="pim:reader[@instance = $instances/@name]">
+            <o:reader instance="{@instance}" port="{@data-port}" xmi-id="{@port}"/>
+          </xsl:for-each>
+        </o:connection>
+      </xsl:for-each>
+      <xsl:for-each select="$instances">
+        <xsl:sequence select="fp:instance(., $pkg, $connections)"/>
+      </xsl:for-each>
+    </o:deployment>
+  </xsl:template>
+
+  <!-- ============================================================ types -->
+  <xsl:function name="fp:type" as="element(ty:type)?">
+    <xsl:param name="typed" as="element()"/>
+    <xsl:sequence select="if ($typed/@upper and not($typed/@upper = ('1', '')))
+                          then () else key('fp:type', string($typed/@primitive), $fp:types)"/>
+  </xsl:function>
+
+  <xsl:function name="fp:required-type" as="element(ty:type)">
+    <xsl:param name="typed" as="element()"/>
+    <xsl:param name="id" as="xs:string?"/>
+    <xsl:param name="what" as="xs:string"/>
+    <xsl:variable name="t" as="element(ty:type)?" select="fp:type($typed)"/>
+    <xsl:sequence select="if (exists($t) and ($t/@primitive ne 'void' or $what eq 'result'))
+        then $t
+        else fp:fail('ORO001', $id, $what || ' has type ''' || ($typed/@type-name, $typed/@primitive, '?')[1]
+                     || (if ($typed/@upper and not($typed/@upper = ('1', ''))) then '[' || $typed/@upper || ']' else '')
+                     || ''', which robomda cannot map to an Orocos C++ / XML type (supported: '
+                     || string-join($fp:types//ty:type[@primitive ne 'void']/@primitive, ', ') || ')')"/>
+  </xsl:function>
+
+  <xsl:function name="fp:doc" as="element(o:doc)?">
+    <xsl:param name="e" as="element()?"/>
+    <xsl:for-each select="$e/pim:doc[normalize-space(.)]">
+      <o:doc><xsl:value-of select="normalize-space(.)"/></o:doc>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- ===================================================== task context -->
+  <xsl:function name="fp:task-context" as="element(o:task-context)">
+    <xsl:param name="bc" as="element(pim:bound-component)"/>
+    <xsl:param name="pkg" as="xs:string"/>
+    <xsl:variable name="c" as="element(pim:component)" select="key('fp:id', $bc/@component, root($bc))"/>
+    <xsl:variable name="r" as="element(pim:class)?" select="key('fp:id', $bc/@realization, root($bc))"/>
+    <xsl:variable name="class" as="xs:string" select="f:upper-camel($c/@name)"/>
+    <xsl:variable name="owner" as="element()" select="($r, $c)[1]"/>
+    <xsl:variable name="callable" as="element(pim:operation)*" select="$r/pim:operation[@visibility ne 'private']"/>
+    <o:task-context xmi-id="{$c/@id}" name="{$c/@name}" class="{$class}" namespace="{$pkg}"
+                    type-name="{$pkg}::{$class}" kind="{if ($r) then 'wrapper' else 'base'}"
+                    generated-class="{if ($r) then $class else $class || 'Base'}">
+      <xsl:sequence select="fp:doc($c)"/>
+      <xsl:if test="$r">
+        <xsl:variable name="n" as="xs:string"
+            select="string-join(tokenize($bc/@cpp-name, '::')[normalize-space(.)] ! f:cpp-identifier(.), '::')"/>
+        <o:realizing-class xmi-id="{$r/@id}" name="{$r/@name}" cpp-name="::{$n}" header="{$bc/@header}"/>
+      </xsl:if>
+      <xsl:for-each select="('configure', 'start', 'update', 'stop', 'cleanup')">
+        <xsl:variable name="h" as="xs:string" select="."/>
+        <xsl:variable name="op" as="element(pim:operation)?" select="$callable[@name eq $h][1]"/>
+        <o:hook name="{$h}">
+          <xsl:if test="$op">
+            <xsl:attribute name="call" select="$h"/>
+            <xsl:attribute name="returns-bool" select="$op/pim:parameter[@direction eq 'return']/@primitive = 'boolean'"/>
+            <xsl:attribute name="xmi-id" select="$op/@id"/>
+          </xsl:if>
+        </o:hook>
+      </xsl:for-each>
+      <xsl:for-each select="$bc/pim:data-port">
+        <xsl:variable name="port" as="element(pim:port)" select="key('fp:id', @port, root($bc))"/>
+        <xsl:variable name="t" as="element(ty:type)"
+            select="fp:required-type(., @port, 'port ''' || @port-name || ''' (datum ''' || @datum-name || ''' of interface ''' || @interface-name || ''')')"/>
+        <xsl:variable name="acc" as="xs:string"
+            select="(if (@direction eq 'out') then 'get' else 'set') || f:upper-first(f:cpp-identifier(@datum-name))"/>
+        <o:port xmi-id="{@port}" direction="{@direction}"
+                rtt-class="{if (@direction eq 'out') then 'RTT::OutputPort' else 'RTT::InputPort'}&lt;{$t/@cpp}&gt;"
+                name="{@name}" member="port_{@name}" interface="{@interface-name}" datum="{@datum-name}"
+                accessor="{$acc}" accessor-declared="{exists($callable[@name eq $acc])}"
+                primitive="{$t/@primitive}" cpp-type="{$t/@cpp}" xml-type="{$t/@xml}" sample="{$t/@sample}">
+          <xsl:sequence select="fp:doc($port)"/>
+        </o:port>
+      </xsl:for-each>
+      <xsl:for-each select="$owner/pim:operation[@visibility eq 'protected'][not(@static = ('true', '1'))]
+                                                [not(@name = $fp:reserved-operations)]">
+        <xsl:sequence select="fp:operation(.)"/>
+      </xsl:for-each>
+      <xsl:variable name="configurable" as="element(pim:attribute)*"
+          select="$owner/pim:attribute[exists(fp:stereo(., 'Configurable'))]"/>
+      <xsl:choose>
+        <xsl:when test="exists($configurable)">
+          <xsl:sequence select="$configurable ! fp:property(., true())"/>
+        </xsl:when>
+        <xsl:otherwise>
+          <xsl:sequence select="$owner/pim:attribute[@visibility = ('public', 'protected')]
+                                  [not(@static = ('true', '1'))][not(@read-only = ('true', '1'))]
+                                  [not(@name = $fp:convention-names)][exists(fp:type(.))][@primitive ne 'void']
+                                ! fp:property(., false())"/>
+        </xsl:otherwise>
+      </xsl:choose>
+    </o:task-context>
+  </xsl:function>
+
+  <xsl:function name="fp:operation" as="element(o:operation)">
+    <xsl:param name="op" as="element(pim:operation)"/>
+    <xsl:variable name="tag" as="xs:string?"
+        select="fp:stereo($op, 'OperationThread')/pim:tag[@name eq 'thread'][1]/@value"/>
+    <xsl:variable name="thread" as="xs:string"
+        select="if (exists($tag)) then (if (matches($tag, 'CLIENT', 'i')) then 'RTT::ClientThread' else 'RTT::OwnThread')
+                else if ($op/@query = ('true', '1')) then 'RTT::ClientThread' else 'RTT::OwnThread'"/>
+    <xsl:variable name="ret" as="element(pim:parameter)?" select="$op/pim:parameter[@direction eq 'return'][1]"/>
+    <xsl:variable name="rt" as="element(ty:type)"
+        select="if ($ret) then fp:required-type($ret, $op/@id, 'result of operation ''' || $op/@name || '''')
+                else key('fp:type', 'void', $fp:types)"/>
+    <o:operation xmi-id="{$op/@id}" name="{f:cpp-identifier($op/@name)}" thread="{$thread}"
+                 return-type="{$rt/@cpp}" return-primitive="{$rt/@primitive}" return-sample="{$rt/@sample}">
+      <xsl:sequence select="fp:doc($op)"/>
+      <xsl:for-each select="$op/pim:parameter[@direction ne 'return']">
+        <xsl:variable name="t" as="element(ty:type)"
+            select="fp:required-type(., @id, 'parameter ''' || @name || ''' of operation ''' || $op/@name || '''')"/>
+        <o:parameter xmi-id="{@id}" name="{f:cpp-identifier((@name[normalize-space(.)], 'arg' || position())[1])}"
+                     direction="{@direction}" primitive="{$t/@primitive}" cpp-type="{$t/@cpp}" xml-type="{$t/@xml}"
+                     decl-type="{if (@direction = ('out', 'inout')) then $t/@cpp || '&amp;'
+                                 else if ($t/@pass eq 'cref') then 'const ' || $t/@cpp || '&amp;' else $t/@cpp}">
+          <xsl:sequence select="fp:doc(.)"/>
+        </o:parameter>
+      </xsl:for-each>
+    </o:operation>
+  </xsl:function>
+
+  <!-- ================================================= property values -->
+  <xsl:function name="fp:unquote" as="xs:string">
+    <xsl:param name="v" as="xs:string"/>
+    <xsl:sequence select="if (matches($v, '^&quot;.*&quot;$|^''.*''$', 's')) then substring($v, 2, string-length($v) - 2) else $v"/>
+  </xsl:function>
+
+  <xsl:function name="fp:cpp-string" as="xs:string">
+    <xsl:param name="v" as="xs:string"/>
+    <xsl:sequence select="'&quot;' || replace(replace(replace($v, '\\', '\\\\'), '&quot;', '\\&quot;'), '&#10;', '\\n') || '&quot;'"/>
+  </xsl:function>
+
+  <!-- (xml value, script literal, C++ literal) of a default value -->
+  <xsl:function name="fp:values" as="xs:string+">
+    <xsl:param name="v" as="xs:string"/>
+    <xsl:param name="t" as="element(ty:type)"/>
+    <xsl:param name="id" as="xs:string"/>
+    <xsl:variable name="s" as="xs:string" select="fp:unquote(normalize-space($v))"/>
+    <xsl:variable name="num" as="xs:string" select="replace($s, '^([+\-]?[0-9.eE+\-]+)[fFdDlLuU]*$', '$1')"/>
+    <xsl:variable name="p" as="xs:string" select="$t/@primitive"/>
+    <xsl:sequence select="
+      if ($p eq 'string') then ($s, fp:cpp-string($s), fp:cpp-string($s))
+      else if ($p eq 'boolean') then
+        (if (lower-case($s) = ('true', '1')) then ('1', 'true', 'true')
+         else if (lower-case($s) = ('false', '0')) then ('0', 'false', 'false')
+         else fp:fail('ORO002', $id, 'default ''' || $v || ''' is not a boolean'))
+      else if ($p eq 'char') then
+        (if (string-length($s) eq 1 and matches($s, '[A-Za-z0-9 _.,;:+\-*/=!?]'))
+         then ($s, '''' || $s || '''', '''' || $s || '''')
+         else fp:fail('ORO002', $id, 'default ''' || $v || ''' is not a single plain character'))
+      else if ($p = ('float32', 'float64')) then
+        (if ($num castable as xs:double and not(matches($num, 'nan|inf', 'i')))
+         then ($num, if (contains($num, '.') or contains(lower-case($num), 'e')) then $num else $num || '.0',
+               (if (contains($num, '.') or contains(lower-case($num), 'e')) then $num else $num || '.0')
+               || (if ($p eq 'float32') then 'f' else ''))
+         else fp:fail('ORO002', $id, 'default ''' || $v || ''' is not a number'))
+      else
+        (if ($num castable as xs:integer and (not(starts-with($p, 'u') or $p eq 'octet') or xs:integer($num) ge 0))
+         then (string(xs:integer($num)), string(xs:integer($num)), string(xs:integer($num)))
+         else fp:fail('ORO002', $id, 'default ''' || $v || ''' is not a valid ' || $p))"/>
+  </xsl:function>
+
+  <xsl:function name="fp:property" as="element(o:property)">
+    <xsl:param name="a" as="element(pim:attribute)"/>
+    <xsl:param name="explicit" as="xs:boolean"/>
+    <xsl:variable name="t" as="element(ty:type)"
+        select="fp:required-type($a, $a/@id, 'property ''' || $a/@name || '''')"/>
+    <xsl:variable name="vals" as="xs:string*"
+        select="if ($a/@default) then fp:values($a/@default, $t, $a/@id) else ()"/>
+    <o:property xmi-id="{$a/@id}" name="{f:cpp-identifier($a/@name)}" member="{f:cpp-identifier($a/@name)}"
+                primitive="{$t/@primitive}" cpp-type="{$t/@cpp}" xml-type="{$t/@xml}"
+                cpp-default="{($vals[3], $t/@sample)[1]}">
+      <xsl:if test="exists($vals)">
+        <xsl:attribute name="xml-default" select="$vals[1]"/>
+        <xsl:attribute name="script-default" select="$vals[2]"/>
+      </xsl:if>
+      <xsl:sequence select="fp:doc($a)"/>
+    </o:property>
+  </xsl:function>
+
+  <!-- ========================================================= instance -->
+  <xsl:function name="fp:instance" as="element(o:instance)">
+    <xsl:param name="i" as="element(pim:instance)"/>
+    <xsl:param name="pkg" as="xs:string"/>
+    <xsl:param name="connections" as="element(pim:connection)*"/>
+    <xsl:variable name="c" as="element(pim:component)" select="key('fp:id', $i/@component, root($i))"/>
+    <xsl:variable name="class" as="xs:string" select="f:upper-camel($c/@name)"/>
+    <xsl:variable name="tc" as="element(o:task-context)"
+        select="fp:task-context(key('fp:bc', $i/@component, root($i)), $pkg)"/>
+    <xsl:variable name="a" as="element(pim:activity)" select="$i/pim:activity"/>
+    <xsl:variable name="mine" as="element(pim:connection)*"
+        select="$connections[(pim:writer | pim:reader)/@instance = $i/@name]"/>
+    <o:instance xmi-id="{$i/@xmi-id}" name="{$i/@name}" task-context="{$class}" type-name="{$pkg}::{$class}">
+      <xsl:for-each select="key('fp:id', $i/@host, root($i))">
+        <xsl:attribute name="host" select="(root($i)//pim:host[@xmi-id eq current()/@id]/@hostname, @name)[1]"/>
+      </xsl:for-each>
+      <o:activity type="Activity" periodic="{number($a/@period) ne 0}" period="{$a/@period}"
+                  priority="{$a/@priority}" scheduler="ORO_SCHED_{$a/@scheduler}" cpu-affinity="{$a/@cpu-affinity}"/>
+      <xsl:for-each select="distinct-values($mine[pim:reader/@instance = $i/@name]
+                              [exists(key('fp:id', @interface, root($i))/pim:operation)]
+                              /pim:writer/@instance[. ne $i/@name])">
+        <o:peer instance="{.}"/>
+      </xsl:for-each>
+      <xsl:for-each select="$mine">
+        <xsl:variable name="k" as="element(pim:connection)" select="."/>
+        <xsl:for-each select="distinct-values((pim:writer | pim:reader)[@instance eq $i/@name]/@data-port)">
+          <o:port-connection port="{.}" connection="{$k/@name}"/>
+        </xsl:for-each>
+      </xsl:for-each>
+      <xsl:for-each select="$tc/o:property[@xml-default]">
+        <o:property-value name="{@name}" xml-type="{@xml-type}" value="{@xml-default}" script-value="{@script-default}"/>
+      </xsl:for-each>
+    </o:instance>
+  </xsl:function>
+</xsl:stylesheet>

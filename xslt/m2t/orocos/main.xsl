@@ -1,0 +1,73 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/m2t/orocos/main.xsl - Orocos PSM -> file set (the Orocos package text).
+
+  Reads:   urn:robomda:psm-orocos:1 (schemas/psm-orocos/1/psm-orocos.xsd),
+           from xslt/m2m/20-orocos-psm.xsl.
+  Writes:  urn:robomda:fileset:1 (schemas/fileset/1/fileset.xsd), target "orocos":
+             include/<pkg>/<Class>.hpp, src/<Class>.cpp     per component (generated)
+             include/<pkg>/<Class>Base.hpp, src/<Class>Base.cpp + user
+             include/<pkg>/<Class>.hpp, src/<Class>.cpp (mode user) when the
+             component has no realizing class
+             src/components.cpp, CMakeLists.txt, package.xml
+             deploy/<model>.xml, deploy/<model>.ops, deploy/<model>.lua
+  Params:  model-dir-from-output (xslt/m2t/orocos/params.xsl).
+  Errors:  none (the PSM is complete and valid).
+  Modules: orocos-text.xsl (text helpers), orocos-cpp.xsl, orocos-build.xsl,
+           orocos-deploy.xsl.
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:o="urn:robomda:psm-orocos:1"
+    xmlns:fs="urn:robomda:fileset:1"
+    xmlns:f="urn:robomda:xslt:function"
+    xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:m="urn:robomda:xslt:mode"
+    exclude-result-prefixes="#all">
+
+  <xsl:include href="params.xsl"/>
+  <xsl:include href="orocos-text.xsl"/>
+  <xsl:include href="orocos-cpp.xsl"/>
+  <xsl:include href="orocos-build.xsl"/>
+  <xsl:include href="orocos-deploy.xsl"/>
+
+  <xsl:output method="xml" indent="no" encoding="UTF-8"/>
+  <xsl:mode name="m:emit-files" on-no-match="fail"/>
+
+  <xsl:template match="/" as="document-node()">
+    <xsl:document>
+      <xsl:apply-templates select="o:deployment" mode="m:emit-files"/>
+    </xsl:document>
+  </xsl:template>
+
+  <xsl:template match="o:deployment" mode="m:emit-files" as="element(fs:files)">
+    <xsl:variable name="pkg" as="xs:string" select="@package"/>
+    <fs:files target="orocos">
+      <xsl:for-each select="o:task-context">
+        <xsl:sequence select="fp:file('include/' || $pkg || '/' || @generated-class || '.hpp', 'generated', $fp:cpp-xsl, fp:cpp-header(.))"/>
+        <xsl:sequence select="fp:file('src/' || @generated-class || '.cpp', 'generated', $fp:cpp-xsl, fp:cpp-source(.))"/>
+        <xsl:if test="@kind eq 'base'">
+          <xsl:sequence select="fp:file('include/' || $pkg || '/' || @class || '.hpp', 'user', $fp:cpp-xsl, fp:user-header(.))"/>
+          <xsl:sequence select="fp:file('src/' || @class || '.cpp', 'user', $fp:cpp-xsl, fp:user-source(.))"/>
+        </xsl:if>
+      </xsl:for-each>
+      <xsl:sequence select="fp:file('src/components.cpp', 'generated', $fp:cpp-xsl, fp:components-cpp(.))"/>
+      <xsl:sequence select="fp:file('CMakeLists.txt', 'generated', $fp:build-xsl, fp:cmakelists(.))"/>
+      <xsl:sequence select="fp:file('package.xml', 'generated', $fp:build-xsl, fp:package-xml(.))"/>
+      <xsl:sequence select="fp:file('deploy/' || @deploy-name || '.xml', 'generated', $fp:deploy-xsl, fp:deploy-xml(.))"/>
+      <xsl:sequence select="fp:file('deploy/' || @deploy-name || '.ops', 'generated', $fp:deploy-xsl, fp:deploy-ops(.))"/>
+      <xsl:sequence select="fp:file('deploy/' || @deploy-name || '.lua', 'generated', $fp:deploy-xsl, fp:deploy-lua(.))"/>
+    </fs:files>
+  </xsl:template>
+
+  <xsl:function name="fp:file" as="element(fs:file)">
+    <xsl:param name="path" as="xs:string"/>
+    <xsl:param name="mode" as="xs:string"/>
+    <xsl:param name="stylesheet" as="xs:string"/>
+    <xsl:param name="text" as="xs:string"/>
+    <fs:file path="{$path}" mode="{$mode}" stylesheet="{$stylesheet}">
+      <xsl:value-of select="$text"/>
+    </fs:file>
+  </xsl:function>
+</xsl:stylesheet>

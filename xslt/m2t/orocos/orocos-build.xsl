@@ -1,0 +1,129 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/m2t/orocos/orocos-build.xsl - CMakeLists.txt and package.xml.
+
+  Reads:   o:deployment of urn:robomda:psm-orocos:1.
+  Writes:  strings (file contents), wrapped into fs:file by main.xsl.
+  Params:  model-dir-from-output (params.xsl).  Errors: none.
+
+  The atomic-code library of each o:library is found through a cache
+  variable <PKG>_<LIB>_DIR (PATH), defaulting to the artifact path: as is
+  when absolute, else ${CMAKE_CURRENT_SOURCE_DIR}/<model-dir-from-output>/<path>.
+  When that directory has a CMakeLists.txt it is added with
+  add_subdirectory(DIR <lib>-build) and its target linked; otherwise a
+  prebuilt library named after the target is searched in DIR, DIR/lib and
+  DIR/build. Its include dir and DIR itself are include directories.
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:o="urn:robomda:psm-orocos:1"
+    xmlns:fp="urn:robomda:xslt:function:private"
+    exclude-result-prefixes="#all">
+
+  <!-- "a/./b/" -> "a/b"; "." and "" -> "" -->
+  <xsl:function name="fp:clean-path" as="xs:string">
+    <xsl:param name="p" as="xs:string"/>
+    <xsl:sequence select="string-join(tokenize(translate($p, '\', '/'), '/')[position() eq 1 or . ne ''][. ne '.'], '/')"/>
+  </xsl:function>
+
+  <xsl:function name="fp:library-dir" as="xs:string">
+    <xsl:param name="lib" as="element(o:library)"/>
+    <xsl:variable name="base" as="xs:string" select="fp:clean-path($model-dir-from-output)"/>
+    <xsl:sequence select="if (xs:boolean($lib/@absolute)) then $lib/@path
+        else string-join(('${CMAKE_CURRENT_SOURCE_DIR}', $base[. ne ''], fp:clean-path($lib/@path)[. ne '']), '/')"/>
+  </xsl:function>
+
+  <xsl:function name="fp:cmakelists" as="xs:string">
+    <xsl:param name="d" as="element(o:deployment)"/>
+    <xsl:variable name="pkg" as="xs:string" select="$d/@package"/>
+    <xsl:variable name="sources" as="xs:string*"
+        select="$d/o:task-context ! ('src/' || @generated-class || '.cpp', if (@kind eq 'base') then 'src/' || @class || '.cpp' else ()),
+                'src/components.cpp'"/>
+    <xsl:variable name="headers" as="xs:string*"
+        select="$d/o:task-context ! ('include/' || $pkg || '/' || @generated-class || '.hpp',
+                                     if (@kind eq 'base') then 'include/' || $pkg || '/' || @class || '.hpp' else ())"/>
+    <xsl:sequence select="fp:lines((
+        fp:banner('# ', $fp:build-xsl, 'model ''' || $d/@model-name || '''', false()),
+        'cmake_minimum_required(VERSION 3.5)',
+        'project(' || $pkg || ')',
+        '',
+        '# RTT 2.10 headers do not compile as C++20: pin the standard.',
+        'set(CMAKE_CXX_STANDARD 14)',
+        'set(CMAKE_CXX_STANDARD_REQUIRED ON)',
+        'set(CMAKE_CXX_EXTENSIONS OFF)',
+        '',
+        'find_package(OROCOS-RTT REQUIRED)',
+        'if(NOT OROCOS-RTT_FOUND)',
+        '  message(FATAL_ERROR &quot;Could not find Orocos-RTT. Source env.sh first.&quot;)',
+        'endif()',
+        'include(${OROCOS-RTT_USE_FILE_PATH}/UseOROCOS-RTT.cmake)',
+        '',
+        'include_directories(${CMAKE_CURRENT_SOURCE_DIR}/include)',
+        $d/o:library ! fp:library-find(.),
+        '',
+        '# One component library with every component type (src/components.cpp).',
+        'orocos_component(' || $pkg || ' ' || string-join($sources, ' ') || ')',
+        $d/o:library ! fp:library-link(., $pkg),
+        '',
+        'orocos_install_headers(' || string-join($headers, ' ') || ')',
+        'orocos_generate_package()'))"/>
+  </xsl:function>
+
+  <xsl:function name="fp:library-find" as="xs:string*">
+    <xsl:param name="lib" as="element(o:library)"/>
+    <xsl:variable name="v" as="xs:string" select="'${' || $lib/@cmake-var || '}'"/>
+    <xsl:sequence select="
+        '',
+        '# atomic-code library ''' || $lib/@name || ''' (artifact path ''' || $lib/@path || ''', CMake target ' || $lib/@target || ')',
+        'set(' || $lib/@cmake-var || ' &quot;' || fp:library-dir($lib) || '&quot; CACHE PATH',
+        '    &quot;Directory of the atomic-code library ' || $lib/@name || '&quot;)',
+        'if(EXISTS &quot;' || $v || '/CMakeLists.txt&quot; AND NOT TARGET ' || $lib/@target || ')',
+        '  add_subdirectory(&quot;' || $v || '&quot; ' || $lib/@build-dir || ')',
+        'endif()',
+        'include_directories(&quot;' || $v || '/' || $lib/@include-dir || '&quot; &quot;' || $v || '&quot;)'"/>
+  </xsl:function>
+
+  <xsl:function name="fp:library-link" as="xs:string*">
+    <xsl:param name="lib" as="element(o:library)"/>
+    <xsl:param name="pkg" as="xs:string"/>
+    <xsl:variable name="v" as="xs:string" select="'${' || $lib/@cmake-var || '}'"/>
+    <xsl:variable name="found" as="xs:string" select="replace($lib/@cmake-var, '_DIR$', '_LIBRARY')"/>
+    <xsl:sequence select="
+        'if(TARGET ' || $lib/@target || ')',
+        '  target_link_libraries(' || $pkg || ' ' || $lib/@target || ')',
+        'else()',
+        '  find_library(' || $found || ' NAMES ' || $lib/@target,
+        '    PATHS &quot;' || $v || '&quot; &quot;' || $v || '/lib&quot; &quot;' || $v || '/build&quot; NO_DEFAULT_PATH)',
+        '  if(' || $found || ')',
+        '    target_link_libraries(' || $pkg || ' ${' || $found || '})',
+        '  else()',
+        '    message(WARNING &quot;atomic-code library ' || $lib/@name || ' (target ' || $lib/@target || ') not found in ' || $v || '&quot;)',
+        '  endif()',
+        'endif()'"/>
+  </xsl:function>
+
+  <xsl:function name="fp:package-xml" as="xs:string">
+    <xsl:param name="d" as="element(o:deployment)"/>
+    <xsl:sequence select="fp:lines((
+        '&lt;?xml version=&quot;1.0&quot;?&gt;',
+        '&lt;!--',
+        fp:indent(2, fp:banner('', $fp:build-xsl, 'model ''' || fp:xml-text($d/@model-name) || '''', false())),
+        '--&gt;',
+        '&lt;package format=&quot;3&quot;&gt;',
+        '  &lt;name&gt;' || $d/@package || '&lt;/name&gt;',
+        '  &lt;version&gt;0.0.0&lt;/version&gt;',
+        '  &lt;description&gt;Orocos RTT components of model ' || fp:xml-text($d/@model-name) || ', generated by robomda.&lt;/description&gt;',
+        '  &lt;maintainer email=&quot;maintainer@example.com&quot;&gt;robomda user&lt;/maintainer&gt;',
+        '  &lt;license&gt;TODO&lt;/license&gt;',
+        '',
+        '  &lt;buildtool_depend&gt;cmake&lt;/buildtool_depend&gt;',
+        '  &lt;depend&gt;rtt&lt;/depend&gt;',
+        '  &lt;exec_depend&gt;ocl&lt;/exec_depend&gt;',
+        '',
+        '  &lt;export&gt;',
+        '    &lt;build_type&gt;cmake&lt;/build_type&gt;',
+        '  &lt;/export&gt;',
+        '&lt;/package&gt;'))"/>
+  </xsl:function>
+</xsl:stylesheet>

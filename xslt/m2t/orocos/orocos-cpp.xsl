@@ -1,0 +1,319 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/m2t/orocos/orocos-cpp.xsl - C++ of the Orocos component package.
+
+  Reads:   o:task-context / o:deployment of urn:robomda:psm-orocos:1.
+  Writes:  strings (file contents), wrapped into fs:file by main.xsl.
+  Params:  none.  Errors: none.
+
+  kind="wrapper" (seed 000 Fig. 11): class <Class> derives from
+  RTT::TaskContext and from the realizing class; its constructor adds ports
+  (input ports as event ports, so that a non-periodic activity runs
+  updateHook when data arrives), properties bound to the realizing class's
+  members and operations bound to its protected methods; the hooks call
+  configure / start / update / stop / cleanup of the realizing class when it
+  declares them (docs/profile.md, atomic-code conventions). Calls to the
+  realizing class are qualified with its C++ name because RTT::TaskContext
+  has methods with the same names (configure, start, stop, update, cleanup).
+  kind="base": generated <Class>Base (ports, properties, pure virtual
+  operations) plus a user class <Class> written once, with empty hooks.
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:o="urn:robomda:psm-orocos:1"
+    xmlns:f="urn:robomda:xslt:function"
+    xmlns:fp="urn:robomda:xslt:function:private"
+    exclude-result-prefixes="#all">
+
+  <xsl:function name="fp:guard" as="xs:string">
+    <xsl:param name="tc" as="element(o:task-context)"/>
+    <xsl:param name="class" as="xs:string"/>
+    <xsl:sequence select="upper-case($tc/@namespace || '_' || replace(replace($class, '([a-z0-9])([A-Z])', '$1_$2'), '[^A-Za-z0-9_]', '_')) || '_HPP'"/>
+  </xsl:function>
+
+  <xsl:function name="fp:what" as="xs:string">
+    <xsl:param name="tc" as="element(o:task-context)"/>
+    <xsl:sequence select="'component ''' || $tc/@name || ''' of model ''' || $tc/../@model-name || ''''"/>
+  </xsl:function>
+
+  <xsl:function name="fp:doc-of" as="xs:string">
+    <xsl:param name="e" as="element()"/>
+    <xsl:param name="fallback" as="xs:string"/>
+    <xsl:sequence select="($e/o:doc/string(), $fallback)[1]"/>
+  </xsl:function>
+
+  <xsl:function name="fp:signature" as="xs:string">
+    <xsl:param name="op" as="element(o:operation)"/>
+    <xsl:param name="with-names" as="xs:boolean"/>
+    <xsl:sequence select="'(' || string-join($op/o:parameter !
+        (@decl-type || ' ' || (if ($with-names) then @name else '/*' || @name || '*/')), ', ') || ')'"/>
+  </xsl:function>
+
+  <xsl:function name="fp:includes" as="xs:string*">
+    <xsl:param name="tc" as="element(o:task-context)"/>
+    <xsl:sequence select="'#include &lt;rtt/TaskContext.hpp&gt;',
+        if ($tc/o:port[@direction eq 'in']) then '#include &lt;rtt/InputPort.hpp&gt;' else (),
+        if ($tc/o:port[@direction eq 'out']) then '#include &lt;rtt/OutputPort.hpp&gt;' else (),
+        '#include &lt;string&gt;'"/>
+  </xsl:function>
+
+  <xsl:function name="fp:member-decls" as="xs:string*">
+    <xsl:param name="tc" as="element(o:task-context)"/>
+    <xsl:sequence select="
+        if ($tc/o:port) then ('', '// data ports (R2)', $tc/o:port ! (@rtt-class || ' ' || @member || ';')) else (),
+        if ($tc/@kind eq 'base' and $tc/o:property)
+        then ('', '// properties (R4)', $tc/o:property ! (@cpp-type || ' ' || @member || ';')) else ()"/>
+  </xsl:function>
+
+  <!-- constructor body: ports, properties, operations -->
+  <xsl:function name="fp:constructor-body" as="xs:string*">
+    <xsl:param name="tc" as="element(o:task-context)"/>
+    <xsl:variable name="owner" as="xs:string"
+        select="if ($tc/@kind eq 'wrapper') then $tc/o:realizing-class/@cpp-name || '::' else ''"/>
+    <xsl:for-each select="$tc/o:port">
+      <xsl:sequence select="'this->ports()->' || (if (@direction eq 'in') then 'addEventPort' else 'addPort')
+          || '(' || @member || ').doc(' || fp:cpp-string(fp:doc-of(., @interface || '::' || @datum)) || ');'"/>
+      <xsl:if test="@direction eq 'out'">
+        <xsl:sequence select="@member || '.setDataSample(' || @sample || ');'"/>
+      </xsl:if>
+    </xsl:for-each>
+    <xsl:for-each select="$tc/o:property">
+      <xsl:sequence select="'this->addProperty(' || fp:cpp-string(@name) || ', ' || $owner || @member
+          || ').doc(' || fp:cpp-string(fp:doc-of(., @name)) || ');'"/>
+    </xsl:for-each>
+    <xsl:for-each select="$tc/o:operation">
+      <xsl:sequence select="'this->addOperation(' || fp:cpp-string(@name) || ', &amp;' || $tc/@generated-class
+          || '::' || @name || ', this, ' || @thread || ')',
+          '    .doc(' || fp:cpp-string(fp:doc-of(., @name)) || ')'
+          || string-join(o:parameter ! ('.arg(' || fp:cpp-string(@name) || ', ' || fp:cpp-string(fp:doc-of(., @direction || ' ' || @cpp-type)) || ')'), '')
+          || ';'"/>
+    </xsl:for-each>
+  </xsl:function>
+
+  <xsl:function name="fp:initialisers" as="xs:string">
+    <xsl:param name="tc" as="element(o:task-context)"/>
+    <xsl:variable name="inits" as="xs:string*" select="
+        'RTT::TaskContext(name, PreOperational)',
+        $tc/o:port ! (@member || '(' || fp:cpp-string(@name) || ')'),
+        if ($tc/@kind eq 'base') then $tc/o:property ! (@member || '(' || @cpp-default || ')') else ()"/>
+    <xsl:sequence select="string-join($inits, ',&#10;    ')"/>
+  </xsl:function>
+
+  <!-- ================================================ generated header -->
+  <xsl:function name="fp:cpp-header" as="xs:string">
+    <xsl:param name="tc" as="element(o:task-context)"/>
+    <xsl:variable name="cls" as="xs:string" select="$tc/@generated-class"/>
+    <xsl:variable name="guard" as="xs:string" select="fp:guard($tc, $cls)"/>
+    <xsl:variable name="wrapper" as="xs:boolean" select="$tc/@kind eq 'wrapper'"/>
+    <xsl:sequence select="fp:lines((
+        fp:banner('// ', $fp:cpp-xsl, fp:what($tc), false()),
+        '#ifndef ' || $guard,
+        '#define ' || $guard,
+        '',
+        fp:includes($tc),
+        if ($wrapper) then '#include &lt;' || $tc/o:realizing-class/@header || '&gt;' else (),
+        '',
+        'namespace ' || $tc/@namespace || ' {',
+        '',
+        '/**',
+        ' * ' || fp:doc-of($tc, 'Orocos TaskContext of component ' || $tc/@name || '.'),
+        if ($wrapper) then ' * Wraps the atomic code ' || $tc/o:realizing-class/@cpp-name || ' (seed 000, R1).'
+        else ' * Generated base: derive ' || $tc/@class || ' from it (user file).',
+        ' */',
+        'class ' || $cls || ' : public RTT::TaskContext'
+          || (if ($wrapper) then ', public ' || $tc/o:realizing-class/@cpp-name else ''),
+        '{',
+        'public:',
+        '  explicit ' || $cls || '(const std::string&amp; name);',
+        '  virtual ~' || $cls || '();',
+        if ($wrapper) then (
+          '',
+          '  bool configureHook() override;',
+          '  bool startHook() override;',
+          '  void updateHook() override;',
+          '  void stopHook() override;',
+          '  void cleanupHook() override;')
+        else (),
+        if (not($wrapper) and $tc/o:operation) then (
+          '',
+          'protected:',
+          '  // operations (R3): implemented by ' || $tc/@class,
+          $tc/o:operation ! ('  virtual ' || @return-type || ' ' || @name || fp:signature(., true()) || ' = 0;'))
+        else (),
+        if ($tc/o:port or (not($wrapper) and $tc/o:property)) then ('', 'protected:') else (),
+        fp:indent(2, fp:member-decls($tc)[position() gt 1]),
+        '};',
+        '',
+        '}  // namespace ' || $tc/@namespace,
+        '',
+        '#endif  // ' || $guard))"/>
+  </xsl:function>
+
+  <!-- ================================================ generated source -->
+  <xsl:function name="fp:cpp-source" as="xs:string">
+    <xsl:param name="tc" as="element(o:task-context)"/>
+    <xsl:variable name="cls" as="xs:string" select="$tc/@generated-class"/>
+    <xsl:variable name="wrapper" as="xs:boolean" select="$tc/@kind eq 'wrapper'"/>
+    <xsl:sequence select="fp:lines((
+        fp:banner('// ', $fp:cpp-xsl, fp:what($tc), false()),
+        '#include &lt;' || $tc/@namespace || '/' || $cls || '.hpp&gt;',
+        '',
+        'namespace ' || $tc/@namespace || ' {',
+        '',
+        $cls || '::' || $cls || '(const std::string&amp; name)',
+        '  : ' || fp:initialisers($tc),
+        '{',
+        fp:indent(2, fp:constructor-body($tc)),
+        '}',
+        '',
+        $cls || '::~' || $cls || '()',
+        '{',
+        '}',
+        if ($wrapper) then fp:wrapper-hooks($tc) else (),
+        '',
+        '}  // namespace ' || $tc/@namespace))"/>
+  </xsl:function>
+
+  <xsl:function name="fp:wrapper-hooks" as="xs:string*">
+    <xsl:param name="tc" as="element(o:task-context)"/>
+    <xsl:variable name="cls" as="xs:string" select="$tc/@generated-class"/>
+    <xsl:variable name="rc" as="xs:string" select="$tc/o:realizing-class/@cpp-name"/>
+    <xsl:for-each select="$tc/o:hook">
+      <xsl:variable name="h" as="element(o:hook)" select="."/>
+      <xsl:variable name="bool" as="xs:boolean" select="@name = ('configure', 'start')"/>
+      <xsl:sequence select="'', (if ($bool) then 'bool ' else 'void ') || $cls || '::' || @name || 'Hook()', '{'"/>
+      <xsl:if test="@name eq 'update'">
+        <xsl:for-each select="$tc/o:port[@direction eq 'in']">
+          <xsl:variable name="v" as="xs:string" select="@name || '_sample'"/>
+          <xsl:sequence select="'  ' || @cpp-type || ' ' || $v || ' = ' || @sample || ';',
+              if (xs:boolean(@accessor-declared))
+              then ('  if (' || @member || '.read(' || $v || ') == RTT::NewData) {',
+                    '    ' || $rc || '::' || @accessor || '(' || $v || ');',
+                    '  }')
+              else ('  ' || @member || '.read(' || $v || ');  // ' || $tc/o:realizing-class/@name
+                    || ' declares no ' || @accessor || '(): the sample is not passed on')"/>
+        </xsl:for-each>
+      </xsl:if>
+      <xsl:choose>
+        <xsl:when test="@call and $bool and xs:boolean(@returns-bool)">
+          <xsl:sequence select="'  return ' || $rc || '::' || @call || '();'"/>
+        </xsl:when>
+        <xsl:when test="@call">
+          <xsl:sequence select="'  ' || $rc || '::' || @call || '();'"/>
+        </xsl:when>
+        <xsl:otherwise>
+          <xsl:sequence select="'  // ' || $tc/o:realizing-class/@name || ' declares no ' || @name || '()'"/>
+        </xsl:otherwise>
+      </xsl:choose>
+      <xsl:if test="@name eq 'update'">
+        <xsl:for-each select="$tc/o:port[@direction eq 'out']">
+          <xsl:sequence select="if (xs:boolean(@accessor-declared))
+              then '  ' || @member || '.write(' || $rc || '::' || @accessor || '());'
+              else '  // ' || $tc/o:realizing-class/@name || ' declares no ' || @accessor || '(): ' || @member || ' is not written'"/>
+        </xsl:for-each>
+      </xsl:if>
+      <xsl:if test="$bool and not(@call and xs:boolean(@returns-bool))">
+        <xsl:sequence select="'  return true;'"/>
+      </xsl:if>
+      <xsl:sequence select="'}'"/>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- ===================================================== user class -->
+  <xsl:function name="fp:user-header" as="xs:string">
+    <xsl:param name="tc" as="element(o:task-context)"/>
+    <xsl:variable name="cls" as="xs:string" select="$tc/@class"/>
+    <xsl:variable name="guard" as="xs:string" select="fp:guard($tc, $cls)"/>
+    <xsl:sequence select="fp:lines((
+        fp:banner('// ', $fp:cpp-xsl, fp:what($tc), true()),
+        '#ifndef ' || $guard,
+        '#define ' || $guard,
+        '',
+        '#include &lt;' || $tc/@namespace || '/' || $tc/@generated-class || '.hpp&gt;',
+        '',
+        'namespace ' || $tc/@namespace || ' {',
+        '',
+        'class ' || $cls || ' : public ' || $tc/@generated-class,
+        '{',
+        'public:',
+        '  explicit ' || $cls || '(const std::string&amp; name);',
+        '',
+        '  bool configureHook() override;',
+        '  bool startHook() override;',
+        '  void updateHook() override;',
+        '  void stopHook() override;',
+        '  void cleanupHook() override;',
+        if ($tc/o:operation) then (
+          '',
+          'protected:',
+          $tc/o:operation ! ('  ' || @return-type || ' ' || @name || fp:signature(., true()) || ' override;'))
+        else (),
+        '};',
+        '',
+        '}  // namespace ' || $tc/@namespace,
+        '',
+        '#endif  // ' || $guard))"/>
+  </xsl:function>
+
+  <xsl:function name="fp:user-source" as="xs:string">
+    <xsl:param name="tc" as="element(o:task-context)"/>
+    <xsl:variable name="cls" as="xs:string" select="$tc/@class"/>
+    <xsl:sequence select="fp:lines((
+        fp:banner('// ', $fp:cpp-xsl, fp:what($tc), true()),
+        '#include &lt;' || $tc/@namespace || '/' || $cls || '.hpp&gt;',
+        '',
+        'namespace ' || $tc/@namespace || ' {',
+        '',
+        $cls || '::' || $cls || '(const std::string&amp; name)',
+        '  : ' || $tc/@generated-class || '(name)',
+        '{',
+        '}',
+        '',
+        'bool ' || $cls || '::configureHook()',
+        '{',
+        '  return true;',
+        '}',
+        '',
+        'bool ' || $cls || '::startHook()',
+        '{',
+        '  return true;',
+        '}',
+        '',
+        'void ' || $cls || '::updateHook()',
+        '{',
+        if ($tc/o:port[@direction eq 'in'])
+        then '  // read: ' || string-join($tc/o:port[@direction eq 'in'] ! (@member || '.read(sample)'), ', ') else (),
+        if ($tc/o:port[@direction eq 'out'])
+        then '  // write: ' || string-join($tc/o:port[@direction eq 'out'] ! (@member || '.write(value)'), ', ') else (),
+        '}',
+        '',
+        'void ' || $cls || '::stopHook()',
+        '{',
+        '}',
+        '',
+        'void ' || $cls || '::cleanupHook()',
+        '{',
+        '}',
+        $tc/o:operation ! (
+          '',
+          @return-type || ' ' || $cls || '::' || @name || fp:signature(., false()),
+          '{',
+          if (@return-type ne 'void') then '  return ' || @return-sample || ';' else (),
+          '}'),
+        '',
+        '}  // namespace ' || $tc/@namespace))"/>
+  </xsl:function>
+
+  <!-- ============================================== component library -->
+  <xsl:function name="fp:components-cpp" as="xs:string">
+    <xsl:param name="d" as="element(o:deployment)"/>
+    <xsl:sequence select="fp:lines((
+        fp:banner('// ', $fp:cpp-xsl, 'the component library of model ''' || $d/@model-name || '''', false()),
+        '#include &lt;rtt/Component.hpp&gt;',
+        $d/o:task-context ! ('#include &lt;' || @namespace || '/' || @class || '.hpp&gt;'),
+        '',
+        'ORO_CREATE_COMPONENT_LIBRARY()',
+        $d/o:task-context ! ('ORO_LIST_COMPONENT_TYPE(' || @type-name || ')')))"/>
+  </xsl:function>
+</xsl:stylesheet>
