@@ -329,3 +329,6 @@ def test_fixture_chain(case_name):
     assert all(a.find(O + "activity").get("priority") == "50" for a in psm.iter(O + "instance"))
     assert len(list(psm.iter(O + "connection"))) >= 1
     assert "../atomic" in files["CMakeLists.txt"].text
+    # every instance is periodic: input ports must not also trigger updateHook
+    sources = "".join(node.text for path, node in files.items() if path.endswith(".cpp"))
+    assert "addEventPort" not in sources and "this->ports()->addPort(port_" in sources

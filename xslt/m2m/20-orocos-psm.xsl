@@ -69,6 +69,7 @@
   <xsl:key name="fp:type" match="ty:type" use="@primitive"/>
   <xsl:key name="fp:bc" match="pim:bound-component" use="@component"/>
   <xsl:key name="fp:instance" match="pim:instance" use="@name"/>
+  <xsl:key name="fp:instance-of" match="pim:instance" use="@component"/>
   <xsl:key name="fp:connection-by-instance" match="pim:connection" use="(pim:writer | pim:reader)/@instance"/>
 
   <xsl:variable name="fp:types" as="document-node()" select="doc('orocos-types.xml')"/>
@@ -213,7 +214,13 @@
             select="fp:required-type(., @port, 'port ''' || @port-name || ''' (datum ''' || @datum-name || ''' of interface ''' || @interface-name || ''')')"/>
         <xsl:variable name="acc" as="xs:string"
             select="(if (@direction eq 'out') then 'get' else 'set') || f:upper-first(f:cpp-identifier(@datum-name))"/>
+        <!-- an input port triggers updateHook (event port) only where some
+             instance of the component is non-periodic: a periodic activity
+             already runs updateHook on its own clock -->
         <o:port xmi-id="{@port}" direction="{@direction}"
+                event="{@direction eq 'in' and
+                        (some $a in key('fp:instance-of', $bc/@component, root($bc))/pim:activity
+                         satisfies number($a/@period) eq 0)}"
                 rtt-class="{if (@direction eq 'out') then 'RTT::OutputPort' else 'RTT::InputPort'}&lt;{$t/@cpp}&gt;"
                 name="{@name}" member="port_{@name}" interface="{@interface-name}" datum="{@datum-name}"
                 accessor="{$acc}" accessor-declared="{exists($callable[@name eq $acc])}"

@@ -8,8 +8,8 @@
 
   kind="wrapper" (seed 000 Fig. 11): class <Class> derives from
   RTT::TaskContext and from the realizing class; its constructor adds ports
-  (input ports as event ports, so that a non-periodic activity runs
-  updateHook when data arrives), properties bound to the realizing class's
+  (input ports of components with a non-periodic instance as event ports,
+  so that data arriving runs updateHook), properties bound to the realizing class's
   members and operations bound to its protected methods; the hooks call
   configure / start / update / stop / cleanup of the realizing class when it
   declares them (docs/profile.md, atomic-code conventions). Calls to the
@@ -72,7 +72,7 @@
     <xsl:variable name="owner" as="xs:string"
         select="if ($tc/@kind eq 'wrapper') then $tc/o:realizing-class/@cpp-name || '::' else ''"/>
     <xsl:for-each select="$tc/o:port">
-      <xsl:sequence select="'this->ports()->' || (if (@direction eq 'in') then 'addEventPort' else 'addPort')
+      <xsl:sequence select="'this->ports()->' || (if (@event eq 'true') then 'addEventPort' else 'addPort')
           || '(' || @member || ').doc(' || fp:cpp-string(fp:doc-of(., @interface || '::' || @datum)) || ');'"/>
       <xsl:if test="@direction eq 'out'">
         <xsl:sequence select="@member || '.setDataSample(' || @sample || ');'"/>
