@@ -1,0 +1,105 @@
+"""Bad models through the whole command line: one located message, an exit code, nothing written.
+
+Each case mutates a real fixture (or uses a tiny hand-made file) and checks
+the exact FILE:LINE:COL, the code, the element named and that the output
+folder was not created.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+from robomda.cli import main
+
+ROOT = Path(__file__).resolve().parent.parent
+CASES = ROOT / "fixtures" / "cases"
+DATA = ROOT / "tests" / "data" / "import"
+
+
+def _mutated(tmp_path: Path, case: str, old: str, new: str, name: str = "model.xmi") -> Path:
+    text = (CASES / case / name).read_text(encoding="utf-8")
+    assert text.count(old) >= 1, old
+    model = tmp_path / name
+    model.write_text(text.replace(old, new, 1), encoding="utf-8")
+    return model
+
+
+def _line_of(model: Path, needle: str) -> tuple[int, int]:
+    for number, line in enumerate(model.read_text(encoding="utf-8").splitlines(), 1):
+        if needle in line:
+            return number, line.index("<") + 1
+    raise AssertionError(needle)
+
+
+def _generate(capsys: pytest.CaptureFixture[str], model: Path, out: Path) -> tuple[int, list[str]]:
+    code = main(["generate", str(model), "-o", str(out)])
+    err = capsys.readouterr().err.strip().splitlines()
+    return code, err
+
+
+def test_port_typed_by_a_missing_interface(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    port = 'xmi:id="_QZjQLKDPm9lYATkGnxV7dw" name="visionValue" visibility="public" type="_OvrYHkhPodbwEviCI8ZQU9"'
+    model = _mutated(tmp_path, "headlamp", port, port.replace("_OvrYHkhPodbwEviCI8ZQU9", "_gone"))
+    code, err = _generate(capsys, model, tmp_path / "out")
+    line, column = _line_of(model, 'xmi:id="_QZjQLKDPm9lYATkGnxV7dw"')
+    assert code == 1 and len(err) == 1
+    assert err[0].startswith(f"{model}:{line}:{column}: error: [IMP011] ")
+    assert "_gone" in err[0] and err[0].endswith("(uml:Port 'visionValue', _QZjQLKDPm9lYATkGnxV7dw)")
+    assert not (tmp_path / "out").exists()
+
+
+def test_unknown_middleware_names_the_execution_environment(tmp_path: Path,
+                                                            capsys: pytest.CaptureFixture[str]) -> None:
+    model = _mutated(tmp_path, "meka", 'name="OROCOS"', 'name="Gazebo"')
+    code, err = _generate(capsys, model, tmp_path / "out")
+    line, column = _line_of(model, 'name="Gazebo"')
+    assert code == 1 and len(err) == 1
+    assert err[0].startswith(f"{model}:{line}:{column}: error: [BND003] ")
+    assert "Gazebo" in err[0] and "(uml:ExecutionEnvironment 'Gazebo', " in err[0]
+    assert not (tmp_path / "out").exists()
+
+
+def test_dangling_realizing_classifier_in_the_ea_dialect(tmp_path: Path,
+                                                         capsys: pytest.CaptureFixture[str]) -> None:
+    text = (CASES / "headlamp" / "model.ea.xmi").read_text(encoding="cp1252")
+    found = re.search(r'<packagedElement xmi:type="uml:Realization" xmi:id="([^"]+)"[^>]*client="([^"]+)"', text)
+    assert found, "the EA fixture has a class-to-component Realization"
+    realization, client = found.groups()
+    start = found.start()
+    end = text.index(">", start)
+    model = tmp_path / "model.ea.xmi"
+    model.write_text(text[:start] + text[start:end].replace(client, "EAID_MISSING") + text[end:], encoding="cp1252")
+    code, err = _generate(capsys, model, tmp_path / "out")
+    line, column = _line_of(model, f'xmi:id="{realization}"')
+    assert code == 1 and len(err) == 1
+    assert err[0].startswith(f"{model}:{line}:{column}: error: [IMP013] ") and "EAID_MISSING" in err[0]
+    assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize(("name", "code", "exit_code"), [
+    ("xmi1x.xmi", "IMP001", 2),
+    ("not-uml.xml", "IMP002", 2),
+    ("duplicate-id.uml", "IMP004", 1),
+])
+def test_unsupported_or_broken_files(tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                                     name: str, code: str, exit_code: int) -> None:
+    out = tmp_path / "out"
+    status, err = _generate(capsys, DATA / name, out)
+    assert status == exit_code and len(err) == 1
+    assert err[0].startswith(f"{DATA / name}:") and f"error: [{code}]" in err[0]
+    assert not out.exists()
+
+
+def test_a_failed_run_leaves_an_existing_output_untouched(tmp_path: Path,
+                                                          capsys: pytest.CaptureFixture[str]) -> None:
+    out = tmp_path / "out"
+    assert main(["generate", str(CASES / "meka" / "model.xmi"), "-o", str(out)]) == 0
+    before = {p: p.read_bytes() for p in out.rglob("*") if p.is_file()}
+    model = _mutated(tmp_path, "meka", 'name="OROCOS"', 'name="Gazebo"')
+    capsys.readouterr()
+    code, _ = _generate(capsys, model, out)
+    assert code == 1
+    assert {p: p.read_bytes() for p in out.rglob("*") if p.is_file()} == before
