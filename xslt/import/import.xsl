@@ -64,6 +64,7 @@
     exclude-result-prefixes="#all">
 
   <xsl:include href="../common/errors.xsl"/>
+  <xsl:include href="../common/indent.xsl"/>
   <xsl:include href="xmi-common.xsl"/>
   <xsl:include href="check.xsl"/>
   <xsl:include href="stereotypes.xsl"/>
@@ -74,7 +75,7 @@
   <xsl:include href="dialect-magicdraw.xsl"/>
   <xsl:include href="dialect-other.xsl"/>
 
-  <xsl:output method="xml" indent="yes" encoding="UTF-8"/>
+  <xsl:output method="xml" indent="no" encoding="UTF-8"/>
   <xsl:global-context-item as="document-node()" use="optional"/>
   <xsl:mode on-no-match="fail"/>
 
@@ -99,6 +100,7 @@
       <xsl:variable name="model-el" as="element()" select="fp:model-el($norm)"/>
       <xsl:variable name="root" as="element()" select="fp:model-root($model-el)"/>
       <xsl:if test="fp:check-model($norm, $model-el)">
+        <xsl:variable name="pim" as="document-node()">
         <xsl:document>
           <pim:model id="{fp:id($root)}" name="{$root/@name}" source="{$source-name}"
               tool="{fp:tool(., $src-model)}" xmi-version="{fp:xmi-version($src-root, $src-model)}"
@@ -114,6 +116,8 @@
             </xsl:call-template>
           </pim:model>
         </xsl:document>
+        </xsl:variable>
+        <xsl:sequence select="f:indent($pim)"/>
       </xsl:if>
     </xsl:if>
   </xsl:template>

@@ -71,9 +71,10 @@
     exclude-result-prefixes="#all">
 
   <xsl:include href="../common/errors.xsl"/>
+  <xsl:include href="../common/indent.xsl"/>
   <xsl:include href="../common/naming.xsl"/>
 
-  <xsl:output method="xml" indent="yes" encoding="UTF-8"/>
+  <xsl:output method="xml" indent="no" encoding="UTF-8"/>
 
   <xsl:mode on-no-match="shallow-copy"/>
   <xsl:mode name="m:bind" on-no-match="shallow-copy"/>
@@ -93,9 +94,12 @@
 
   <!-- ============================================================ entry -->
   <xsl:template match="/" as="document-node()">
-    <xsl:document>
-      <xsl:apply-templates select="node()" mode="m:bind"/>
-    </xsl:document>
+    <xsl:variable name="result" as="document-node()">
+      <xsl:document>
+        <xsl:apply-templates select="node()" mode="m:bind"/>
+      </xsl:document>
+    </xsl:variable>
+    <xsl:sequence select="f:indent($result)"/>
   </xsl:template>
 
   <xsl:template match="pim:model" mode="m:bind" as="element(pim:model)">

@@ -56,13 +56,14 @@
     exclude-result-prefixes="#all">
 
   <xsl:include href="../common/errors.xsl"/>
+  <xsl:include href="../common/indent.xsl"/>
   <xsl:include href="../common/naming.xsl"/>
 
   <xsl:param name="package-name" as="xs:string" select="''">
     <!-- the component package (CMake project, deployer Import); '' = lower snake-case of the model name -->
   </xsl:param>
 
-  <xsl:output method="xml" indent="yes" encoding="UTF-8"/>
+  <xsl:output method="xml" indent="no" encoding="UTF-8"/>
   <xsl:mode name="m:to-psm" on-no-match="fail"/>
 
   <xsl:key name="fp:id" match="*[@id]" use="@id"/>
@@ -96,9 +97,12 @@
 
   <!-- ================================================================ entry -->
   <xsl:template match="/" as="document-node()">
-    <xsl:document>
-      <xsl:apply-templates select="pim:model" mode="m:to-psm"/>
-    </xsl:document>
+    <xsl:variable name="result" as="document-node()">
+      <xsl:document>
+        <xsl:apply-templates select="pim:model" mode="m:to-psm"/>
+      </xsl:document>
+    </xsl:variable>
+    <xsl:sequence select="f:indent($result)"/>
   </xsl:template>
 
   <xsl:template match="pim:model[empty(pim:binding)]" mode="m:to-psm" as="empty-sequence()">

@@ -27,6 +27,7 @@
     exclude-result-prefixes="#all">
 
   <xsl:include href="params.xsl"/>
+  <xsl:include href="../../common/indent.xsl"/>
   <xsl:include href="orocos-text.xsl"/>
   <xsl:include href="orocos-cpp.xsl"/>
   <xsl:include href="orocos-build.xsl"/>
@@ -36,9 +37,12 @@
   <xsl:mode name="m:emit-files" on-no-match="fail"/>
 
   <xsl:template match="/" as="document-node()">
-    <xsl:document>
-      <xsl:apply-templates select="o:deployment" mode="m:emit-files"/>
-    </xsl:document>
+    <xsl:variable name="result" as="document-node()">
+      <xsl:document>
+        <xsl:apply-templates select="o:deployment" mode="m:emit-files"/>
+      </xsl:document>
+    </xsl:variable>
+    <xsl:sequence select="f:indent($result)"/>
   </xsl:template>
 
   <xsl:template match="o:deployment" mode="m:emit-files" as="element(fs:files)">

@@ -1,0 +1,64 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/common/indent.xsl - engine-independent indentation of a result tree.
+
+  Reads:   any document (a stage's result tree, before serialization).
+  Writes:  the same document with whitespace-only text dropped from
+           element-only content and replaced by a newline plus two spaces
+           per level before each child and before the end tag. Elements
+           with text content (mixed or simple) are copied unchanged.
+  Params:  none.
+  Errors:  none.
+
+  Why: serializers indent differently (Saxon 10+ wraps long attribute
+  lists, SaxonJS does not), so a stage that relied on indent="yes" would
+  give different bytes on different engines. Every stage serializes with
+  indent="no" and puts its result through f:indent, so SaxonC-HE, SaxonJS
+  and Saxon-HE Java write the same bytes.
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:f="urn:robomda:xslt:function"
+    xmlns:mp="urn:robomda:xslt:mode:private"
+    exclude-result-prefixes="#all">
+
+  <xsl:mode name="mp:indent" on-no-match="shallow-copy"/>
+
+  <!-- $doc indented as described above -->
+  <xsl:function name="f:indent" as="document-node()">
+    <xsl:param name="doc" as="document-node()"/>
+    <xsl:document>
+      <xsl:for-each select="$doc/node()">
+        <xsl:if test="position() gt 1">
+          <xsl:text>&#10;</xsl:text>
+        </xsl:if>
+        <xsl:apply-templates select="." mode="mp:indent">
+          <xsl:with-param name="margin" select="'&#10;'"/>
+        </xsl:apply-templates>
+      </xsl:for-each>
+    </xsl:document>
+  </xsl:function>
+
+  <!-- element-only content: one child per line -->
+  <xsl:template match="*[*][not(text()[normalize-space()])]" mode="mp:indent" as="element()">
+    <xsl:param name="margin" as="xs:string"/>
+    <xsl:variable name="inner" as="xs:string" select="$margin || '  '"/>
+    <xsl:copy>
+      <xsl:copy-of select="@*"/>
+      <xsl:for-each select="* | comment() | processing-instruction()">
+        <xsl:value-of select="$inner"/>
+        <xsl:apply-templates select="." mode="mp:indent">
+          <xsl:with-param name="margin" select="$inner"/>
+        </xsl:apply-templates>
+      </xsl:for-each>
+      <xsl:value-of select="$margin"/>
+    </xsl:copy>
+  </xsl:template>
+
+  <!-- anything else (empty, text-only or mixed content): as it is -->
+  <xsl:template match="*" mode="mp:indent" as="element()">
+    <xsl:param name="margin" as="xs:string"/>
+    <xsl:copy-of select="."/>
+  </xsl:template>
+</xsl:stylesheet>
