@@ -5,13 +5,18 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-# Debian packages the real-tool tests use (compiler and CMake for the fixture
-# libraries). Installed when we are root on Debian; otherwise the tests that
-# need a missing tool skip and say why.
+# Debian packages the real-tool tests use: compiler and CMake for the fixture
+# libraries, Saxon-HE Java and Node.js (for SaxonJS) for the engine
+# portability tests. Installed when we are root on Debian; otherwise the
+# tests that need a missing tool skip and say why.
 need=()
 command -v cmake >/dev/null 2>&1 || need+=(cmake)
 command -v g++ >/dev/null 2>&1 || need+=(g++)
 command -v make >/dev/null 2>&1 || need+=(make)
+command -v java >/dev/null 2>&1 || need+=(default-jre-headless)
+[ -f /usr/share/java/Saxon-HE.jar ] || need+=(libsaxonhe-java)
+command -v node >/dev/null 2>&1 || need+=(nodejs)
+command -v npm >/dev/null 2>&1 || need+=(npm)
 python3 -c 'import venv, ensurepip' >/dev/null 2>&1 || need+=(python3-venv)
 if [ "${#need[@]}" -gt 0 ]; then
   if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
@@ -21,6 +26,12 @@ if [ "${#need[@]}" -gt 0 ]; then
   else
     echo "tests/run.sh: not installing ${need[*]} (not root on Debian); tests needing them will skip"
   fi
+fi
+
+# SaxonJS (npm package xslt3, pinned by tests/engines/package-lock.json)
+if command -v npm >/dev/null 2>&1 && [ ! -f tests/engines/node_modules/xslt3/xslt3.js ]; then
+  npm ci --prefix tests/engines --no-audit --no-fund --loglevel=error >/dev/null \
+    || echo "tests/run.sh: npm ci failed; the SaxonJS tests will skip"
 fi
 
 python3 -m venv .venv

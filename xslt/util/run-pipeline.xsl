@@ -5,9 +5,9 @@
   Reads:   a pipeline manifest (urn:robomda:pipeline:1, pipelines/*.xml) as
            the source document.
   Writes:  for a pipeline that yields files: the files, through
-           write-files.xsl (paths relative to the base output URI), and a
-           list of them as the principal result; for one that yields a
-           model: that model.
+           write-files.xsl (paths relative to the base output URI), and as
+           the principal result an fs:written list of them; for one that
+           yields a model: that model, byte for byte as the driver's.
   Params:  model                  absolute URI of the XMI file
                                   (file:///...); required.
            model-dir-from-output  the XMI file's folder relative to the
@@ -25,15 +25,17 @@
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
     xmlns:xs="http://www.w3.org/2001/XMLSchema"
     xmlns:p="urn:robomda:pipeline:1"
+    xmlns:fs="urn:robomda:fileset:1"
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
     exclude-result-prefixes="#all">
 
   <xsl:import href="write-files.xsl"/>
   <xsl:include href="../common/errors.xsl"/>
+  <xsl:include href="../common/indent.xsl"/>
 
   <!-- a model is serialized as the chain's own steps serialize it -->
-  <xsl:output method="xml" indent="yes" encoding="UTF-8"/>
+  <xsl:output method="xml" indent="no" encoding="UTF-8"/>
 
   <xsl:param name="model" as="xs:string" select="''">
     <!-- URI of the XMI model to transform -->
@@ -106,6 +108,16 @@
     <xsl:choose>
       <xsl:when test="p:pipeline/@yields = 'files'">
         <xsl:apply-templates select="$last" mode="m:write-files" xmlns:m="urn:robomda:xslt:mode"/>
+        <xsl:variable name="listing" as="document-node()">
+          <xsl:document>
+            <fs:written xmlns:fs="urn:robomda:fileset:1">
+              <xsl:for-each select="$last/fs:files/fs:file">
+                <fs:file path="{f:written-path(.)}"/>
+              </xsl:for-each>
+            </fs:written>
+          </xsl:document>
+        </xsl:variable>
+        <xsl:sequence select="f:indent($listing)"/>
       </xsl:when>
       <xsl:otherwise>
         <xsl:sequence select="$last"/>

@@ -19,6 +19,7 @@
     xmlns:xs="http://www.w3.org/2001/XMLSchema"
     xmlns:fs="urn:robomda:fileset:1"
     xmlns:m="urn:robomda:xslt:mode"
+    xmlns:f="urn:robomda:xslt:function"
     exclude-result-prefixes="#all">
 
   <xsl:output method="text" encoding="UTF-8"/>
@@ -26,18 +27,22 @@
 
   <xsl:template match="/" as="xs:string*">
     <xsl:apply-templates select="fs:files" mode="m:write-files"/>
+    <xsl:sequence select="fs:files/fs:file ! (f:written-path(.) || '&#10;')"/>
   </xsl:template>
 
-  <xsl:template match="fs:files" mode="m:write-files" as="xs:string*">
+  <!-- where a file of the set is written: user files go beside, as PATH.robomda-new -->
+  <xsl:function name="f:written-path" as="xs:string">
+    <xsl:param name="file" as="element(fs:file)"/>
+    <xsl:sequence select="if ($file/@mode = 'user') then $file/@path || '.robomda-new' else string($file/@path)"/>
+  </xsl:function>
+
+  <xsl:template match="fs:files" mode="m:write-files" as="empty-sequence()">
     <xsl:apply-templates select="fs:file" mode="m:write-files"/>
   </xsl:template>
 
-  <xsl:template match="fs:file" mode="m:write-files" as="xs:string">
-    <xsl:variable name="path" as="xs:string"
-        select="if (@mode = 'user') then @path || '.robomda-new' else string(@path)"/>
-    <xsl:result-document href="{$path}" method="text" encoding="UTF-8">
+  <xsl:template match="fs:file" mode="m:write-files" as="empty-sequence()">
+    <xsl:result-document href="{f:written-path(.)}" method="text" encoding="UTF-8">
       <xsl:value-of select="."/>
     </xsl:result-document>
-    <xsl:sequence select="$path || '&#10;'"/>
   </xsl:template>
 </xsl:stylesheet>
