@@ -8,6 +8,7 @@ from pathlib import Path
 
 from robomda import __version__
 from robomda.api import generate, import_model, targets
+from robomda.batch import ProgressBar, run_batch
 from robomda.diagnostics import EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, RobomdaError
 from robomda.output import atomic_write
 
@@ -31,10 +32,18 @@ def _parser() -> argparse.ArgumentParser:
     gen = sub.add_parser(
         "generate", help="generate a middleware package from an XMI model",
         description="Run the target's chain (import, bind, PSM, text) on MODEL and write the package into OUT. "
-                    "Nothing is written if any step fails; files you edit are never overwritten.",
+                    "Nothing is written if any step fails; files you edit are never overwritten. "
+                    "With a folder, every model under it is generated (in parallel, skipping unchanged ones) "
+                    "and a summary is printed.",
         epilog=_EXIT_CODES, formatter_class=argparse.RawDescriptionHelpFormatter)
-    gen.add_argument("model", type=Path, metavar="MODEL", help="the UML XMI file (.xmi, .uml, .xml)")
+    gen.add_argument("model", type=Path, metavar="MODEL",
+                     help="the UML XMI file (.xmi, .uml, .xml), or a folder: every UML model under it "
+                          "(found by content) goes into its own folder under OUT")
     gen.add_argument("-o", "--output", type=Path, required=True, metavar="OUT", help="output folder (the package root)")
+    gen.add_argument("-j", "--jobs", type=int, default=None, metavar="N",
+                     help="folder mode: models generated in parallel (default: number of CPUs)")
+    gen.add_argument("--force", action="store_true",
+                     help="folder mode: regenerate models whose input and stylesheets did not change")
     gen.add_argument("-t", "--target", default="orocos", choices=targets(), help="middleware target (default: orocos)")
     gen.add_argument("--package-name", default="", metavar="NAME",
                      help="package / CMake project name (default: derived from the model name)")
@@ -60,9 +69,36 @@ def _pim_destination(model: Path, out: Path) -> Path:
     return out / f"{model.stem.split('.')[0]}.pim.xml"
 
 
+def _batch(args: argparse.Namespace) -> int:
+    if args.save_stages:
+        print("robomda: --save-stages applies to one model, not to a folder", file=sys.stderr)
+        return EXIT_INPUT
+    if args.jobs is not None and args.jobs < 1:
+        print("robomda: -j needs a positive number", file=sys.stderr)
+        return EXIT_INPUT
+    report = run_batch(args.model, args.output, args.target, package_name=args.package_name, jobs=args.jobs,
+                       force=args.force, progress=ProgressBar())
+    for result in report.results:
+        for line in result.diagnostics:
+            print(line, file=sys.stderr)
+    files = sum(r.files_written for r in report.results)
+    width = max([len(r.model) for r in report.results] + [5])
+    print(f"{'model':<{width}}  {'status':<8} {'files':>5} {'seconds':>8}")
+    for r in report.results:
+        print(f"{r.model:<{width}}  {r.status:<8} {r.files_written:>5} {r.seconds:>8.2f}")
+    print(f"robomda: {len(report.results)} models: {report.count('ok')} ok, {report.count('skipped')} unchanged, "
+          f"{report.count('failed')} failed; {files} files written in {report.seconds:.1f} s")
+    if not report.results:
+        print(f"robomda: no UML model found under {args.model}", file=sys.stderr)
+        return EXIT_INPUT
+    return report.exit_code
+
+
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     try:
+        if args.command == "generate" and args.model.is_dir():
+            return _batch(args)
         if args.command == "generate":
             done = generate(args.model, args.output, args.target, package_name=args.package_name)
             if args.save_stages:

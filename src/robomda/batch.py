@@ -1,0 +1,225 @@
+"""Batch generation: every UML model under a folder, in parallel, incrementally.
+
+- Models are found by content, not by file name: any file whose root element
+  is an XMI document or a UML model element (``xmi:XMI``, ``uml:Model``,
+  ``uml:Package`` in any XMI / UML namespace version).
+- Each model gets its own output folder: OUT/<path of the model relative to
+  DIR, without its last suffix> (``cases/headlamp/model.xmi`` ->
+  ``OUT/cases/headlamp/model/``).
+- Models run in worker processes (``jobs``, default: the number of CPUs);
+  each worker keeps one Saxon engine, so each stylesheet is compiled once
+  per worker, not once per model.
+- A model is skipped when neither its bytes nor the toolchain (stylesheets,
+  schemas, manifests, robomda's version, the target and options) changed
+  since the last successful run, and its output folder is still there
+  (content hashes in OUT/.robomda/batch.json). ``force`` regenerates all.
+- A failing model is reported with its diagnostics and does not stop the
+  others.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import re
+import sys
+import time
+from concurrent.futures import ProcessPoolExecutor, as_completed
+from dataclasses import dataclass, field
+from multiprocessing import get_context
+from pathlib import Path
+from typing import Callable
+
+from lxml import etree
+
+from robomda import __version__
+from robomda.diagnostics import EXIT_INTERNAL, EXIT_OK, Diagnostic, RobomdaError
+from robomda.output import atomic_write
+from robomda.resources import resource_root
+
+__all__ = ["ModelResult", "BatchReport", "find_models", "run_batch", "STATE"]
+
+STATE = Path(".robomda") / "batch.json"
+_XMI_NS = re.compile(r"^https?://(schema|www)\.omg\.org/(spec/)?XMI(/[0-9.]+)?/?$", re.I)
+_UML_NS = re.compile(r"^https?://(www\.eclipse\.org/uml2/[0-9.]+/UML|(schema|www)\.omg\.org/(spec/)?UML(/[0-9.]+)?)/?$",
+                     re.I)
+_SKIP_DIRS = {".git", ".robomda", ".venv", "node_modules", "__pycache__"}
+
+
+@dataclass
+class ModelResult:
+    """What happened to one model."""
+
+    model: str  # relative to the input folder
+    status: str  # "ok", "skipped" (unchanged) or "failed"
+    files_written: int = 0
+    seconds: float = 0.0
+    diagnostics: list[str] = field(default_factory=list)
+    exit_code: int = EXIT_OK
+    input_hash: str = ""
+
+
+@dataclass
+class BatchReport:
+    results: list[ModelResult]
+    seconds: float
+
+    def count(self, status: str) -> int:
+        return sum(1 for r in self.results if r.status == status)
+
+    @property
+    def exit_code(self) -> int:
+        return max((r.exit_code for r in self.results if r.status == "failed"), default=EXIT_OK)
+
+
+def _is_uml_model(path: Path) -> bool:
+    """True when the file's root element is an XMI or UML element (reads only the start)."""
+    try:
+        for _, element in etree.iterparse(str(path), events=("start",), resolve_entities=False,
+                                          no_network=True, huge_tree=True):
+            uri = etree.QName(element).namespace or ""
+            return bool(_XMI_NS.match(uri) or _UML_NS.match(uri)) or element.tag in ("XMI",)
+    except (etree.XMLSyntaxError, OSError, ValueError):
+        return False
+    return False
+
+
+def find_models(folder: Path, exclude: Path | None = None) -> list[Path]:
+    """Every UML model file under ``folder`` (sorted), skipping ``exclude`` and tool folders."""
+    found: list[Path] = []
+    exclude = exclude.resolve() if exclude is not None else None
+    for current, dirs, files in os.walk(folder):
+        here = Path(current)
+        dirs[:] = sorted(d for d in dirs if d not in _SKIP_DIRS
+                         and (exclude is None or (here / d).resolve() != exclude))
+        for name in sorted(files):
+            path = here / name
+            if _is_uml_model(path):
+                found.append(path)
+    return found
+
+
+def toolchain_hash(target: str, package_name: str) -> str:
+    """A hash of everything besides the model that decides the output."""
+    digest = hashlib.sha256(f"robomda {__version__} {target} {package_name}".encode())
+    root = resource_root()
+    for sub in ("xslt", "schemas", "pipelines"):
+        for path in sorted((root / sub).rglob("*")):
+            if path.is_file():
+                digest.update(path.relative_to(root).as_posix().encode() + b"\0" + path.read_bytes())
+    return digest.hexdigest()
+
+
+def _output_folder(model: Path, folder: Path, out: Path) -> Path:
+    rel = model.relative_to(folder)
+    return out / rel.with_suffix("") if rel.suffix else out / rel
+
+
+def _generate_one(model: str, out: str, target: str, package_name: str) -> ModelResult:
+    """Worker: one model (the process's engine is reused across calls)."""
+    from robomda.api import generate
+
+    started = time.perf_counter()
+    result = ModelResult(model=model, status="ok")
+    try:
+        done = generate(model, out, target, package_name=package_name)
+        result.files_written = len(done.report.written) if done.report else 0
+    except RobomdaError as exc:
+        result.status, result.exit_code = "failed", exc.exit_code
+        result.diagnostics = [d.format() for d in exc.diagnostics]
+    except Exception as exc:  # noqa: BLE001 - one model's bug must not stop the batch
+        result.status, result.exit_code = "failed", EXIT_INTERNAL
+        result.diagnostics = [Diagnostic("error", "INTERNAL", f"{type(exc).__name__}: {exc}", file=model).format()]
+    result.seconds = time.perf_counter() - started
+    return result
+
+
+def _read_state(out: Path) -> dict[str, dict[str, str]]:
+    try:
+        data = json.loads((out / STATE).read_text(encoding="utf-8"))
+        return data.get("models", {}) if isinstance(data, dict) else {}
+    except (OSError, ValueError):
+        return {}
+
+
+def run_batch(folder: Path, out: Path, target: str = "orocos", *, package_name: str = "", jobs: int | None = None,
+              force: bool = False, progress: Callable[[int, int, ModelResult], None] | None = None) -> BatchReport:
+    """Generate every model under ``folder`` into ``out``; never raises for one model's failure."""
+    started = time.perf_counter()
+    folder, out = folder.resolve(), out.resolve()
+    models = find_models(folder, exclude=out)
+    tools = toolchain_hash(target, package_name)
+    state = _read_state(out)
+    results: list[ModelResult] = []
+    todo: list[tuple[Path, Path, str]] = []
+    for model in models:
+        rel = model.relative_to(folder).as_posix()
+        digest = hashlib.sha256(model.read_bytes()).hexdigest()
+        dest = _output_folder(model, folder, out)
+        seen = state.get(rel, {})
+        if (not force and seen.get("input") == digest and seen.get("toolchain") == tools
+                and (dest / ".robomda" / "state.json").is_file()):
+            results.append(ModelResult(model=rel, status="skipped", input_hash=digest))
+        else:
+            todo.append((model, dest, digest))
+
+    done_count = len(results)
+    total = len(models)
+    for skipped in results:
+        if progress:
+            progress(done_count, total, skipped)
+    workers = max(1, min(jobs or os.cpu_count() or 1, len(todo) or 1))
+    if todo:
+        if workers == 1:
+            outcomes = (_generate_one(str(m), str(d), target, package_name) for m, d, _ in todo)
+            for (model, _, digest), result in zip(todo, outcomes):
+                done_count += 1
+                results.append(_finish(result, model, folder, digest, progress, done_count, total))
+        else:
+            # spawn, not fork: each worker starts its own Saxon engine cleanly
+            with ProcessPoolExecutor(max_workers=workers, mp_context=get_context("spawn")) as pool:
+                futures = {pool.submit(_generate_one, str(m), str(d), target, package_name): (m, dg)
+                           for m, d, dg in todo}
+                for future in as_completed(futures):
+                    model, digest = futures[future]
+                    done_count += 1
+                    results.append(_finish(future.result(), model, folder, digest, progress, done_count, total))
+
+    results.sort(key=lambda r: r.model)
+    new_state = {r.model: {"input": r.input_hash, "toolchain": tools} for r in results if r.status != "failed"}
+    if results:
+        payload = {"generator": f"robomda {__version__}", "target": target, "models": new_state}
+        atomic_write(out / STATE, (json.dumps(payload, indent=1, sort_keys=True) + "\n").encode("utf-8"))
+    return BatchReport(results, time.perf_counter() - started)
+
+
+def _finish(result: ModelResult, model: Path, folder: Path, digest: str,
+            progress: Callable[[int, int, ModelResult], None] | None, done: int, total: int) -> ModelResult:
+    result.model = model.relative_to(folder).as_posix()
+    result.input_hash = digest
+    if progress:
+        progress(done, total, result)
+    return result
+
+
+class ProgressBar:
+    """A one-line progress bar on a terminal; silent otherwise."""
+
+    def __init__(self, stream=sys.stderr, width: int = 30) -> None:
+        self.stream = stream
+        self.width = width
+        self.enabled = stream.isatty()
+        self.failed = 0
+
+    def __call__(self, done: int, total: int, result: ModelResult) -> None:
+        if result.status == "failed":
+            self.failed += 1
+        if not self.enabled or total == 0:
+            return
+        filled = self.width * done // total
+        bar = "#" * filled + "." * (self.width - filled)
+        self.stream.write(f"\r[{bar}] {done}/{total} models, {self.failed} failed")
+        if done == total:
+            self.stream.write("\n")
+        self.stream.flush()
