@@ -39,6 +39,7 @@ class Generated:
     stages: dict[str, str]
     report: WriteReport | None
     timings: list[tuple[str, float, float]]
+    warnings: list[Diagnostic]
 
 
 def _check_readable(model: Path) -> None:
@@ -96,4 +97,4 @@ def generate(model: Path | str, out: Path | str | None, target: str = "orocos", 
     report = None
     if write and out_path is not None and chain.yields == "files" and result.tree is not None:
         report = write_fileset(result.tree, out_path)
-    return Generated(result.stages, report, result.timings)
+    return Generated(result.stages, report, result.timings, result.warnings)

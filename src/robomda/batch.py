@@ -125,6 +125,7 @@ def _generate_one(model: str, out: str, target: str, package_name: str) -> Model
     try:
         done = generate(model, out, target, package_name=package_name)
         result.files_written = len(done.report.written) if done.report else 0
+        result.diagnostics = [w.format() for w in done.warnings]
     except RobomdaError as exc:
         result.status, result.exit_code = "failed", exc.exit_code
         result.diagnostics = [d.format() for d in exc.diagnostics]

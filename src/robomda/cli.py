@@ -101,6 +101,8 @@ def main(argv: list[str] | None = None) -> int:
             return _batch(args)
         if args.command == "generate":
             done = generate(args.model, args.output, args.target, package_name=args.package_name)
+            for warning in done.warnings:
+                print(warning.format(), file=sys.stderr)
             if args.save_stages:
                 for name, text in done.stages.items():
                     atomic_write(args.save_stages / f"{name}.xml", text.encode("utf-8"))

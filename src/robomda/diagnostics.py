@@ -24,6 +24,7 @@ __all__ = [
     "EXIT_INPUT",
     "EXIT_INTERNAL",
     "parse_stylesheet_error",
+    "parse_stylesheet_warning",
 ]
 
 EXIT_OK = 0
@@ -83,6 +84,14 @@ class RobomdaError(Exception):
 
     def __str__(self) -> str:
         return "\n".join(d.format() for d in self.diagnostics)
+
+
+def parse_stylesheet_warning(text: str) -> tuple[str, str, str] | None:
+    """Split a robomda stylesheet warning ("warning: CODE: ...") into (code, message, xmi id)."""
+    text = text.strip()
+    if not text.startswith("warning: "):
+        return None
+    return parse_stylesheet_error(text[len("warning: "):])
 
 
 def parse_stylesheet_error(text: str) -> tuple[str, str, str] | None:

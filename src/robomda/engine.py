@@ -51,6 +51,8 @@ class Engine:
         self._proc = PySaxonProcessor(license=False)
         self._xslt = self._proc.new_xslt30_processor()
         self._compiled: dict[Path, object] = {}
+        # the xsl:message texts of the last transform (warnings travel this way)
+        self.messages: list[str] = []
 
     @property
     def version(self) -> str:
@@ -79,6 +81,8 @@ class Engine:
         executable = self.compile(stylesheet)
         executable.clear_parameters()
         executable.clear_xsl_messages()
+        executable.set_save_xsl_message(True, None)
+        self.messages = []
         for name, value in params.items():
             executable.set_parameter(name, self._proc.make_atomic_value("untypedAtomic", value))
         failure: PySaxonApiError | None = None
@@ -95,6 +99,9 @@ class Engine:
                 result = executable.apply_templates_returning_string(xdm_value=node)
             except PySaxonApiError as exc:
                 failure = exc
+        saved = executable.get_xsl_messages()
+        if saved is not None:
+            self.messages = [str(saved.item_at(i).string_value) for i in range(saved.size)]
         if failure is not None or result is None:
             raise TransformError(stylesheet, str(failure or "no result").strip(), "".join(err))
         return result

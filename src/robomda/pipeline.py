@@ -24,6 +24,7 @@ from robomda.diagnostics import (
     RobomdaError,
     XmiLocator,
     parse_stylesheet_error,
+    parse_stylesheet_warning,
 )
 from robomda.engine import Engine, TransformError
 from robomda.resources import resource_root
@@ -66,6 +67,8 @@ class RunResult:
     tree: etree._Element | None = None
     # per step: (name, seconds in XSLT, seconds in XSD validation)
     timings: list[tuple[str, float, float]] = field(default_factory=list)
+    # warnings the stylesheets reported (f:warn), located in the XMI
+    warnings: list[Diagnostic] = field(default_factory=list)
 
     @property
     def output(self) -> str:
@@ -116,6 +119,11 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
                 text = engine.transform(step.stylesheet, params, source_text=previous)
         except TransformError as exc:
             raise _transform_failure(exc, step, locator) from None
+        for message in engine.messages:
+            parsed = parse_stylesheet_warning(message)
+            if parsed is not None:
+                code, text_, xmi_id = parsed
+                result.warnings.append(locator.diagnostic(code, text_, xmi_id, severity="warning", step=step.name))
         transformed = time.perf_counter()
         tree, violations = validate(text, step.schema)
         result.timings.append((step.name, transformed - started, time.perf_counter() - transformed))

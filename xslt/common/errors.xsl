@@ -5,7 +5,8 @@
   Reads:   nothing (a function module, included by the stage stylesheets).
   Writes:  nothing.
   Params:  none.
-  Errors:  raises the code it is given, in namespace urn:robomda:error.
+  Errors:  f:fail raises the code it is given, in namespace urn:robomda:error;
+           f:warn reports a warning and lets the run go on.
 
   Contract with the driver (src/robomda/diagnostics.py): the error's
   description is "CODE: MESSAGE [xmi:id=ID]" (Saxon's Python API passes on
@@ -30,5 +31,15 @@
     <xsl:param name="message" as="xs:string"/>
     <xsl:sequence select="error(QName('urn:robomda:error', 'err:' || $code),
                                 $code || ': ' || $message || ' [xmi:id=' || string($id) || ']')"/>
+  </xsl:function>
+
+  <!-- Report warning $code about the element with id $id; the run goes on.
+       Written as xsl:message "warning: CODE: MESSAGE [xmi:id=ID]", which the
+       driver collects and locates like an error; other engines print it. -->
+  <xsl:function name="f:warn" as="empty-sequence()">
+    <xsl:param name="code" as="xs:string"/>
+    <xsl:param name="id" as="xs:string?"/>
+    <xsl:param name="message" as="xs:string"/>
+    <xsl:message select="'warning: ' || $code || ': ' || $message || ' [xmi:id=' || string($id) || ']'"/>
   </xsl:function>
 </xsl:stylesheet>

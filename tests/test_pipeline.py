@@ -1,0 +1,67 @@
+"""The pipeline runner with small stand-in stylesheets: warnings, bugs and schema breaks are located."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from robomda import pipeline
+from robomda.diagnostics import RobomdaError
+from robomda.engine import Engine
+
+ROOT = Path(__file__).resolve().parent.parent
+XMI = ROOT / "tests" / "data" / "import" / "features.uml"
+
+_STEP = """<xsl:stylesheet version="3.0" xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:f="urn:robomda:xslt:function" xmlns:fs="urn:robomda:fileset:1" exclude-result-prefixes="#all">
+  <xsl:include href="{errors}"/>
+  <xsl:template match="/">
+    {body}
+  </xsl:template>
+</xsl:stylesheet>"""
+
+
+def _manifest(tmp_path: Path, body: str) -> pipeline.Pipeline:
+    xsl = tmp_path / "step.xsl"
+    xsl.write_text(_STEP.format(errors=(ROOT / "xslt/common/errors.xsl").as_uri(), body=body))
+    manifest = tmp_path / "test.xml"
+    manifest.write_text(f"""<pipeline xmlns="urn:robomda:pipeline:1" name="test" yields="files">
+  <description>test</description>
+  <step name="only" stylesheet="step.xsl" schema="{(ROOT / 'schemas/fileset/1/fileset.xsd').as_posix()}"/>
+</pipeline>""")
+    return pipeline.load(manifest)
+
+
+def _first_id_and_line() -> tuple[str, int]:
+    for number, line in enumerate(XMI.read_text(encoding="utf-8").splitlines(), 1):
+        if 'xmi:id="' in line and "packagedElement" in line:
+            return line.split('xmi:id="')[1].split('"')[0], number
+    raise AssertionError("no packagedElement with an id")
+
+
+def test_warnings_are_collected_with_their_xmi_location(tmp_path: Path) -> None:
+    xid, line = _first_id_and_line()
+    chain = _manifest(tmp_path, f"""<xsl:sequence select="f:warn('TST001', '{xid}', 'look here')"/>
+    <fs:files target="t"/>""")
+    result = pipeline.run(chain, Engine(), XMI, {})
+    assert [w.code for w in result.warnings] == ["TST001"]
+    warning = result.warnings[0]
+    assert warning.severity == "warning" and warning.line == line and warning.xmi_id == xid
+    assert warning.format().startswith(f"{XMI}:{line}:") and ": warning: [TST001] look here" in warning.format()
+
+
+def test_an_unexpected_stylesheet_error_is_an_internal_error_without_traceback(tmp_path: Path) -> None:
+    chain = _manifest(tmp_path, "<xsl:sequence select=\"error(QName('urn:x', 'BOOM'), 'kaput')\"/>")
+    with pytest.raises(RobomdaError) as caught:
+        pipeline.run(chain, Engine(), XMI, {})
+    assert caught.value.exit_code == 3
+    assert caught.value.diagnostics[0].code == "INTERNAL" and "kaput" in caught.value.diagnostics[0].message
+
+
+def test_output_breaking_its_schema_is_reported_as_a_bug(tmp_path: Path) -> None:
+    chain = _manifest(tmp_path, '<fs:files target="t"><fs:file path="../escape" stylesheet="s">x</fs:file></fs:files>')
+    with pytest.raises(RobomdaError) as caught:
+        pipeline.run(chain, Engine(), XMI, {})
+    assert caught.value.exit_code == 3
+    assert caught.value.diagnostics[0].code == "SCHEMA" and "fileset.xsd" in caught.value.diagnostics[0].message
