@@ -7,7 +7,8 @@
   Writes:  pim:package, pim:primitive, pim:datatype, pim:enumeration,
            pim:class, pim:interface, pim:component and what they hold
            (schemas/pim/1/pim.xsd); mode mp:packageable.
-  Params:  none.
+  Params:  none; tunnel parameter href-types (fp:href-types of the
+           normalised XMI, set by import.xsl) reaches the mp:feature rules.
   Errors:  none raised here: the check pass (check.xsl) has reported every
            dangling reference before this runs.
 
@@ -58,7 +59,7 @@
   </xsl:function>
 
   <!-- ========================================================= packages -->
-  <xsl:template match="*[fp:meta(.) = ('Package', 'Model')]" mode="mp:packageable"
+  <xsl:template match="*[@x:type = ('Package', 'Model')]" mode="mp:packageable"
                 as="element(pim:package)">
     <pim:package id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
       <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
@@ -67,24 +68,24 @@
   </xsl:template>
 
   <!-- ============================================== simple classifiers -->
-  <xsl:template match="*[fp:meta(.) eq 'PrimitiveType']" mode="mp:packageable"
+  <xsl:template match="*[@x:type eq 'PrimitiveType']" mode="mp:packageable"
                 as="element(pim:primitive)">
     <pim:primitive id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
       <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
     </pim:primitive>
   </xsl:template>
 
-  <xsl:template match="*[fp:meta(.) eq 'DataType']" mode="mp:packageable"
+  <xsl:template match="*[@x:type eq 'DataType']" mode="mp:packageable"
                 as="element(pim:datatype)">
     <pim:datatype id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
       <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
       <xsl:apply-templates select="generalization" mode="mp:feature"/>
-      <xsl:apply-templates select="ownedAttribute[fp:meta(.) ne 'Port']" mode="mp:feature"/>
+      <xsl:apply-templates select="ownedAttribute[not(@x:type = 'Port')]" mode="mp:feature"/>
       <xsl:apply-templates select="ownedOperation" mode="mp:feature"/>
     </pim:datatype>
   </xsl:template>
 
-  <xsl:template match="*[fp:meta(.) eq 'Enumeration']" mode="mp:packageable"
+  <xsl:template match="*[@x:type eq 'Enumeration']" mode="mp:packageable"
                 as="element(pim:enumeration)">
     <pim:enumeration id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
       <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
@@ -97,7 +98,7 @@
   </xsl:template>
 
   <!-- ====================================================== classifiers -->
-  <xsl:template match="*[fp:meta(.) eq 'Class']" mode="mp:packageable" as="element(pim:class)">
+  <xsl:template match="*[@x:type eq 'Class']" mode="mp:packageable" as="element(pim:class)">
     <pim:class id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}"
         abstract="{fp:bool(@isAbstract, false())}" active="{fp:bool(@isActive, false())}">
       <xsl:call-template name="tp:classifier-body"/>
@@ -105,22 +106,22 @@
     </pim:class>
   </xsl:template>
 
-  <xsl:template match="*[fp:meta(.) eq 'Interface']" mode="mp:packageable" as="element(pim:interface)">
+  <xsl:template match="*[@x:type eq 'Interface']" mode="mp:packageable" as="element(pim:interface)">
     <pim:interface id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
       <xsl:call-template name="tp:classifier-body"/>
       <xsl:apply-templates select="fp:owned-packageables(.)" mode="mp:packageable"/>
     </pim:interface>
   </xsl:template>
 
-  <xsl:template match="*[fp:meta(.) eq 'Component']" mode="mp:packageable" as="element(pim:component)">
+  <xsl:template match="*[@x:type eq 'Component']" mode="mp:packageable" as="element(pim:component)">
     <xsl:variable name="c" as="element()" select="."/>
     <pim:component id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}"
         abstract="{fp:bool(@isAbstract, false())}">
       <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
       <xsl:variable name="realizations" as="element()*"
-          select="realization[fp:meta(.) eq 'ComponentRealization']
-                  | key('fp:dep-by-supplier', fp:id(.))[fp:meta(.) eq 'ComponentRealization']
-                    [not(fp:meta(..) eq 'Component')]
+          select="realization[@x:type eq 'ComponentRealization']
+                  | key('fp:dep-by-supplier', fp:id(.))[@x:type eq 'ComponentRealization']
+                    [not(../@x:type = 'Component')]
                   | fp:ea-realizations(.)"/>
       <xsl:for-each select="$realizations">
         <xsl:variable name="r" as="element()" select="."/>
@@ -143,6 +144,7 @@
   <!-- the pim:classifier-body group of the context classifier -->
   <xsl:template name="tp:classifier-body" as="element()*">
     <xsl:param name="decorate" as="xs:boolean" select="true()"/>
+    <xsl:param name="href-types" as="map(xs:string, map(*))" tunnel="yes"/>
     <xsl:variable name="c" as="element()" select="."/>
     <xsl:variable name="id" as="xs:string" select="fp:id(.)"/>
     <xsl:variable name="meta" as="xs:string" select="fp:meta(.)"/>
@@ -153,7 +155,7 @@
     <!-- provides -->
     <xsl:variable name="realizations" as="element()*"
         select="interfaceRealization
-                | key('fp:dep-by-client', $id)[fp:meta(.) = ('InterfaceRealization', 'Realization')]"/>
+                | key('fp:dep-by-client', $id)[@x:type = ('InterfaceRealization', 'Realization')]"/>
     <xsl:for-each select="$realizations">
       <xsl:variable name="r" as="element()" select="."/>
       <xsl:for-each select="fp:realized-interfaces(.)">
@@ -171,7 +173,7 @@
       </xsl:for-each>
     </xsl:for-each>
     <!-- requires -->
-    <xsl:for-each select="key('fp:dep-by-client', $id)[fp:meta(.) eq 'Usage']">
+    <xsl:for-each select="key('fp:dep-by-client', $id)[@x:type eq 'Usage']">
       <xsl:variable name="u" as="element()" select="."/>
       <xsl:variable name="clients" as="xs:string*" select="distinct-values(fp:ref-ids(., 'client'))"/>
       <xsl:variable name="offset" as="xs:integer"
@@ -192,14 +194,14 @@
     </xsl:for-each>
     <!-- structural features -->
     <xsl:variable name="properties" as="element()*"
-        select="ownedAttribute[fp:meta(.) ne 'Port']"/>
+        select="ownedAttribute[not(@x:type = 'Port')]"/>
     <xsl:variable name="parts" as="element()*"
         select="if ($meta = ('Class', 'Component')) then $properties[fp:is-part(.)] else ()"/>
     <xsl:apply-templates select="$properties except $parts" mode="mp:feature"/>
-    <xsl:apply-templates select="(ownedAttribute | ownedPort)[fp:meta(.) eq 'Port']" mode="mp:feature"/>
+    <xsl:apply-templates select="(ownedAttribute | ownedPort)[@x:type eq 'Port']" mode="mp:feature"/>
     <xsl:for-each select="$parts">
       <pim:part id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
-        <xsl:sequence select="fp:typed(.)"/>
+        <xsl:sequence select="fp:typed(., $href-types)"/>
         <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
       </pim:part>
     </xsl:for-each>
@@ -245,8 +247,9 @@
   </xsl:template>
 
   <xsl:template match="ownedAttribute | ownedEnd" mode="mp:feature" as="element(pim:attribute)">
+    <xsl:param name="href-types" as="map(xs:string, map(*))" tunnel="yes"/>
     <pim:attribute id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
-      <xsl:sequence select="fp:typed(.)"/>
+      <xsl:sequence select="fp:typed(., $href-types)"/>
       <xsl:attribute name="visibility" select="fp:visibility(.)"/>
       <xsl:attribute name="static" select="fp:bool(@isStatic, false())"/>
       <xsl:attribute name="read-only" select="fp:bool(@isReadOnly, false())"/>
@@ -259,10 +262,11 @@
     </pim:attribute>
   </xsl:template>
 
-  <xsl:template match="*[fp:meta(.) eq 'Port']" mode="mp:feature" as="element(pim:port)">
+  <xsl:template match="*[@x:type eq 'Port']" mode="mp:feature" as="element(pim:port)">
+    <xsl:param name="href-types" as="map(xs:string, map(*))" tunnel="yes"/>
     <xsl:variable name="id" as="xs:string" select="fp:id(.)"/>
     <pim:port id="{$id}" name="{@name}" qualified-name="{fp:qname(.)}">
-      <xsl:sequence select="fp:typed(.)"/>
+      <xsl:sequence select="fp:typed(., $href-types)"/>
       <xsl:attribute name="visibility" select="fp:visibility(.)"/>
       <xsl:attribute name="conjugated" select="fp:bool(@isConjugated, false())"/>
       <xsl:attribute name="service" select="fp:bool(@isService, true())"/>
@@ -270,16 +274,16 @@
       <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
       <xsl:variable name="provided" as="element()*"
           select="fp:exposed(., 'provided') ! fp:interface-of(.),
-                  fp:targets(., 'provided')[fp:meta(.) eq 'Interface'],
-                  key('fp:dep-by-client', $id)[fp:meta(.) = ('InterfaceRealization', 'Realization')]
+                  fp:targets(., 'provided')[@x:type eq 'Interface'],
+                  key('fp:dep-by-client', $id)[@x:type = ('InterfaceRealization', 'Realization')]
                     ! fp:realized-interfaces(.)"/>
       <xsl:for-each select="distinct-values($provided ! fp:id(.))">
         <pim:provided interface="{.}"/>
       </xsl:for-each>
       <xsl:variable name="required" as="element()*"
           select="fp:exposed(., 'required') ! fp:interface-of(.),
-                  fp:targets(., 'required')[fp:meta(.) eq 'Interface'],
-                  key('fp:dep-by-client', $id)[fp:meta(.) eq 'Usage'] ! fp:used-interfaces(.)"/>
+                  fp:targets(., 'required')[@x:type eq 'Interface'],
+                  key('fp:dep-by-client', $id)[@x:type eq 'Usage'] ! fp:used-interfaces(.)"/>
       <xsl:for-each select="distinct-values($required ! fp:id(.))">
         <pim:required interface="{.}"/>
       </xsl:for-each>
@@ -287,15 +291,16 @@
   </xsl:template>
 
   <xsl:template match="ownedOperation" mode="mp:feature" as="element(pim:operation)">
+    <xsl:param name="href-types" as="map(xs:string, map(*))" tunnel="yes"/>
     <pim:operation id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}"
         visibility="{fp:visibility(.)}" static="{fp:bool(@isStatic, false())}"
         abstract="{fp:bool(@isAbstract, false())}" query="{fp:bool(@isQuery, false())}">
       <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
       <!-- a void return parameter is no return (EA writes one for every
            operation) -->
-      <xsl:for-each select="ownedParameter[not(@direction = 'return' and fp:typed(.)[name() eq 'primitive'] = 'void')]">
+      <xsl:for-each select="ownedParameter[not(@direction = 'return' and fp:typed(., $href-types)[name() eq 'primitive'] = 'void')]">
         <pim:parameter id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
-          <xsl:sequence select="fp:typed(.)"/>
+          <xsl:sequence select="fp:typed(., $href-types)"/>
           <xsl:attribute name="direction"
               select="if (@direction = ('in', 'out', 'inout', 'return')) then string(@direction) else 'in'"/>
           <xsl:for-each select="fp:default(.)">

@@ -37,6 +37,9 @@
       'CommunicationPath':    map { 'code': 'IMP019', 'refs': ('memberEnd') }
     }"/>
 
+  <!-- the metaclasses that have checked references -->
+  <xsl:variable name="checked-metas" as="xs:string+" select="map:keys($checked-references)"/>
+
   <!-- the problems of one element: maps with code, id, message -->
   <xsl:function name="fp:problems" as="map(*)*">
     <xsl:param name="e" as="element()"/>

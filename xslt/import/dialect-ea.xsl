@@ -63,7 +63,7 @@
         if (empty($e)) then ()
         else if (fp:meta($e) eq 'Interface') then $e
         else if (local-name($e) = ('provided', 'required') and $e/@x:idref)
-          then fp:element($e, $e/@x:idref)[fp:meta(.) eq 'Interface']
+          then fp:element($e, $e/@x:idref)[@x:type eq 'Interface']
         else ()"/>
   </xsl:function>
 
@@ -71,7 +71,7 @@
        client is a class or component: EA's component realization -->
   <xsl:function name="fp:ea-realizations" as="element()*">
     <xsl:param name="c" as="element()"/>
-    <xsl:sequence select="key('fp:dep-by-supplier', fp:id($c), root($c))[fp:meta(.) eq 'Realization']
+    <xsl:sequence select="key('fp:dep-by-supplier', fp:id($c), root($c))[@x:type eq 'Realization']
                           [some $t in fp:targets(., 'client') satisfies fp:meta($t) = ('Class', 'Component')]"/>
   </xsl:function>
 

@@ -100,6 +100,7 @@
       <xsl:variable name="model-el" as="element()" select="fp:model-el($norm)"/>
       <xsl:variable name="root" as="element()" select="fp:model-root($model-el)"/>
       <xsl:if test="fp:check-model($norm, $model-el)">
+        <xsl:variable name="href-types" as="map(xs:string, map(*))" select="fp:href-types($norm)"/>
         <xsl:variable name="pim" as="document-node()">
         <xsl:document>
           <pim:model id="{fp:id($root)}" name="{$root/@name}" source="{$source-name}"
@@ -109,10 +110,13 @@
               <xsl:with-param name="e" select="$root"/>
             </xsl:call-template>
             <pim:application>
-              <xsl:apply-templates select="fp:owned-packageables($root)" mode="mp:packageable"/>
+              <xsl:apply-templates select="fp:owned-packageables($root)" mode="mp:packageable">
+                <xsl:with-param name="href-types" as="map(xs:string, map(*))" select="$href-types" tunnel="yes"/>
+              </xsl:apply-templates>
             </pim:application>
             <xsl:call-template name="tp:platform">
               <xsl:with-param name="root" select="$root"/>
+              <xsl:with-param name="href-types" as="map(xs:string, map(*))" select="$href-types" tunnel="yes"/>
             </xsl:call-template>
           </pim:model>
         </xsl:document>
@@ -172,15 +176,17 @@
   <xsl:function name="fp:check-model" as="xs:boolean">
     <xsl:param name="norm" as="document-node()"/>
     <xsl:param name="model-el" as="element()"/>
+    <xsl:variable name="ids" as="attribute()*" select="$norm//@x:id"/>
     <xsl:variable name="duplicates" as="xs:string*">
-      <xsl:for-each-group select="$norm//@x:id" group-by="string(.)">
+      <xsl:for-each-group select="if (count(distinct-values($ids)) eq count($ids)) then () else $ids"
+          group-by="string(.)">
         <xsl:if test="count(current-group()) gt 1">
           <xsl:sequence select="current-grouping-key()"/>
         </xsl:if>
       </xsl:for-each-group>
     </xsl:variable>
     <xsl:variable name="problems" as="map(*)*"
-        select="$model-el/descendant-or-self::* ! fp:problems(.)"/>
+        select="$model-el/descendant-or-self::*[@x:type = $checked-metas] ! fp:problems(.)"/>
     <xsl:choose>
       <xsl:when test="exists($duplicates)">
         <xsl:variable name="holders" as="element()*" select="key('fp:by-id', $duplicates[1], $norm)"/>

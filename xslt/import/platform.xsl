@@ -7,7 +7,8 @@
            under the model root, whatever package or classifier owns it.
   Writes:  pim:platform with pim:node (nested), pim:artifact and
            pim:communication-path (schemas/pim/1/pim.xsd).
-  Params:  none.
+  Params:  none; tunnel parameter href-types (fp:href-types of the
+           normalised XMI, set by import.xsl) reaches the mp:feature rules.
   Errors:  none raised here: check.xsl has reported dangling references.
 
   Rules
@@ -32,6 +33,7 @@
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
     xmlns:xs="http://www.w3.org/2001/XMLSchema"
     xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:x="urn:robomda:import:xmi"
     xmlns:mp="urn:robomda:xslt:mode:private"
     xmlns:tp="urn:robomda:xslt:template:private"
     xmlns:pim="urn:robomda:pim:1"
@@ -41,18 +43,18 @@
 
   <xsl:template name="tp:platform" as="element(pim:platform)">
     <xsl:param name="root" as="element()"/>
-    <xsl:variable name="all" as="element()*" select="$root/descendant-or-self::*[fp:meta(.) = $platform-metas]"/>
+    <xsl:variable name="all" as="element()*" select="$root/descendant-or-self::*[@x:type = $platform-metas]"/>
     <pim:platform>
-      <xsl:apply-templates select="$all[fp:meta(.) = $node-metas][not(fp:meta(..) = $node-metas)]"
+      <xsl:apply-templates select="$all[@x:type = $node-metas][not(../@x:type = $node-metas)]"
           mode="mp:platform"/>
-      <xsl:apply-templates select="$all[fp:meta(.) = $artifact-metas]" mode="mp:platform"/>
-      <xsl:apply-templates select="$all[fp:meta(.) eq 'CommunicationPath']" mode="mp:platform"/>
+      <xsl:apply-templates select="$all[@x:type = $artifact-metas]" mode="mp:platform"/>
+      <xsl:apply-templates select="$all[@x:type eq 'CommunicationPath']" mode="mp:platform"/>
     </pim:platform>
   </xsl:template>
 
   <xsl:template match="*" mode="mp:platform" priority="-1" as="empty-sequence()"/>
 
-  <xsl:template match="*[fp:meta(.) = $node-metas]" mode="mp:platform" as="element(pim:node)">
+  <xsl:template match="*[@x:type = $node-metas]" mode="mp:platform" as="element(pim:node)">
     <xsl:variable name="meta" as="xs:string" select="fp:meta(.)"/>
     <pim:node id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}"
         kind="{if ($meta eq 'Device') then 'device'
@@ -61,8 +63,8 @@
       <xsl:call-template name="tp:decoration">
         <xsl:with-param name="e" select="."/>
       </xsl:call-template>
-      <xsl:apply-templates select="ownedAttribute[fp:meta(.) ne 'Port']" mode="mp:feature"/>
-      <xsl:for-each select="deployment | key('fp:dep-by-client', fp:id(.))[fp:meta(.) eq 'Deployment']">
+      <xsl:apply-templates select="ownedAttribute[not(@x:type = 'Port')]" mode="mp:feature"/>
+      <xsl:for-each select="deployment | key('fp:dep-by-client', fp:id(.))[@x:type eq 'Deployment']">
         <xsl:variable name="deployed" as="xs:string*"
             select="distinct-values((fp:targets(., 'deployedArtifact'), fp:targets(., 'supplier')) ! fp:id(.))"/>
         <xsl:if test="exists($deployed)">
@@ -73,11 +75,11 @@
           </pim:deployment>
         </xsl:if>
       </xsl:for-each>
-      <xsl:apply-templates select="*[fp:meta(.) = $node-metas]" mode="mp:platform"/>
+      <xsl:apply-templates select="*[@x:type = $node-metas]" mode="mp:platform"/>
     </pim:node>
   </xsl:template>
 
-  <xsl:template match="*[fp:meta(.) = $artifact-metas]" mode="mp:platform" as="element(pim:artifact)">
+  <xsl:template match="*[@x:type = $artifact-metas]" mode="mp:platform" as="element(pim:artifact)">
     <pim:artifact id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
       <xsl:if test="@fileName">
         <xsl:attribute name="file-name" select="@fileName"/>
@@ -85,8 +87,8 @@
       <xsl:call-template name="tp:decoration">
         <xsl:with-param name="e" select="."/>
       </xsl:call-template>
-      <xsl:apply-templates select="ownedAttribute[fp:meta(.) ne 'Port']" mode="mp:feature"/>
-      <xsl:for-each select="manifestation | key('fp:dep-by-client', fp:id(.))[fp:meta(.) eq 'Manifestation']">
+      <xsl:apply-templates select="ownedAttribute[not(@x:type = 'Port')]" mode="mp:feature"/>
+      <xsl:for-each select="manifestation | key('fp:dep-by-client', fp:id(.))[@x:type eq 'Manifestation']">
         <xsl:variable name="m" as="element()" select="."/>
         <xsl:variable name="elements" as="element()*"
             select="if (exists(fp:ref-ids(., 'utilizedElement'))) then fp:targets(., 'utilizedElement')
@@ -98,13 +100,13 @@
     </pim:artifact>
   </xsl:template>
 
-  <xsl:template match="*[fp:meta(.) eq 'CommunicationPath']" mode="mp:platform"
+  <xsl:template match="*[@x:type eq 'CommunicationPath']" mode="mp:platform"
                 as="element(pim:communication-path)?">
     <xsl:variable name="member-ends" as="element()*" select="fp:targets(., 'memberEnd')"/>
     <xsl:variable name="ends" as="element()*"
         select="if (exists($member-ends)) then $member-ends else ownedEnd"/>
     <xsl:variable name="nodes" as="element()*"
-        select="$ends ! fp:type-element(.)[fp:meta(.) = $node-metas]"/>
+        select="$ends ! fp:type-element(.)[@x:type = $node-metas]"/>
     <xsl:choose>
       <xsl:when test="count($nodes) ge 2">
         <pim:communication-path id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">

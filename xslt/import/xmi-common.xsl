@@ -12,8 +12,15 @@
              (UML elements in urn:robomda:import:uml, XMI elements and
              attributes in urn:robomda:import:xmi, xmi:type reduced to the
              UML metaclass name), without xmi:Extension / eAnnotations
-             blocks. Every later step reads this copy, so one set of
-             rules serves every XMI and UML version;
+             blocks, and with x:type on every element whose metaclass is
+             known (written or implied: fp:meta), so rules and keys test
+             @x:type instead of calling a function. Every later step reads
+             this copy, so one set of rules serves every XMI and UML
+             version. The common namespaces are compared with "="
+             ($common-xmi-ns, $common-uml-ns); the patterns run only for
+             other URIs;
+           - fp:href-types: what each distinct type href says (library,
+             name, primitive kind), computed once per document;
            - the keys (every id look-up goes through xsl:key);
            - functions for ids, metaclasses, references, qualified names,
              value specifications, multiplicities, types and comments.
@@ -28,6 +35,7 @@
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
     xmlns:mp="urn:robomda:xslt:mode:private"
+    xmlns:tp="urn:robomda:xslt:template:private"
     xmlns:u="urn:robomda:import:uml"
     xmlns:x="urn:robomda:import:xmi"
     xmlns:pt="urn:robomda:primitive-types"
@@ -52,20 +60,69 @@
         '^https?://(schema|www)\.omg\.org/(spec/)?XMI(/[0-9.]+)?/?$', 'i')"/>
   </xsl:function>
 
+  <!-- the XMI and UML namespaces of the common tools, tested with "=" in
+       the match patterns of mp:normalise before any regular expression is
+       run (only those that fp:is-xmi-ns / fp:is-uml-ns accept: the
+       patterns above stay the definition) -->
+  <xsl:variable name="common-xmi-ns" as="xs:string*" select="(
+      'http://www.omg.org/XMI', 'http://schema.omg.org/spec/XMI/2.1',
+      'http://www.omg.org/spec/XMI/20100901', 'http://www.omg.org/spec/XMI/20110701',
+      'http://www.omg.org/spec/XMI/20131001', 'http://www.omg.org/spec/XMI/20161101'
+      )[fp:is-xmi-ns(.)]"/>
+  <xsl:variable name="common-uml-ns" as="xs:string*" select="(
+      'http://www.eclipse.org/uml2/2.0.0/UML', 'http://www.eclipse.org/uml2/2.1.0/UML',
+      'http://www.eclipse.org/uml2/3.0.0/UML', 'http://www.eclipse.org/uml2/4.0.0/UML',
+      'http://www.eclipse.org/uml2/5.0.0/UML', 'http://schema.omg.org/spec/UML/2.0',
+      'http://schema.omg.org/spec/UML/2.1', 'http://schema.omg.org/spec/UML/2.1.1',
+      'http://schema.omg.org/spec/UML/2.2', 'http://www.omg.org/spec/UML/20090901',
+      'http://www.omg.org/spec/UML/20110701', 'http://www.omg.org/spec/UML/20131001',
+      'http://www.omg.org/spec/UML/20161101'
+      )[fp:is-uml-ns(.)]"/>
+
   <!-- ================================================== normalisation -->
+  <!-- Every element whose UML metaclass is known gets x:type (xmi:type
+       reduced to the metaclass name, else the element name of a UML
+       element, else the default type of the feature in $default-metas), so
+       fp:meta and the match patterns read one attribute. The common cases
+       (no namespace, a namespace of $common-xmi-ns / $common-uml-ns) have
+       their own rules; the regular expressions run only for the rest. -->
   <xsl:mode name="mp:normalise" on-no-match="shallow-copy"/>
   <!-- hook for dialect modules: extra attributes on a normalised element -->
   <xsl:mode name="mp:normalise-extra" on-no-match="deep-skip"/>
 
+  <!-- elements in no namespace (most of an XMI file) -->
+  <xsl:template match="*[namespace-uri() eq '']" mode="mp:normalise" priority="2" as="element()">
+    <xsl:copy copy-namespaces="no">
+      <xsl:apply-templates select="@*" mode="mp:normalise"/>
+      <xsl:call-template name="tp:default-meta"/>
+      <xsl:apply-templates select="." mode="mp:normalise-extra"/>
+      <xsl:apply-templates select="node()" mode="mp:normalise"/>
+    </xsl:copy>
+  </xsl:template>
+
+  <!-- UML elements -->
+  <xsl:template match="*[namespace-uri() = $common-uml-ns]" mode="mp:normalise" priority="2"
+                as="element()">
+    <xsl:call-template name="tp:normalise-uml"/>
+  </xsl:template>
+
+  <xsl:template name="tp:normalise-uml" as="element()">
+    <xsl:element name="u:{local-name()}" namespace="{$U}">
+      <xsl:apply-templates select="@*" mode="mp:normalise"/>
+      <xsl:if test="not(@*[local-name() eq 'type'][fp:is-xmi-ns(namespace-uri())])">
+        <xsl:attribute name="x:type" namespace="{$X}" select="local-name()"/>
+      </xsl:if>
+      <xsl:apply-templates select="." mode="mp:normalise-extra"/>
+      <xsl:apply-templates select="node()" mode="mp:normalise"/>
+    </xsl:element>
+  </xsl:template>
+
+  <!-- any other element: by the namespace patterns -->
   <xsl:template match="*" mode="mp:normalise" as="element()">
     <xsl:variable name="ns" as="xs:string" select="namespace-uri()"/>
     <xsl:choose>
       <xsl:when test="fp:is-uml-ns($ns)">
-        <xsl:element name="u:{local-name()}" namespace="{$U}">
-          <xsl:apply-templates select="@*" mode="mp:normalise"/>
-          <xsl:apply-templates select="." mode="mp:normalise-extra"/>
-          <xsl:apply-templates select="node()" mode="mp:normalise"/>
-        </xsl:element>
+        <xsl:call-template name="tp:normalise-uml"/>
       </xsl:when>
       <xsl:when test="fp:is-xmi-ns($ns)">
         <xsl:element name="x:{local-name()}" namespace="{$X}">
@@ -76,6 +133,9 @@
       <xsl:otherwise>
         <xsl:element name="{name()}" namespace="{$ns}">
           <xsl:apply-templates select="@*" mode="mp:normalise"/>
+          <xsl:if test="$ns eq $U and not(@*[local-name() eq 'type'][fp:is-xmi-ns(namespace-uri())])">
+            <xsl:attribute name="x:type" namespace="{$X}" select="local-name()"/>
+          </xsl:if>
           <xsl:apply-templates select="." mode="mp:normalise-extra"/>
           <xsl:apply-templates select="node()" mode="mp:normalise"/>
         </xsl:element>
@@ -83,22 +143,37 @@
     </xsl:choose>
   </xsl:template>
 
+  <!-- x:type of a no-namespace element without xmi:type: the declared type
+       of its feature -->
+  <xsl:template name="tp:default-meta" as="attribute()?">
+    <xsl:variable name="meta" as="xs:string?" select="$default-metas(local-name())"/>
+    <xsl:if test="exists($meta)
+                  and not(@*[local-name() eq 'type'][namespace-uri()][fp:is-xmi-ns(namespace-uri())])">
+      <xsl:attribute name="x:type" namespace="{$X}" select="$meta"/>
+    </xsl:if>
+  </xsl:template>
+
   <!-- tool extension blocks carry no UML semantics: dropped -->
   <xsl:template match="*[local-name() = 'Extension'][fp:is-xmi-ns(namespace-uri())]
-                       | eAnnotations" mode="mp:normalise" as="empty-sequence()"/>
+                       | eAnnotations" mode="mp:normalise" priority="3" as="empty-sequence()"/>
   <xsl:template match="comment() | processing-instruction()" mode="mp:normalise"
                 as="empty-sequence()"/>
 
-  <xsl:template match="@*" mode="mp:normalise" as="attribute()">
-    <xsl:choose>
-      <xsl:when test="fp:is-xmi-ns(namespace-uri())">
-        <xsl:attribute name="x:{local-name()}" namespace="{$X}"
-            select="if (local-name() = 'type') then fp:norm-type(.) else string(.)"/>
-      </xsl:when>
-      <xsl:otherwise>
-        <xsl:copy/>
-      </xsl:otherwise>
-    </xsl:choose>
+  <!-- XMI attributes into x:; every other attribute as it is (built-in
+       rule) -->
+  <xsl:template match="@*[namespace-uri() = $common-xmi-ns]" mode="mp:normalise" priority="2"
+                as="attribute()">
+    <xsl:call-template name="tp:normalise-xmi-attribute"/>
+  </xsl:template>
+
+  <xsl:template match="@*[namespace-uri()][fp:is-xmi-ns(namespace-uri())]" mode="mp:normalise"
+                priority="1" as="attribute()">
+    <xsl:call-template name="tp:normalise-xmi-attribute"/>
+  </xsl:template>
+
+  <xsl:template name="tp:normalise-xmi-attribute" as="attribute()">
+    <xsl:attribute name="x:{local-name()}" namespace="{$X}"
+        select="if (local-name() = 'type') then fp:norm-type(.) else string(.)"/>
   </xsl:template>
 
   <!-- xmi:type="uml:Class" -> "Class"; a non-UML type -> "{uri}local" -->
@@ -108,7 +183,7 @@
     <xsl:variable name="prefix" as="xs:string" select="substring-before($v, ':')"/>
     <xsl:variable name="uri" as="xs:string"
         select="if ($prefix) then string(namespace-uri-for-prefix($prefix, $a/..)) else ''"/>
-    <xsl:sequence select="if (not(contains($v, ':')) or fp:is-uml-ns($uri))
+    <xsl:sequence select="if (not(contains($v, ':')) or $uri = $common-uml-ns or fp:is-uml-ns($uri))
                           then replace($v, '^.*:', '')
                           else '{' || $uri || '}' || substring-after($v, ':')"/>
   </xsl:function>
@@ -120,9 +195,9 @@
       select="('Usage', 'InterfaceRealization', 'Realization', 'ComponentRealization',
                'Deployment', 'Manifestation')"/>
 
-  <xsl:key name="fp:dep-by-client" match="*[@client or client][fp:meta(.) = $dependency-metas]"
+  <xsl:key name="fp:dep-by-client" match="*[@client or client][@x:type = $dependency-metas]"
       use="fp:ref-ids(., 'client')"/>
-  <xsl:key name="fp:dep-by-supplier" match="*[@supplier or supplier][fp:meta(.) = $dependency-metas]"
+  <xsl:key name="fp:dep-by-supplier" match="*[@supplier or supplier][@x:type = $dependency-metas]"
       use="fp:ref-ids(., 'supplier')"/>
   <xsl:key name="fp:comment-by-annotated" match="ownedComment"
       use="fp:ref-ids(., 'annotatedElement')"/>
@@ -364,20 +439,43 @@
                           or ($meta eq 'DataType' and empty($t/ownedAttribute))"/>
   </xsl:function>
 
+  <!-- what an href says about a type: map { 'library': fp:href-library,
+       'name': fp:href-name without a dialect name, 'kind': fp:primitive-kind
+       of the two }. The same few hrefs repeat thousands of times, so
+       fp:href-types computes this once per distinct href of a document and
+       fp:typed looks it up. -->
+  <xsl:function name="fp:href-type" as="map(*)">
+    <xsl:param name="href" as="xs:string"/>
+    <xsl:variable name="lib" as="xs:string" select="fp:href-library($href)"/>
+    <xsl:variable name="name" as="xs:string" select="fp:href-name($href, ())"/>
+    <xsl:sequence select="map { 'library': $lib, 'name': $name, 'kind': fp:primitive-kind($lib, $name) }"/>
+  </xsl:function>
+
+  <!-- fp:href-type of every distinct href of a type reference in $norm -->
+  <xsl:function name="fp:href-types" as="map(xs:string, map(*))">
+    <xsl:param name="norm" as="document-node()"/>
+    <xsl:sequence select="map:merge(distinct-values($norm//type/@href) ! map { string(.): fp:href-type(.) })"/>
+  </xsl:function>
+
   <!-- the pim:typed attributes (type, type-name, type-library, primitive,
        lower, upper) of a typed element; lower and upper are always written,
-       1 when the model leaves them unset (the UML default) -->
+       1 when the model leaves them unset (the UML default). $href-types:
+       fp:href-types of the document (an href missing there is computed) -->
   <xsl:function name="fp:typed" as="attribute()*">
     <xsl:param name="e" as="element()"/>
+    <xsl:param name="href-types" as="map(xs:string, map(*))"/>
     <xsl:variable name="ref" as="map(*)?" select="fp:refs($e, 'type')[1]"/>
     <xsl:choose>
       <xsl:when test="empty($ref)"/>
       <xsl:when test="map:contains($ref, 'href')">
-        <xsl:variable name="lib" as="xs:string" select="fp:href-library($ref?href)"/>
-        <xsl:variable name="name" as="xs:string" select="fp:href-name($ref?href, $ref?el)"/>
+        <xsl:variable name="info" as="map(*)" select="($href-types($ref?href), fp:href-type($ref?href))[1]"/>
+        <xsl:variable name="lib" as="xs:string" select="$info?library"/>
+        <xsl:variable name="dialect-name" as="xs:boolean" select="exists($ref?el/@x:referent-path)"/>
+        <xsl:variable name="name" as="xs:string"
+            select="if ($dialect-name) then fp:href-name($ref?href, $ref?el) else $info?name"/>
         <xsl:attribute name="type-name" select="$name"/>
         <xsl:attribute name="type-library" select="$lib"/>
-        <xsl:for-each select="fp:primitive-kind($lib, $name)">
+        <xsl:for-each select="if ($dialect-name) then fp:primitive-kind($lib, $name) else $info?kind">
           <xsl:attribute name="primitive" select="."/>
         </xsl:for-each>
       </xsl:when>
