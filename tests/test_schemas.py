@@ -12,8 +12,17 @@ from robomda.validate import validate
 
 ROOT = Path(__file__).resolve().parent.parent
 SCHEMAS = sorted(p for p in (ROOT / "schemas").rglob("*.xsd") if p.name != "binding.xsd")
+
+
+def _schema_of(model: Path) -> Path:
+    """robomda's convention: namespace urn:robomda:NAME:MAJOR has schemas/NAME/MAJOR/NAME.xsd."""
+    namespace = etree.QName(etree.parse(str(model)).getroot()).namespace or ""
+    _, _, name, major = namespace.split(":")
+    return ROOT / "schemas" / name / major / f"{name}.xsd"
+
+
 GOLDEN_MODELS = [
-    (path, ROOT / "schemas" / ("pim/1/pim.xsd" if path.parent.name == "expected" else "psm-orocos/1/psm-orocos.xsd"))
+    (path, _schema_of(path))
     for path in sorted((ROOT / "fixtures" / "cases").glob("*/expected/**/*.xml"))
     if path.name in ("import.xml", "bind.xml", "psm.xml")
 ]

@@ -30,6 +30,7 @@
     xmlns:xs="http://www.w3.org/2001/XMLSchema"
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:map="http://www.w3.org/2005/xpath-functions/map"
     exclude-result-prefixes="#all">
 
   <xsl:variable name="fp:cpp-keywords" as="xs:string+" select="(
@@ -47,6 +48,9 @@
     'try', 'typedef', 'typeid', 'typename', 'union', 'unsigned', 'using',
     'virtual', 'void', 'volatile', 'wchar_t', 'while', 'xor', 'xor_eq',
     'final', 'override', 'RTT', 'std')"/>
+  <!-- the same words as a set, for look-ups -->
+  <xsl:variable name="fp:cpp-keyword-set" as="map(xs:string, xs:boolean)"
+      select="map:merge($fp:cpp-keywords ! map:entry(., true()))"/>
 
   <xsl:function name="f:words" as="xs:string*">
     <xsl:param name="name" as="xs:string?"/>
@@ -58,11 +62,19 @@
 
   <xsl:function name="f:escape-cpp-keyword" as="xs:string">
     <xsl:param name="s" as="xs:string"/>
-    <xsl:sequence select="if ($s = $fp:cpp-keywords or matches($s, '^_[A-Z_]') or contains($s, '__'))
+    <xsl:sequence select="if (map:contains($fp:cpp-keyword-set, $s)
+                              or (starts-with($s, '_') and matches($s, '^_[A-Z_]')) or contains($s, '__'))
                           then $s || '_' else $s"/>
   </xsl:function>
 
   <xsl:function name="f:cpp-identifier" as="xs:string">
+    <xsl:param name="name" as="xs:string?"/>
+    <!-- letters and digits after a letter (the usual case): only the keyword check applies -->
+    <xsl:sequence select="if (matches(string($name), '^[A-Za-z][A-Za-z0-9]*$')) then f:escape-cpp-keyword(string($name))
+                          else fp:cpp-identifier-any($name)"/>
+  </xsl:function>
+
+  <xsl:function name="fp:cpp-identifier-any" as="xs:string">
     <xsl:param name="name" as="xs:string?"/>
     <xsl:variable name="clean" as="xs:string"
         select="replace(replace(normalize-space(string($name)), '[^A-Za-z0-9_]', '_'), '_{2,}', '_')"/>
@@ -104,12 +116,16 @@
                           and f:escape-cpp-keyword(string($s)) eq string($s)"/>
   </xsl:function>
 
+  <!-- one pass: $seen counts the occurrences of each name so far -->
   <xsl:function name="f:unique-names" as="xs:string*">
     <xsl:param name="names" as="xs:string*"/>
-    <xsl:sequence select="for $i in 1 to count($names)
-                          return
-                            let $n := $names[$i],
-                                $k := count($names[position() lt $i][. eq $n])
-                            return if ($k eq 0) then $n else $n || '_' || ($k + 1)"/>
+    <xsl:iterate select="$names">
+      <xsl:param name="seen" as="map(xs:string, xs:integer)" select="map{}"/>
+      <xsl:variable name="k" as="xs:integer" select="($seen(.), 0)[1]"/>
+      <xsl:sequence select="if ($k eq 0) then . else . || '_' || ($k + 1)"/>
+      <xsl:next-iteration>
+        <xsl:with-param name="seen" select="map:put($seen, ., $k + 1)"/>
+      </xsl:next-iteration>
+    </xsl:iterate>
   </xsl:function>
 </xsl:stylesheet>

@@ -83,12 +83,13 @@
   <xsl:key name="fp:part-by-type" match="pim:part" use="@type"/>
   <xsl:key name="fp:deployment-by-deployed" match="pim:deployment" use="tokenize(@deployed)"/>
   <xsl:key name="fp:manifestation-by-element" match="pim:manifestation" use="@element"/>
-  <!-- keys on the temporary working tree ($fp:work) -->
+  <!-- keys on the temporary trees of fp:binding ($work, $instance-tree, $bound-tree) -->
   <xsl:key name="fp:bc" match="pim:bound-component" use="@component"/>
   <xsl:key name="fp:ip-by-interface" match="fp:ip" use="@interface"/>
   <xsl:key name="fp:ip-by-end" match="fp:ip" use="@part || '|' || @port"/>
   <xsl:key name="fp:instance-by-part" match="pim:instance" use="@xmi-id"/>
   <xsl:key name="fp:instance-by-name" match="pim:instance" use="@name"/>
+  <xsl:key name="fp:instance-by-component" match="pim:instance" use="@component"/>
 
   <xsl:variable name="fp:profile-uri" as="xs:string" select="'http://robomda.org/profile/robomda/1'"/>
 
@@ -168,16 +169,17 @@
     <xsl:param name="e" as="element()?"/>
     <xsl:param name="stereo" as="xs:string"/>
     <xsl:param name="tag" as="xs:string"/>
-    <xsl:variable name="root" as="document-node()" select="root($e[1])"/>
     <xsl:variable name="t" as="element()?" select="fp:stereo($e, $stereo)/pim:tag[@name eq $tag][1]"/>
     <xsl:sequence select="if (empty($t)) then ()
-        else if ($t/@ref = ('true', '1')) then string(key('fp:id', $t/@value, $root)/@name)
+        else if ($t/@ref = ('true', '1')) then string(key('fp:id', $t/@value, root($t))/@name)
         else string($t/@value)"/>
   </xsl:function>
 
   <xsl:function name="fp:literal" as="xs:string">
     <xsl:param name="v" as="xs:string"/>
-    <xsl:sequence select="replace(normalize-space($v), '^.*(::|\.)([A-Za-z_][A-Za-z0-9_]*)$', '$2')"/>
+    <xsl:sequence select="if (contains($v, ':') or contains($v, '.'))
+                          then replace(normalize-space($v), '^.*(::|\.)([A-Za-z_][A-Za-z0-9_]*)$', '$2')
+                          else normalize-space($v)"/>
   </xsl:function>
 
   <!-- first tag value found on the elements $es, with its source -->
@@ -198,7 +200,9 @@
   <!-- ================================================= value parsing -->
   <xsl:function name="fp:strip" as="xs:string">
     <xsl:param name="v" as="xs:string"/>
-    <xsl:sequence select="replace(normalize-space($v), '^[&quot;'']|[&quot;'']$', '')"/>
+    <xsl:sequence select="if (contains($v, '&quot;') or contains($v, ''''))
+                          then replace(normalize-space($v), '^[&quot;'']|[&quot;'']$', '')
+                          else normalize-space($v)"/>
   </xsl:function>
 
   <xsl:function name="fp:number" as="xs:double">
@@ -237,7 +241,7 @@
     <xsl:variable name="s" as="xs:string"
         select="upper-case(replace(fp:literal(fp:strip($v)), '[\s\-]', '_'))"/>
     <xsl:variable name="hit" as="xs:string?"
-        select="$allowed[replace(., '_', '') eq replace($s, '_', '')][1]"/>
+        select="$allowed[translate(., '_', '') eq translate($s, '_', '')][1]"/>
     <xsl:sequence select="if (exists($hit)) then $hit
         else fp:fail('BND010', $id, $what || ': ''' || $v || ''' is not one of '
                     || string-join($allowed, ', '))"/>
@@ -285,36 +289,47 @@
     <xsl:variable name="tops" as="element(pim:component)*"
         select="$components[pim:part[key('fp:id', @type, $root)/self::pim:component]]
                            [empty(key('fp:part-by-type', @id, $root))]"/>
-    <xsl:variable name="instances" as="element(pim:instance)*">
-      <xsl:choose>
-        <xsl:when test="exists($tops)">
-          <xsl:for-each select="$tops/pim:part[key('fp:id', @type, $root)/self::pim:component]">
-            <xsl:sequence select="fp:instance(., key('fp:id', @type, $root), ..)"/>
-          </xsl:for-each>
-        </xsl:when>
-        <xsl:otherwise>
-          <xsl:for-each select="$components[not(@abstract = ('true', '1'))][pim:port or pim:realization]">
-            <xsl:sequence select="fp:instance((), ., ())"/>
-          </xsl:for-each>
-        </xsl:otherwise>
-      </xsl:choose>
+    <xsl:variable name="ees" as="element(pim:node)*" select="fp:execution-environments($root)"/>
+    <xsl:variable name="hosts" as="element(pim:node)*" select="fp:hosts($root)"/>
+    <!-- instances and bound components live in documents of their own, so
+         that keys find them (temporary trees, copied to the result) -->
+    <xsl:variable name="instance-tree" as="document-node()">
+      <xsl:document>
+        <xsl:choose>
+          <xsl:when test="exists($tops)">
+            <xsl:for-each select="$tops/pim:part[key('fp:id', @type, $root)/self::pim:component]">
+              <xsl:sequence select="fp:instance(., key('fp:id', @type, $root), .., $ees, $hosts)"/>
+            </xsl:for-each>
+          </xsl:when>
+          <xsl:otherwise>
+            <xsl:for-each select="$components[not(@abstract = ('true', '1'))][pim:port or pim:realization]">
+              <xsl:sequence select="fp:instance((), ., (), $ees, $hosts)"/>
+            </xsl:for-each>
+          </xsl:otherwise>
+        </xsl:choose>
+      </xsl:document>
     </xsl:variable>
+    <xsl:variable name="instances" as="element(pim:instance)*" select="$instance-tree/pim:instance"/>
     <xsl:for-each-group select="$instances" group-by="@name">
       <xsl:if test="count(current-group()) gt 1">
         <xsl:sequence select="f:fail('BND009', current-group()[2]/@xmi-id,
             'two instances are named ''' || current-grouping-key() || '''')"/>
       </xsl:if>
     </xsl:for-each-group>
-    <xsl:variable name="bound" as="element(pim:bound-component)*"
-        select="$components[@id = $instances/@component] ! fp:bound-component(.)"/>
-    <!-- working tree: instances, components and one fp:ip per instance data port -->
+    <xsl:variable name="bound-tree" as="document-node()">
+      <xsl:document>
+        <xsl:sequence select="$components[exists(key('fp:instance-by-component', @id, $instance-tree))]
+                              ! fp:bound-component(.)"/>
+      </xsl:document>
+    </xsl:variable>
+    <xsl:variable name="bound" as="element(pim:bound-component)*" select="$bound-tree/pim:bound-component"/>
+    <!-- working tree: one fp:ip per instance data port -->
     <xsl:variable name="work" as="document-node()">
       <xsl:document>
         <fp:work>
-          <xsl:sequence select="$instances, $bound"/>
           <xsl:for-each select="$instances">
             <xsl:variable name="inst" as="element(pim:instance)" select="."/>
-            <xsl:for-each select="$bound[@component eq $inst/@component]/pim:data-port">
+            <xsl:for-each select="key('fp:bc', $inst/@component, $bound-tree)/pim:data-port">
               <fp:ip instance="{$inst/@name}" part="{$inst/@xmi-id}" port="{@port}" data-port="{@name}"
                      direction="{@direction}" interface="{@interface}"
                      type-key="{(@primitive, @type)[1]}"/>
@@ -331,7 +346,7 @@
     <xsl:variable name="names" as="xs:string*" select="f:unique-names($raw-connections/@name)"/>
     <pim:binding instances-from="{if (exists($tops)) then 'parts' else 'components'}"
                  connections-from="{if (exists($connectors)) then 'connectors' else 'interfaces'}">
-      <xsl:sequence select="fp:hosts($root) ! fp:host(.)"/>
+      <xsl:sequence select="$hosts ! fp:host(., count($hosts))"/>
       <xsl:sequence select="fp:libraries(.)"/>
       <xsl:sequence select="$bound, $instances"/>
       <xsl:for-each select="$raw-connections">
@@ -347,13 +362,13 @@
   <!-- ========================================================== hosts -->
   <xsl:function name="fp:host" as="element(pim:host)">
     <xsl:param name="n" as="element(pim:node)"/>
-    <xsl:variable name="root" as="document-node()" select="root($n)"/>
+    <xsl:param name="host-count" as="xs:integer"/>
     <xsl:variable name="hn" as="xs:string?" select="fp:tag($n, 'Host', 'hostname')[normalize-space(.)]"/>
     <xsl:variable name="ad" as="xs:string?" select="fp:tag($n, 'Host', 'address')[normalize-space(.)]"/>
     <xsl:variable name="hostname" as="xs:string" select="($hn, string($n/@name))[1]"/>
     <pim:host xmi-id="{$n/@id}" name="{$n/@name}" hostname="{$hostname}"
               hostname-source="{if (exists($hn)) then 'stereotype' else 'name'}"
-              address="{if (exists($ad)) then $ad else if (count(fp:hosts($root)) eq 1) then 'localhost' else $hostname}"
+              address="{if (exists($ad)) then $ad else if ($host-count eq 1) then 'localhost' else $hostname}"
               address-source="{if (exists($ad)) then 'stereotype' else 'default'}"/>
   </xsl:function>
 
@@ -386,6 +401,8 @@
     <xsl:param name="part" as="element(pim:part)?"/>
     <xsl:param name="c" as="element(pim:component)"/>
     <xsl:param name="top" as="element(pim:component)?"/>
+    <xsl:param name="ees" as="element(pim:node)*"/>
+    <xsl:param name="hosts" as="element(pim:node)*"/>
     <xsl:variable name="root" as="document-node()" select="root($c)"/>
     <xsl:variable name="r" as="element(pim:class)?" select="fp:realizing-class($c)"/>
     <xsl:variable name="ids" as="xs:string*" select="($part/@id, $c/@id, $top/@id, $r/@id) ! string(.)"/>
@@ -393,7 +410,6 @@
         select="key('fp:manifestation-by-element', $ids, $root)/../@id ! string(.)"/>
     <xsl:variable name="deployments" as="element(pim:deployment)*"
         select="key('fp:deployment-by-deployed', ($ids, $artifact-ids), $root)"/>
-    <xsl:variable name="ees" as="element(pim:node)*" select="fp:execution-environments($root)"/>
     <xsl:variable name="ee" as="element(pim:node)?"
         select="(for $d in $deployments
                  return if ($d/../@kind eq 'execution-environment') then $d/..
@@ -406,9 +422,9 @@
           || ' and the model has ' || count($ees) || ' of them')"/>
     </xsl:if>
     <xsl:variable name="host" as="element(pim:node)?"
-        select="($ee/ancestor::pim:node[. intersect fp:hosts($root)][1],
-                 $deployments/..[. intersect fp:hosts($root)],
-                 if (count(fp:hosts($root)) eq 1) then fp:hosts($root) else ())[1]"/>
+        select="($ee/ancestor::pim:node[. intersect $hosts][1],
+                 $deployments/..[. intersect $hosts],
+                 if (count($hosts) eq 1) then $hosts else ())[1]"/>
     <pim:instance name="{f:cpp-identifier(($part/@name[normalize-space(.)], $c/@name)[1])}"
                   xmi-id="{$inst-id}" component="{$c/@id}">
       <xsl:if test="$top"><xsl:attribute name="composite" select="$top/@id"/></xsl:if>

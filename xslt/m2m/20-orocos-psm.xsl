@@ -72,6 +72,9 @@
   <xsl:key name="fp:instance" match="pim:instance" use="@name"/>
   <xsl:key name="fp:instance-of" match="pim:instance" use="@component"/>
   <xsl:key name="fp:connection-by-instance" match="pim:connection" use="(pim:writer | pim:reader)/@instance"/>
+  <xsl:key name="fp:host" match="pim:host" use="@xmi-id"/>
+  <!-- on the temporary tree of task contexts -->
+  <xsl:key name="fp:task-context" match="o:task-context" use="@xmi-id"/>
 
   <xsl:variable name="fp:types" as="document-node()" select="doc('orocos-types.xml')"/>
   <xsl:variable name="fp:reserved-operations" as="xs:string+" select="(
@@ -115,7 +118,7 @@
         select="if (normalize-space($package-name)) then f:snake-case($package-name) else f:snake-case(@name)"/>
     <xsl:variable name="instances" as="element(pim:instance)*" select="$b/pim:instance[@middleware eq 'OROCOS']"/>
     <xsl:variable name="components" as="element(pim:bound-component)*"
-        select="$b/pim:bound-component[@component = $instances/@component]"/>
+        select="$b/pim:bound-component[fp:orocos-instances(key('fp:instance-of', @component), $b)]"/>
     <xsl:for-each-group select="$components" group-by="f:upper-camel(@name)">
       <xsl:if test="count(current-group()) gt 1">
         <xsl:sequence select="f:fail('ORO004', current-group()[2]/@component, 'components '''
@@ -123,7 +126,14 @@
       </xsl:if>
     </xsl:for-each-group>
     <xsl:variable name="connections" as="element(pim:connection)*"
-        select="$b/pim:connection[pim:writer/@instance = $instances/@name and pim:reader/@instance = $instances/@name]"/>
+        select="$b/pim:connection[fp:kept-connection(., $b)]"/>
+    <!-- each task context is made once: listed here, and looked up (key
+         fp:task-context) by the instances for their property values -->
+    <xsl:variable name="task-contexts" as="document-node()">
+      <xsl:document>
+        <xsl:sequence select="$components ! fp:task-context(., $pkg)"/>
+      </xsl:document>
+    </xsl:variable>
     <o:deployment xmi-id="{@id}" model-name="{@name}" deploy-name="{f:snake-case(@name)}"
                   package="{$pkg}" namespace="{$pkg}" source="{@source}">
       <xsl:for-each select="$b/pim:library">
@@ -132,7 +142,7 @@
                    cmake-var="{upper-case($pkg) || '_' || upper-case(f:snake-case(@name)) || '_DIR'}"
                    build-dir="{f:snake-case(@name) || '-build'}"/>
       </xsl:for-each>
-      <xsl:sequence select="$components ! fp:task-context(., $pkg)"/>
+      <xsl:sequence select="$task-contexts/o:task-context"/>
       <xsl:for-each select="$b/pim:host">
         <o:host xmi-id="{@xmi-id}" name="{@name}" hostname="{@hostname}" address="{@address}"/>
       </xsl:for-each>
@@ -142,19 +152,37 @@
                       size="{pim:policy/@size}" lock-policy="{pim:policy/@lock-policy}"
                       lock-policy-code="{index-of(('UNSYNC', 'LOCKED', 'LOCK_FREE'), pim:policy/@lock-policy) - 1}"
                       init="{pim:policy/@init}" pull="{pim:policy/@pull}" topic="{pim:policy/@topic}">
-          <xsl:for-each select="pim:writer[@instance = $instances/@name]">
+          <xsl:for-each select="pim:writer[fp:orocos-instances(key('fp:instance', @instance), $b)]">
             <o:writer instance="{@instance}" port="{@data-port}" xmi-id="{@port}"/>
           </xsl:for-each>
-          <xsl:for-each select="pim:reader[@instance = $instances/@name]">
+          <xsl:for-each select="pim:reader[fp:orocos-instances(key('fp:instance', @instance), $b)]">
             <o:reader instance="{@instance}" port="{@data-port}" xmi-id="{@port}"/>
           </xsl:for-each>
         </o:connection>
       </xsl:for-each>
       <xsl:for-each select="$instances">
-        <xsl:sequence select="fp:instance(., $pkg, $connections)"/>
+        <xsl:sequence select="fp:instance(., $pkg, $b, $task-contexts)"/>
       </xsl:for-each>
     </o:deployment>
   </xsl:template>
+
+  <!-- true when one of $is (instances found by key) is an OROCOS instance of
+       the binding $b -->
+  <xsl:function name="fp:orocos-instances" as="xs:boolean">
+    <xsl:param name="is" as="element(pim:instance)*"/>
+    <xsl:param name="b" as="element(pim:binding)"/>
+    <xsl:sequence select="exists($is[@middleware eq 'OROCOS'][.. is $b])"/>
+  </xsl:function>
+
+  <!-- a connection of the binding $b that the PSM keeps: one of its writers
+       and one of its readers are OROCOS instances -->
+  <xsl:function name="fp:kept-connection" as="xs:boolean">
+    <xsl:param name="k" as="element(pim:connection)"/>
+    <xsl:param name="b" as="element(pim:binding)"/>
+    <xsl:sequence select="$k/.. is $b
+                          and fp:orocos-instances(key('fp:instance', $k/pim:writer/@instance, root($b)), $b)
+                          and fp:orocos-instances(key('fp:instance', $k/pim:reader/@instance, root($b)), $b)"/>
+  </xsl:function>
 
   <!-- ============================================================ types -->
   <xsl:function name="fp:type" as="element(ty:type)?">
@@ -287,7 +315,9 @@
 
   <xsl:function name="fp:cpp-string" as="xs:string">
     <xsl:param name="v" as="xs:string"/>
-    <xsl:sequence select="'&quot;' || replace(replace(replace($v, '\\', '\\\\'), '&quot;', '\\&quot;'), '&#10;', '\\n') || '&quot;'"/>
+    <xsl:sequence select="'&quot;' || (if (contains($v, '\') or contains($v, '&quot;') or contains($v, '&#10;'))
+                                       then replace(replace(replace($v, '\\', '\\\\'), '&quot;', '\\&quot;'), '&#10;', '\\n')
+                                       else $v) || '&quot;'"/>
   </xsl:function>
 
   <!-- (xml value, script literal, C++ literal) of a default value -->
@@ -342,17 +372,18 @@
   <xsl:function name="fp:instance" as="element(o:instance)">
     <xsl:param name="i" as="element(pim:instance)"/>
     <xsl:param name="pkg" as="xs:string"/>
-    <xsl:param name="connections" as="element(pim:connection)*"/>
+    <xsl:param name="b" as="element(pim:binding)"/>
+    <xsl:param name="task-contexts" as="document-node()"/>
     <xsl:variable name="c" as="element(pim:component)" select="key('fp:id', $i/@component, root($i))"/>
     <xsl:variable name="class" as="xs:string" select="f:upper-camel($c/@name)"/>
     <xsl:variable name="tc" as="element(o:task-context)"
-        select="fp:task-context(key('fp:bc', $i/@component, root($i)), $pkg)"/>
+        select="key('fp:task-context', $i/@component, $task-contexts)"/>
     <xsl:variable name="a" as="element(pim:activity)" select="$i/pim:activity"/>
     <xsl:variable name="mine" as="element(pim:connection)*"
-        select="$connections[(pim:writer | pim:reader)/@instance = $i/@name]"/>
+        select="key('fp:connection-by-instance', $i/@name, root($i))[fp:kept-connection(., $b)]"/>
     <o:instance xmi-id="{$i/@xmi-id}" name="{$i/@name}" task-context="{$class}" type-name="{$pkg}::{$class}">
       <xsl:for-each select="key('fp:id', $i/@host, root($i))">
-        <xsl:attribute name="host" select="(root($i)//pim:host[@xmi-id eq current()/@id]/@hostname, @name)[1]"/>
+        <xsl:attribute name="host" select="(key('fp:host', @id, root($i))/@hostname, @name)[1]"/>
       </xsl:for-each>
       <o:activity type="Activity" periodic="{number($a/@period) ne 0}" period="{$a/@period}"
                   priority="{$a/@priority}" scheduler="ORO_SCHED_{$a/@scheduler}" cpu-affinity="{$a/@cpu-affinity}"/>

@@ -39,10 +39,13 @@
     <xsl:sequence select="if (matches($p, '[.eE]')) then $p else $p || '.0'"/>
   </xsl:function>
 
+  <!-- the one-bit masks 2^0 ... 2^63, computed once -->
+  <xsl:variable name="fp:one-bit-masks" as="xs:integer+" select="(0 to 63) ! fp:pow2(.)"/>
+
   <!-- the CPU number of a one-bit mask, else () -->
   <xsl:function name="fp:cpu-number" as="xs:integer?">
     <xsl:param name="mask" as="xs:integer"/>
-    <xsl:sequence select="(0 to 63)[fp:pow2(.) eq $mask][1]"/>
+    <xsl:sequence select="if ($mask le 0) then () else index-of($fp:one-bit-masks, $mask)[1] - 1"/>
   </xsl:function>
   <xsl:function name="fp:pow2" as="xs:integer">
     <xsl:param name="n" as="xs:integer"/>

@@ -33,12 +33,16 @@
 
   <xsl:function name="fp:cpp-string" as="xs:string">
     <xsl:param name="s" as="xs:string?"/>
-    <xsl:sequence select="'&quot;' || replace(replace(replace(string($s), '\\', '\\\\'), '&quot;', '\\&quot;'), '&#10;', '\\n') || '&quot;'"/>
+    <xsl:sequence select="'&quot;' || (if (contains($s, '\') or contains($s, '&quot;') or contains($s, '&#10;'))
+                                       then replace(replace(replace(string($s), '\\', '\\\\'), '&quot;', '\\&quot;'), '&#10;', '\\n')
+                                       else string($s)) || '&quot;'"/>
   </xsl:function>
 
   <xsl:function name="fp:xml-text" as="xs:string">
     <xsl:param name="s" as="xs:string?"/>
-    <xsl:sequence select="replace(replace(replace(replace(string($s), '&amp;', '&amp;amp;'), '&lt;', '&amp;lt;'), '&gt;', '&amp;gt;'), '&quot;', '&amp;quot;')"/>
+    <xsl:sequence select="if (contains($s, '&amp;') or contains($s, '&lt;') or contains($s, '&gt;') or contains($s, '&quot;'))
+                          then replace(replace(replace(replace(string($s), '&amp;', '&amp;amp;'), '&lt;', '&amp;lt;'), '&gt;', '&amp;gt;'), '&quot;', '&amp;quot;')
+                          else string($s)"/>
   </xsl:function>
 
   <!-- the first lines of every file: what made it and whether to edit it -->
