@@ -103,3 +103,24 @@ def test_a_failed_run_leaves_an_existing_output_untouched(tmp_path: Path,
     code, _ = _generate(capsys, model, out)
     assert code == 1
     assert {p: p.read_bytes() for p in out.rglob("*") if p.is_file()} == before
+
+
+def test_a_model_deployed_elsewhere_is_generated_with_a_located_warning(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    model = _mutated(tmp_path, "meka", 'name="OROCOS"', 'name="ROS"')
+    code, err = _generate(capsys, model, tmp_path / "out")
+    line, column = _line_of(model, 'name="ROS"')
+    assert code == 0 and len(err) == 1
+    assert err[0].startswith(f"{model}:{line}:{column}: warning: [ORO006] ") and "generating all 6" in err[0]
+    assert len(list((tmp_path / "out" / "src").glob("*.cpp"))) == 7
+
+
+def test_a_model_without_components_is_refused(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    text = (CASES / "meka" / "model.xmi").read_text(encoding="utf-8")
+    model = tmp_path / "empty.xmi"
+    # keep the classes and the platform, turn every component into a plain class without ports
+    model.write_text(text.replace('xmi:type="uml:Component"', 'xmi:type="uml:Class"')
+                     .replace('xmi:type="uml:Port"', 'xmi:type="uml:Property"'), encoding="utf-8")
+    code, err = _generate(capsys, model, tmp_path / "out")
+    assert code == 1 and len(err) == 1 and "[ORO005] nothing to generate" in err[0]
+    assert not (tmp_path / "out").exists()

@@ -30,8 +30,9 @@
       Period 0 = non-periodic, else periodic); PeriodicActivity is not used
       because it shares one thread among components with equal period and
       priority. Scheduler always explicit.
-  Deployment: instances with middleware OROCOS; connections whose ends are
-  all OROCOS instances (ends on other middlewares are dropped, a connection
+  Deployment: instances with middleware OROCOS (all instances when none is
+  on OROCOS, see ORO006); connections whose ends are all such instances
+  (ends on other middlewares are dropped, a connection
   left without writer or reader is dropped: a name used by one port would
   need a transport). Peers: a reader instance gets the writer instances of a
   connection whose interface declares operations (it may call them); data
@@ -43,6 +44,12 @@
     ORO002  a property default value is not valid for its type
     ORO003  the input has no pim:binding (run xslt/m2m/10-bind.xsl first)
     ORO004  two component types map to the same C++ class name
+    ORO005  nothing to generate: the model has no component instance
+  Warnings (f:warn):
+    ORO006  no instance is deployed on OROCOS: all instances are generated
+            for Orocos anyway (the same model on another middleware)
+    ORO007  an instance deployed on another middleware is left out (the model
+            deploys some components on OROCOS and others elsewhere)
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -71,6 +78,7 @@
   <xsl:key name="fp:bc" match="pim:bound-component" use="@component"/>
   <xsl:key name="fp:instance" match="pim:instance" use="@name"/>
   <xsl:key name="fp:instance-of" match="pim:instance" use="@component"/>
+  <xsl:key name="fp:instance-by-middleware" match="pim:instance" use="@middleware"/>
   <xsl:key name="fp:connection-by-instance" match="pim:connection" use="(pim:writer | pim:reader)/@instance"/>
   <xsl:key name="fp:host" match="pim:host" use="@xmi-id"/>
   <!-- on the temporary tree of task contexts -->
@@ -116,7 +124,21 @@
     <xsl:variable name="b" as="element(pim:binding)" select="pim:binding"/>
     <xsl:variable name="pkg" as="xs:string"
         select="if (normalize-space($package-name)) then f:snake-case($package-name) else f:snake-case(@name)"/>
-    <xsl:variable name="instances" as="element(pim:instance)*" select="$b/pim:instance[@middleware eq 'OROCOS']"/>
+    <xsl:variable name="instances" as="element(pim:instance)*" select="$b/pim:instance[fp:on-target(.)]"/>
+    <xsl:if test="empty($instances)">
+      <xsl:sequence select="f:fail('ORO005', @id, 'nothing to generate: model ''' || @name
+          || ''' has no component instance (a component with ports or a realizing class)')"/>
+    </xsl:if>
+    <xsl:if test="empty($b/pim:instance[@middleware eq 'OROCOS'])">
+      <xsl:sequence select="f:warn('ORO006', ($instances/@execution-environment)[1],
+          'no component is deployed on OROCOS (the platform says '
+          || string-join(distinct-values($instances/@middleware), ', ')
+          || '): generating all ' || count($instances) || ' instances for Orocos')"/>
+    </xsl:if>
+    <xsl:for-each select="$b/pim:instance except $instances">
+      <xsl:sequence select="f:warn('ORO007', string(@xmi-id), 'instance ''' || @name || ''' is deployed on '
+          || @middleware || ', not OROCOS: it is not part of the Orocos package')"/>
+    </xsl:for-each>
     <xsl:variable name="components" as="element(pim:bound-component)*"
         select="$b/pim:bound-component[fp:orocos-instances(key('fp:instance-of', @component), $b)]"/>
     <xsl:for-each-group select="$components" group-by="f:upper-camel(@name)">
@@ -166,12 +188,21 @@
     </o:deployment>
   </xsl:template>
 
+  <!-- true when instance $i goes into the Orocos package: it is deployed on
+       OROCOS, or no instance of the model is (the target then takes them all:
+       the same model runs on another middleware, ORO006 says so) -->
+  <xsl:function name="fp:on-target" as="xs:boolean">
+    <xsl:param name="i" as="element(pim:instance)"/>
+    <xsl:sequence select="$i/@middleware eq 'OROCOS'
+                          or empty(key('fp:instance-by-middleware', 'OROCOS', root($i)))"/>
+  </xsl:function>
+
   <!-- true when one of $is (instances found by key) is an OROCOS instance of
        the binding $b -->
   <xsl:function name="fp:orocos-instances" as="xs:boolean">
     <xsl:param name="is" as="element(pim:instance)*"/>
     <xsl:param name="b" as="element(pim:binding)"/>
-    <xsl:sequence select="exists($is[@middleware eq 'OROCOS'][.. is $b])"/>
+    <xsl:sequence select="exists($is[fp:on-target(.)][.. is $b])"/>
   </xsl:function>
 
   <!-- a connection of the binding $b that the PSM keeps: one of its writers
