@@ -10,6 +10,13 @@ chain end to end (XMI to files on disk) after one warm-up run on a tiny model
 XSLT and in XSD validation per step, peak resident memory, and a SaxonC
 identity transform of the same XMI as a floor. Every figure comes from the
 same run; compare ratios, not absolute seconds, across machines.
+
+Then the batch: a folder of seed-sized models (copies of the fixture cases)
+generated with -j1 and -j2, against what a user without robomda would do:
+one Saxon-HE Java command line per model and step (measured on a few models,
+reported per model).
+
+    python bench/run.py --quick          # the CI smoke run: small sizes
 """
 
 from __future__ import annotations
@@ -17,6 +24,7 @@ from __future__ import annotations
 import argparse
 import json
 import resource
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -66,9 +74,61 @@ def _one(size: int, workdir: Path) -> dict[str, object]:
     }
 
 
+ROOT = HERE.parent
+SAXON_JAR = Path("/usr/share/java/Saxon-HE.jar")
+
+
+def _batch(count: int, java_models: int, workdir: Path) -> list[str]:
+    """Batch throughput: robomda -j1 / -j2 against per-file Saxon-HE Java command lines."""
+    from robomda.batch import run_batch
+    from robomda import pipeline
+    from robomda.resources import pipeline_path
+
+    cases = sorted((ROOT / "fixtures" / "cases").glob("*/model*.xmi"))
+    src = workdir / "batch"
+    for i in range(count):
+        model = cases[i % len(cases)]
+        dest = src / f"m{i:04d}" / model.name
+        dest.parent.mkdir(parents=True)
+        shutil.copy(model, dest)
+    lines = [f"batch of {count} seed-sized models (copies of {len(cases)} fixture models):"]
+    rate = {}
+    for jobs in (1, 2):
+        report = run_batch(src, workdir / f"batch-out-j{jobs}", jobs=jobs)
+        assert report.count("ok") == count, [r.diagnostics for r in report.results if r.status == "failed"][:3]
+        rate[jobs] = report.seconds / count
+        lines.append(f"  robomda -j{jobs}: {report.seconds:.1f} s, {rate[jobs] * 1000:.0f} ms per model")
+    java = shutil.which("java")
+    if java and SAXON_JAR.is_file():
+        steps = pipeline.load(pipeline_path("orocos")).steps
+        started = time.perf_counter()
+        for i in range(java_models):
+            model = next((src / f"m{i:04d}").iterdir())
+            current = model
+            for step in steps:
+                out = workdir / "java" / f"m{i}" / f"{step.name}.xml"
+                out.parent.mkdir(parents=True, exist_ok=True)
+                params = [f"{p.name}={p.value or {'model-file-name': model.name}.get(p.source or '', '')}"
+                          for p in step.params if (p.value or p.source == "model-file-name")]
+                subprocess.run([java, "-cp", str(SAXON_JAR), "net.sf.saxon.Transform", f"-s:{current}",
+                                f"-xsl:{step.stylesheet}", f"-o:{out}", *params], check=True, capture_output=True)
+                current = out
+        per_model = (time.perf_counter() - started) / java_models
+        lines.append(f"  Saxon-HE Java, one command line per model and step ({java_models} models): "
+                     f"{per_model * 1000:.0f} ms per model")
+        lines.append(f"  robomda -j2 is {per_model / rate[2]:.0f}x faster than per-file command lines, "
+                     f"-j2/-j1 speed-up {rate[1] / rate[2]:.2f}")
+    else:
+        lines.append("  (Saxon-HE Java not installed: per-file baseline skipped)")
+    return lines
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--sizes", type=int, nargs="+", default=[100, 1000, 10000])
+    parser.add_argument("--batch", type=int, default=200, help="models in the batch run (0: none)")
+    parser.add_argument("--java-models", type=int, default=5, help="models run through per-file Saxon-HE Java")
+    parser.add_argument("--quick", action="store_true", help="CI smoke run: sizes 100 and 1000, batch of 20")
     parser.add_argument("--one", type=int, help=argparse.SUPPRESS)
     parser.add_argument("--workdir", type=Path, help=argparse.SUPPRESS)
     args = parser.parse_args()
@@ -76,8 +136,13 @@ def main() -> int:
         print(json.dumps(_one(args.one, args.workdir)))
         return 0
 
+    if args.quick:
+        args.sizes, args.batch, args.java_models = [100, 1000], 20, 2
     rows = []
+    batch_lines: list[str] = []
     with tempfile.TemporaryDirectory(prefix="robomda-bench-") as tmp:
+        if args.batch:
+            batch_lines = _batch(args.batch, args.java_models, Path(tmp))
         for size in args.sizes:
             work = Path(tmp) / str(size)
             work.mkdir()
@@ -97,6 +162,9 @@ def main() -> int:
     print("\nper step (XSLT s / XSD s):")
     for r in rows:
         print(f"  {r['size']:>6}: " + ", ".join(f"{n} {t:.2f}/{v:.2f}" for n, t, v in r["steps"]))
+    print()
+    for line in batch_lines:
+        print(line)
     by_size = {r["size"]: r["wall_s"] for r in rows}
     sizes = sorted(by_size)
     for small, large in zip(sizes, sizes[1:]):
