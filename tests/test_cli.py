@@ -47,3 +47,18 @@ def test_unknown_target_is_refused_by_the_parser(capsys: pytest.CaptureFixture[s
         main(["generate", "m.xmi", "-o", str(tmp_path), "--target", "player"])
     assert done.value.code == 2
     assert "invalid choice" in capsys.readouterr().err
+
+
+def test_import_writes_the_pim_and_never_replaces_a_user_file(capsys: pytest.CaptureFixture[str],
+                                                               tmp_path: Path) -> None:
+    model = Path(__file__).resolve().parent.parent / "fixtures" / "cases" / "meka" / "model.xmi"
+    assert main(["import", str(model), "-o", str(tmp_path)]) == 0
+    pim = tmp_path / "model.pim.xml"
+    assert "urn:robomda:pim:1" in pim.read_text() and "<pim:binding" in pim.read_text()
+    assert main(["import", str(model), "-o", str(pim), "--no-bind"]) == 0  # a robomda model: replaced
+    assert "<pim:binding" not in pim.read_text()
+    mine = tmp_path / "notes.xml"
+    mine.write_text("<notes>mine</notes>")
+    capsys.readouterr()
+    assert main(["import", str(model), "-o", str(mine)]) == 2
+    assert "[OUT001]" in capsys.readouterr().err and mine.read_text() == "<notes>mine</notes>"

@@ -6,10 +6,12 @@ import argparse
 import sys
 from pathlib import Path
 
+from lxml import etree
+
 from robomda import __version__
 from robomda.api import generate, import_model, targets
 from robomda.batch import ProgressBar, run_batch
-from robomda.diagnostics import EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, RobomdaError
+from robomda.diagnostics import EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, Diagnostic, RobomdaError
 from robomda.output import atomic_write
 
 __all__ = ["main"]
@@ -63,6 +65,19 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _write_model_file(dest: Path, text: str) -> None:
+    """Write a stage model, replacing only a file that is itself a robomda model."""
+    if dest.exists():
+        try:
+            namespace = etree.QName(etree.parse(str(dest)).getroot()).namespace or ""
+        except (etree.XMLSyntaxError, OSError):
+            namespace = ""
+        if not namespace.startswith("urn:robomda:"):
+            raise RobomdaError([Diagnostic("error", "OUT001", f"refusing to overwrite {dest}: it is not a model "
+                                           "robomda wrote; choose another output", file=str(dest))], EXIT_INPUT)
+    atomic_write(dest, text.encode("utf-8"))
+
+
 def _pim_destination(model: Path, out: Path) -> Path:
     if out.suffix.lower() == ".xml" and not out.is_dir():
         return out
@@ -105,7 +120,7 @@ def main(argv: list[str] | None = None) -> int:
                 print(warning.format(), file=sys.stderr)
             if args.save_stages:
                 for name, text in done.stages.items():
-                    atomic_write(args.save_stages / f"{name}.xml", text.encode("utf-8"))
+                    _write_model_file(args.save_stages / f"{name}.xml", text)
             report = done.report
             if report is not None:
                 print(f"robomda: {args.target} package in {args.output}: {len(report.written)} written, "
@@ -116,7 +131,7 @@ def main(argv: list[str] | None = None) -> int:
         else:
             text = import_model(args.model, bind=not args.no_bind)
             dest = _pim_destination(args.model, args.output)
-            atomic_write(dest, text.encode("utf-8"))
+            _write_model_file(dest, text)
             print(f"robomda: PIM written to {dest}")
     except RobomdaError as exc:
         for diag in exc.diagnostics:
