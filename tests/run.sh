@@ -18,6 +18,17 @@ command -v java >/dev/null 2>&1 || need+=(default-jre-headless)
 command -v node >/dev/null 2>&1 || need+=(nodejs)
 command -v npm >/dev/null 2>&1 || need+=(npm)
 python3 -c 'import venv, ensurepip' >/dev/null 2>&1 || need+=(python3-venv)
+# ROS 1 (Debian's own packages) for tests/test_ros.py: catkin build, catkin_lint,
+# roslaunch loader, roscore / rostopic / rosnode / rosservice, std_msgs, std_srvs.
+[ -x /usr/bin/catkin_make ] || need+=(catkin)
+[ -x /usr/bin/catkin_lint ] || need+=(catkin-lint)
+[ -x /usr/bin/roscore ] || need+=(ros-core-dev)
+[ -x /usr/bin/roslaunch ] || need+=(python3-roslaunch)
+[ -x /usr/bin/rostopic ] || need+=(python3-rostopic)
+[ -x /usr/bin/rosnode ] || need+=(python3-rosnode)
+[ -x /usr/bin/rosservice ] || need+=(python3-rosservice)
+[ -f /usr/include/std_msgs/Float64.h ] || need+=(ros-core-dev)
+[ -f /usr/include/std_srvs/Empty.h ] || need+=(libstd-srvs-dev)
 if [ "${#need[@]}" -gt 0 ]; then
   if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
     echo "tests/run.sh: installing Debian packages: ${need[*]}"

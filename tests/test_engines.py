@@ -22,18 +22,40 @@ from pathlib import Path
 import pytest
 from saxonche import PySaxonProcessor
 
+from robomda import pipeline
 from robomda.api import generate
 
 ROOT = Path(__file__).resolve().parent.parent
 CASES = sorted(p.parent for p in (ROOT / "fixtures" / "cases").glob("*/model.xmi"))
 SAXON_JAR = Path(os.environ.get("ROBOMDA_SAXON_JAR", "/usr/share/java/Saxon-HE.jar"))
 XSLT3 = Path(os.environ.get("ROBOMDA_XSLT3", ROOT / "tests" / "engines" / "node_modules" / "xslt3" / "xslt3.js"))
-STAGES = {  # step -> (stylesheet, golden input, golden output, params)
-    "import": ("xslt/import/import.xsl", "model.xmi", "expected/import.xml", {"source-name": "model.xmi"}),
-    "bind": ("xslt/m2m/10-bind.xsl", "expected/import.xml", "expected/bind.xml", {}),
-    "psm": ("xslt/m2m/20-orocos-psm.xsl", "expected/bind.xml", "expected/orocos/psm.xml", {}),
-    "text": ("xslt/m2t/orocos/main.xsl", "expected/orocos/psm.xml", None, {"model-dir-from-output": ".."}),
-}
+CONTEXT = {"model-file-name": "model.xmi", "model-dir-from-output": "..", "package-name": ""}
+
+
+def _stages() -> dict[str, tuple[Path, str, str | None, dict[str, str], str]]:
+    """Every step of every target's manifest, with its golden input and output.
+
+    Goldens: import -> expected/import.xml, bind -> expected/bind.xml,
+    psm -> expected/<target>/psm.xml; the text step's file set is compared
+    with SaxonC's (its files are the goldens).
+    """
+    stages: dict[str, tuple[Path, str, str | None, dict[str, str], str]] = {}
+    for manifest in sorted((ROOT / "pipelines").glob("*.xml")):
+        target = manifest.stem
+        if target == "import":
+            continue
+        previous = "model.xmi"
+        for step in pipeline.load(manifest).steps:
+            shared = step.name in ("import", "bind")
+            golden = (f"expected/{step.name}.xml" if shared
+                      else f"expected/{target}/{step.name}.xml" if step.name != "text" else None)
+            params = {p.name: p.value if p.value is not None else CONTEXT[p.source or ""] for p in step.params}
+            stages[step.name if shared else f"{target}-{step.name}"] = (step.stylesheet, previous, golden, params, target)
+            previous = golden or previous
+    return stages
+
+
+STAGES = _stages()
 
 
 class Cli:
@@ -50,7 +72,7 @@ class Cli:
         if not self.compile_first:
             return xsl
         if xsl not in self._compiled:
-            sef = workdir / (xsl.stem + ".sef.json")
+            sef = workdir / (xsl.relative_to(ROOT).as_posix().replace("/", "_") + ".sef.json")
             subprocess.run(self.argv + [f"-xsl:{xsl}", f"-export:{sef}", "-nogo"], check=True,
                            capture_output=True, text=True, timeout=300)
             self._compiled[xsl] = sef
@@ -94,13 +116,13 @@ def workdir(tmp_path_factory: pytest.TempPathFactory) -> Path:
 @pytest.mark.parametrize("case", CASES, ids=[c.name for c in CASES])
 @pytest.mark.parametrize("step", list(STAGES))
 def test_each_stage_writes_the_same_bytes(engine: Cli, case: Path, step: str, workdir: Path) -> None:
-    xsl, source, golden, params = STAGES[step]
+    xsl, source, golden, params, target = STAGES[step]
     out = workdir / f"{engine.name}-{case.name}-{step}.xml"
-    engine.run(ROOT / xsl, case / source, out, params, workdir)
+    engine.run(xsl, case / source, out, params, workdir)
     if golden is not None:
         expected = (case / golden).read_bytes()
     else:  # the file set is not a golden itself: compare with SaxonC-HE's, through the driver
-        expected = generate(case / "model.xmi", case / "out", "orocos", write=False).stages["text"].encode("utf-8")
+        expected = generate(case / "model.xmi", case / "out", target, write=False).stages["text"].encode("utf-8")
     assert out.read_bytes() == expected
 
 

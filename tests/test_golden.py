@@ -19,7 +19,7 @@ from robomda.api import generate
 
 ROOT = Path(__file__).resolve().parent.parent
 CASES = sorted(p.parent for p in (ROOT / "fixtures" / "cases").glob("*/model.xmi"))
-TARGETS = ["orocos"]
+TARGETS = ["orocos", "ros1", "ros2"]
 FS = "{urn:robomda:fileset:1}"
 
 

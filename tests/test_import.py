@@ -3,8 +3,8 @@
 Runs the stylesheet with saxonche directly (no driver), validates every PIM
 against schemas/pim/1/pim.xsd and asserts content:
 
-- every real-tool sample in /work/shared/xmi-samples (explicit table of
-  expected outcomes and key content; skipped when /work/shared is absent);
+- every real-tool sample in ../shared/xmi-samples (explicit table of
+  expected outcomes and key content; skipped when ../shared is absent);
 - hand-made inputs under tests/data/import/: one per error code (code and
   xmi:id asserted) and small models for the dialect rules;
 - the fixtures fixtures/cases/<case>/model.xmi (Papyrus dialect) and
@@ -13,6 +13,7 @@ against schemas/pim/1/pim.xsd and asserts content:
 """
 from __future__ import annotations
 
+import os
 import re
 from pathlib import Path
 
@@ -25,7 +26,8 @@ ROOT = Path(__file__).resolve().parents[1]
 STYLESHEET = ROOT / "xslt" / "import" / "import.xsl"
 SCHEMA = ROOT / "schemas" / "pim" / "1" / "pim.xsd"
 DATA = ROOT / "tests" / "data" / "import"
-SAMPLES = Path("/work/shared/xmi-samples")
+# ../shared beside the checkout (as CI has it); ROBOMDA_SHARED overrides
+SAMPLES = Path(os.environ.get("ROBOMDA_SHARED", Path(__file__).resolve().parents[2] / "shared")) / "xmi-samples"
 FIXTURES = ROOT / "fixtures" / "cases"
 PIM = "urn:robomda:pim:1"
 NS = {"p": PIM}

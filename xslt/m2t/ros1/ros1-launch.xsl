@@ -1,0 +1,68 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/m2t/ros1/ros1-launch.xsl - roslaunch XML and parameter YAML of the
+  ROS 1 package (seed 002 section IV-D).
+
+  Reads:   r:package of urn:robomda:psm-ros:1 (ros-version 1).
+  Writes:  strings (file contents), wrapped into fs:file by main.xsl.
+  Params:  none.  Errors: none.
+
+  launch/<model>_<host>.launch  one per host (component set): a <machine>
+                                (name = host, address) and one <node> per
+                                instance on it, with machine=, its private
+                                parameters (<rosparam> of config/<instance>.yaml)
+                                and a <remap> per connected port
+  launch/<model>.launch         includes every host file
+  config/<instance>.yaml        the instance's private parameters: update_period
+                                and the component's parameters (defaults)
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:r="urn:robomda:psm-ros:1"
+    xmlns:fp="urn:robomda:xslt:function:private"
+    exclude-result-prefixes="#all">
+
+  <xsl:function name="fp:ros1-host-launch" as="xs:string">
+    <xsl:param name="p" as="element(r:package)"/>
+    <xsl:param name="h" as="element(r:host)"/>
+    <xsl:sequence select="fp:lines((
+        '&lt;?xml version=&quot;1.0&quot;?&gt;',
+        '&lt;!--',
+        fp:indent(2, fp:banner('', $fp:launch-xsl, 'host ''' || fp:xml-text($h/@name) || ''' of model ''' || fp:xml-text($p/@model-name) || '''', false())),
+        '  Component set of this host (seed 002): roslaunch starts the nodes in no',
+        '  guaranteed order. For a remote machine add env-loader=&quot;...&quot; to &lt;machine&gt;.',
+        '--&gt;',
+        '&lt;launch&gt;',
+        '  &lt;machine name=&quot;' || fp:xml-text($h/@machine) || '&quot; address=&quot;' || fp:xml-text($h/@address) || '&quot;/&gt;',
+        for $i in $p/r:instance[@host eq $h/@name] return (
+          '',
+          '  &lt;node pkg=&quot;' || $p/@name || '&quot; type=&quot;' || $i/@executable || '&quot; name=&quot;' || $i/@name
+              || '&quot; machine=&quot;' || fp:xml-text($h/@machine) || '&quot; output=&quot;screen&quot;&gt;',
+          '    &lt;rosparam command=&quot;load&quot; file=&quot;$(find ' || $p/@name || ')/config/' || $i/@name || '.yaml&quot;/&gt;',
+          $i/r:remap ! ('    &lt;remap from=&quot;' || @from || '&quot; to=&quot;' || @to || '&quot;/&gt;'),
+          '  &lt;/node&gt;'),
+        '&lt;/launch&gt;'))"/>
+  </xsl:function>
+
+  <xsl:function name="fp:ros1-top-launch" as="xs:string">
+    <xsl:param name="p" as="element(r:package)"/>
+    <xsl:sequence select="fp:lines((
+        '&lt;?xml version=&quot;1.0&quot;?&gt;',
+        '&lt;!--',
+        fp:indent(2, fp:banner('', $fp:launch-xsl, 'model ''' || fp:xml-text($p/@model-name) || '''', false())),
+        '  The whole deployment: one included launch file per host.',
+        '--&gt;',
+        '&lt;launch&gt;',
+        $p/r:host ! ('  &lt;include file=&quot;$(find ' || $p/@name || ')/launch/' || $p/@deploy-name || '_' || @launch || '.launch&quot;/&gt;'),
+        '&lt;/launch&gt;'))"/>
+  </xsl:function>
+
+  <xsl:function name="fp:params-yaml" as="xs:string">
+    <xsl:param name="i" as="element(r:instance)"/>
+    <xsl:param name="stylesheet" as="xs:string"/>
+    <xsl:sequence select="fp:lines((
+        fp:banner('# ', $stylesheet, 'instance ''' || $i/@name || ''' of model ''' || $i/../@model-name || '''', false()),
+        $i/r:parameter-value ! (@name || ': ' || @yaml)))"/>
+  </xsl:function>
+</xsl:stylesheet>

@@ -1,0 +1,72 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/m2t/ros2/main.xsl - ROS PSM (ros-version 2) -> file set (a catkin package).
+
+  Reads:   urn:robomda:psm-ros:1 (schemas/psm-ros/1/psm-ros.xsd), from
+           xslt/m2m/30-ros-psm.xsl with ros-version=1.
+  Writes:  urn:robomda:fileset:1 (schemas/fileset/1/fileset.xsd), target "ros2":
+             include/<pkg>/<Class>.hpp, src/<Class>.cpp, src/<exe>.cpp  per node
+             msg/<Type>.msg          per generated message
+             CMakeLists.txt, package.xml
+             launch/<model>.launch.xml, launch/<model>_<host>.launch.xml
+             config/params.yaml
+  Params:  model-dir-from-output (xslt/m2t/ros-common/ros-text.xsl).
+  Errors:  none (the PSM is complete and valid).
+  Modules: ../ros-common/ros-text.xsl, ros2-cpp.xsl, ros2-build.xsl, ros2-launch.xsl.
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:r="urn:robomda:psm-ros:1"
+    xmlns:fs="urn:robomda:fileset:1"
+    xmlns:f="urn:robomda:xslt:function"
+    xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:m="urn:robomda:xslt:mode"
+    exclude-result-prefixes="#all">
+
+  <xsl:include href="../../common/indent.xsl"/>
+  <xsl:include href="../../common/naming.xsl"/>
+  <xsl:include href="../ros-common/ros-text.xsl"/>
+  <xsl:include href="ros2-cpp.xsl"/>
+  <xsl:include href="ros2-build.xsl"/>
+  <xsl:include href="ros2-launch.xsl"/>
+
+  <xsl:output method="xml" indent="no" encoding="UTF-8"/>
+  <xsl:mode name="m:emit-files" on-no-match="fail"/>
+
+  <xsl:variable name="fp:cpp-xsl" as="xs:string" select="'m2t/ros2/ros2-cpp.xsl'"/>
+  <xsl:variable name="fp:build-xsl" as="xs:string" select="'m2t/ros2/ros2-build.xsl'"/>
+  <xsl:variable name="fp:launch-xsl" as="xs:string" select="'m2t/ros2/ros2-launch.xsl'"/>
+
+  <xsl:template match="/" as="document-node()">
+    <xsl:variable name="result" as="document-node()">
+      <xsl:document>
+        <xsl:apply-templates select="r:package" mode="m:emit-files"/>
+      </xsl:document>
+    </xsl:variable>
+    <xsl:sequence select="f:indent($result)"/>
+  </xsl:template>
+
+  <xsl:template match="r:package" mode="m:emit-files" as="element(fs:files)">
+    <xsl:variable name="pkg" as="xs:string" select="@name"/>
+    <xsl:variable name="p" as="element(r:package)" select="."/>
+    <fs:files target="ros2">
+      <xsl:for-each select="r:node">
+        <xsl:sequence select="fp:file('include/' || $pkg || '/' || @class || '.hpp', 'generated', $fp:cpp-xsl, fp:ros2-header(.))"/>
+        <xsl:sequence select="fp:file('src/' || @class || '.cpp', 'generated', $fp:cpp-xsl, fp:ros2-source(.))"/>
+        <xsl:sequence select="fp:file('src/' || @executable || '.cpp', 'generated', $fp:cpp-xsl, fp:ros2-main(.))"/>
+      </xsl:for-each>
+      <xsl:for-each select="r:message-file">
+        <xsl:sequence select="fp:file('msg/' || @name || '.msg', 'generated', $fp:build-xsl, fp:msg-file(., $fp:build-xsl))"/>
+      </xsl:for-each>
+      <xsl:sequence select="fp:file('CMakeLists.txt', 'generated', $fp:build-xsl, fp:ros2-cmakelists(.))"/>
+      <xsl:sequence select="fp:file('package.xml', 'generated', $fp:build-xsl, fp:ros2-package-xml(.))"/>
+      <xsl:sequence select="fp:file('launch/' || @deploy-name || '.launch.xml', 'generated', $fp:launch-xsl, fp:ros2-top-launch(.))"/>
+      <xsl:for-each select="r:host">
+        <xsl:sequence select="fp:file('launch/' || $p/@deploy-name || '_' || @launch || '.launch.xml', 'generated', $fp:launch-xsl,
+                                      fp:ros2-host-launch($p, .))"/>
+      </xsl:for-each>
+      <xsl:sequence select="fp:file('config/params.yaml', 'generated', $fp:launch-xsl, fp:ros2-params-yaml(.))"/>
+    </fs:files>
+  </xsl:template>
+</xsl:stylesheet>
