@@ -62,3 +62,19 @@ def test_import_writes_the_pim_and_never_replaces_a_user_file(capsys: pytest.Cap
     capsys.readouterr()
     assert main(["import", str(model), "-o", str(mine)]) == 2
     assert "[OUT001]" in capsys.readouterr().err and mine.read_text() == "<notes>mine</notes>"
+
+
+def test_a_user_type_map_overrides_the_message_types(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    model = Path(__file__).resolve().parent.parent / "fixtures" / "cases" / "pid" / "model.xmi"
+    type_map = tmp_path / "my-types.xml"
+    type_map.write_text('<types xmlns="urn:robomda:ros-types:1"><type primitive="float64" cpp="double" '
+                        'msg="my_msgs/Angle" field="radians" msg-field="float64" param1="double" '
+                        'param2="double" sample="0.0"/></types>')
+    assert main(["generate", str(model), "-o", str(tmp_path / "out"), "--target", "ros1",
+                 "--type-map", str(type_map)]) == 0
+    header = (tmp_path / "out" / "include" / "pid" / "PIDController.hpp").read_text()
+    assert "my_msgs/Angle.h" in header and "std_msgs/Float64" not in header
+    capsys.readouterr()
+    assert main(["generate", str(model), "-o", str(tmp_path / "o2"), "--target", "ros1",
+                 "--type-map", str(tmp_path / "missing.xml")]) == 2
+    assert "[IO001]" in capsys.readouterr().err

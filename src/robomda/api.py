@@ -59,13 +59,14 @@ def _check_readable(model: Path) -> None:
                            EXIT_INPUT) from None
 
 
-def _context(model: Path, out: Path | None, package_name: str) -> dict[str, str]:
+def _context(model: Path, out: Path | None, package_name: str, type_map: Path | None = None) -> dict[str, str]:
     model_dir = model.resolve().parent
     rel = os.path.relpath(model_dir, out.resolve()) if out is not None else "."
     return {
         "model-file-name": model.name,
         "model-dir-from-output": Path(rel).as_posix(),
         "package-name": package_name,
+        "type-map": type_map.resolve().as_uri() if type_map is not None else "",
     }
 
 
@@ -80,7 +81,7 @@ def import_model(model: Path | str, *, bind: bool = True) -> str:
 
 
 def generate(model: Path | str, out: Path | str | None, target: str = "orocos", *, package_name: str = "",
-             write: bool = True) -> Generated:
+             type_map: Path | str | None = None, write: bool = True) -> Generated:
     """Run ``target``'s chain on ``model`` and write its files into ``out``.
 
     Nothing is written unless every step succeeded and every intermediate
@@ -93,7 +94,11 @@ def generate(model: Path | str, out: Path | str | None, target: str = "orocos", 
     _check_readable(model)
     out_path = Path(out) if out is not None else None
     chain = pipelines.load(pipeline_path(target))
-    result = pipelines.run(chain, _engine(), model, _context(model, out_path, package_name))
+    if type_map is not None and not Path(type_map).is_file():
+        raise RobomdaError([Diagnostic("error", "IO001", f"no such type-map file: {type_map}", file=str(type_map))],
+                           EXIT_INPUT)
+    context = _context(model, out_path, package_name, Path(type_map) if type_map is not None else None)
+    result = pipelines.run(chain, _engine(), model, context)
     report = None
     if write and out_path is not None and chain.yields == "files" and result.tree is not None:
         report = write_fileset(result.tree, out_path)

@@ -100,9 +100,11 @@ def find_models(folder: Path, exclude: Path | None = None) -> list[Path]:
     return found
 
 
-def toolchain_hash(target: str, package_name: str) -> str:
+def toolchain_hash(target: str, package_name: str, type_map: Path | None = None) -> str:
     """A hash of everything besides the model that decides the output."""
     digest = hashlib.sha256(f"robomda {__version__} {target} {package_name}".encode())
+    if type_map is not None:
+        digest.update(type_map.read_bytes())
     root = resource_root()
     for sub in ("xslt", "schemas", "pipelines"):
         for path in sorted((root / sub).rglob("*")):
@@ -116,14 +118,14 @@ def _output_folder(model: Path, folder: Path, out: Path) -> Path:
     return out / rel.with_suffix("") if rel.suffix else out / rel
 
 
-def _generate_one(model: str, out: str, target: str, package_name: str) -> ModelResult:
+def _generate_one(model: str, out: str, target: str, package_name: str, type_map: str | None) -> ModelResult:
     """Worker: one model (the process's engine is reused across calls)."""
     from robomda.api import generate
 
     started = time.perf_counter()
     result = ModelResult(model=model, status="ok")
     try:
-        done = generate(model, out, target, package_name=package_name)
+        done = generate(model, out, target, package_name=package_name, type_map=type_map)
         result.files_written = len(done.report.written) if done.report else 0
         result.diagnostics = [w.format() for w in done.warnings]
     except RobomdaError as exc:
@@ -145,12 +147,14 @@ def _read_state(out: Path) -> dict[str, dict[str, str]]:
 
 
 def run_batch(folder: Path, out: Path, target: str = "orocos", *, package_name: str = "", jobs: int | None = None,
-              force: bool = False, progress: Callable[[int, int, ModelResult], None] | None = None) -> BatchReport:
+              force: bool = False, type_map: Path | None = None,
+              progress: Callable[[int, int, ModelResult], None] | None = None) -> BatchReport:
     """Generate every model under ``folder`` into ``out``; never raises for one model's failure."""
     started = time.perf_counter()
     folder, out = folder.resolve(), out.resolve()
     models = find_models(folder, exclude=out)
-    tools = toolchain_hash(target, package_name)
+    tools = toolchain_hash(target, package_name, type_map)
+    map_arg = str(type_map.resolve()) if type_map is not None else None
     state = _read_state(out)
     results: list[ModelResult] = []
     todo: list[tuple[Path, Path, str]] = []
@@ -173,14 +177,14 @@ def run_batch(folder: Path, out: Path, target: str = "orocos", *, package_name: 
     workers = max(1, min(jobs or os.cpu_count() or 1, len(todo) or 1))
     if todo:
         if workers == 1:
-            outcomes = (_generate_one(str(m), str(d), target, package_name) for m, d, _ in todo)
+            outcomes = (_generate_one(str(m), str(d), target, package_name, map_arg) for m, d, _ in todo)
             for (model, _, digest), result in zip(todo, outcomes):
                 done_count += 1
                 results.append(_finish(result, model, folder, digest, progress, done_count, total))
         else:
             # spawn, not fork: each worker starts its own Saxon engine cleanly
             with ProcessPoolExecutor(max_workers=workers, mp_context=get_context("spawn")) as pool:
-                futures = {pool.submit(_generate_one, str(m), str(d), target, package_name): (m, dg)
+                futures = {pool.submit(_generate_one, str(m), str(d), target, package_name, map_arg): (m, dg)
                            for m, d, dg in todo}
                 for future in as_completed(futures):
                     model, digest = futures[future]

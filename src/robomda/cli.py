@@ -49,6 +49,8 @@ def _parser() -> argparse.ArgumentParser:
     gen.add_argument("-t", "--target", default="orocos", choices=targets(), help="middleware target (default: orocos)")
     gen.add_argument("--package-name", default="", metavar="NAME",
                      help="package / CMake project name (default: derived from the model name)")
+    gen.add_argument("--type-map", type=Path, metavar="FILE",
+                     help="ROS targets: your message type map (format of xslt/m2m/ros-types.xml); its entries win")
     gen.add_argument("--save-stages", type=Path, metavar="DIR",
                      help="also write every intermediate model (PIM, PSM, file set) into DIR")
 
@@ -92,7 +94,7 @@ def _batch(args: argparse.Namespace) -> int:
         print("robomda: -j needs a positive number", file=sys.stderr)
         return EXIT_INPUT
     report = run_batch(args.model, args.output, args.target, package_name=args.package_name, jobs=args.jobs,
-                       force=args.force, progress=ProgressBar())
+                       force=args.force, type_map=args.type_map, progress=ProgressBar())
     for result in report.results:
         for line in result.diagnostics:
             print(line, file=sys.stderr)
@@ -115,7 +117,8 @@ def main(argv: list[str] | None = None) -> int:
         if args.command == "generate" and args.model.is_dir():
             return _batch(args)
         if args.command == "generate":
-            done = generate(args.model, args.output, args.target, package_name=args.package_name)
+            done = generate(args.model, args.output, args.target, package_name=args.package_name,
+                            type_map=args.type_map)
             for warning in done.warnings:
                 print(warning.format(), file=sys.stderr)
             if args.save_stages:

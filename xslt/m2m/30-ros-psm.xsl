@@ -80,7 +80,7 @@
     <!-- the ROS package; '' = lower snake-case of the model name -->
   </xsl:param>
   <xsl:param name="type-map" as="xs:string" select="''">
-    <!-- URI of an extra type map (format of xslt/m2m/ros-types.xml), resolved against the input; its entries win; '' = none -->
+    <!-- URI of an extra type map (format of xslt/m2m/ros-types.xml): absolute, or relative to the input; its entries win; '' = none -->
   </xsl:param>
 
   <xsl:output method="xml" indent="no" encoding="UTF-8"/>

@@ -13,6 +13,7 @@
            model-dir-from-output  the XMI file's folder relative to the
                                   output folder ("." by default).
            package-name           package name ("" = derived from the model).
+           type-map               ROS targets: URI of a user type map.
   Errors:  RUN001 no model given; any error of a step's stylesheet
            (fn:transform passes it on unchanged).
 
@@ -46,6 +47,9 @@
   <xsl:param name="package-name" as="xs:string" select="''">
     <!-- package name; empty = derived from the model name -->
   </xsl:param>
+  <xsl:param name="type-map" as="xs:string" select="''">
+    <!-- ROS targets: absolute URI of a user type map; empty = none -->
+  </xsl:param>
 
   <xsl:global-context-item as="document-node(element(p:pipeline))"/>
 
@@ -73,6 +77,7 @@
       else if ($param/@from = 'model-file-name') then tokenize($model, '/')[last()]
       else if ($param/@from = 'model-dir-from-output') then $model-dir-from-output
       else if ($param/@from = 'package-name') then $package-name
+      else if ($param/@from = 'type-map') then $type-map
       else ''"/>
   </xsl:function>
 
