@@ -124,3 +124,16 @@ def test_a_model_without_components_is_refused(tmp_path: Path, capsys: pytest.Ca
     code, err = _generate(capsys, model, tmp_path / "out")
     assert code == 1 and len(err) == 1 and "[ORO005] nothing to generate" in err[0]
     assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("target", ["ros1", "ros2"])
+def test_ros_targets_refuse_a_model_without_components(tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                                                       target: str) -> None:
+    text = (CASES / "meka" / "model.xmi").read_text(encoding="utf-8")
+    model = tmp_path / "empty.xmi"
+    model.write_text(text.replace('xmi:type="uml:Component"', 'xmi:type="uml:Class"')
+                     .replace('xmi:type="uml:Port"', 'xmi:type="uml:Property"'), encoding="utf-8")
+    code = main(["generate", str(model), "-o", str(tmp_path / "out"), "--target", target])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert code == 1 and len(err) == 1 and "[ROS008] nothing to generate" in err[0]
+    assert not (tmp_path / "out").exists()

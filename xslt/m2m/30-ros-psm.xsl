@@ -49,6 +49,7 @@
     ROS006  parameter ros-version is neither '1' nor '2'
     ROS007  a component with an instance has no realizing class (the ROS
             targets do not generate a user base class yet)
+    ROS008  nothing to generate: the model has no component instance
   Warnings (f:warn):
     ROS100  instances deployed on an execution environment of another
             middleware are generated for ROS anyway (once per model)
@@ -139,6 +140,10 @@
             || string-join(current-group()/@name, ''', ''') || ''' all map to C++ class ' || current-grouping-key())"/>
       </xsl:if>
     </xsl:for-each-group>
+    <xsl:if test="empty($b/pim:instance)">
+      <xsl:sequence select="f:fail('ROS008', @id, 'nothing to generate: model ''' || @name
+          || ''' has no component instance (a component with ports or a realizing class)')"/>
+    </xsl:if>
     <xsl:variable name="other" as="element(pim:instance)*" select="$b/pim:instance[@middleware ne $fp:target-middleware]"/>
     <xsl:if test="exists($other)">
       <xsl:sequence select="f:warn('ROS100', $other[1]/@execution-environment, 'the platform model deploys instance(s) '''
