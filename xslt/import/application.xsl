@@ -152,9 +152,11 @@
       <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
     </xsl:if>
     <xsl:apply-templates select="generalization" mode="mp:feature"/>
-    <!-- provides -->
+    <!-- provides: the realizations whose client is this classifier (the
+         client is the implementing classifier, wherever the XMI put the
+         element); an owned one without a client counts for its owner -->
     <xsl:variable name="realizations" as="element()*"
-        select="interfaceRealization
+        select="interfaceRealization[empty(fp:ref-ids(., 'client'))]
                 | key('fp:dep-by-client', $id)[@x:type = ('InterfaceRealization', 'Realization')]"/>
     <xsl:for-each select="$realizations">
       <xsl:variable name="r" as="element()" select="."/>
