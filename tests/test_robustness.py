@@ -51,7 +51,7 @@ def _mutate(rng: random.Random, tree: etree._ElementTree) -> str:
     return kind
 
 
-@pytest.mark.parametrize("seed", range(24))
+@pytest.mark.parametrize("seed", [*range(24), 387])
 def test_a_damaged_model_gets_files_or_diagnostics_never_a_crash(seed: int, tmp_path: Path) -> None:
     rng = random.Random(seed)
     source = rng.choice(CASES)

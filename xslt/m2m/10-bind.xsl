@@ -59,6 +59,8 @@
     BND009  two instances get the same name
     BND010  invalid tag / convention value (period, priority, scheduler,
             cpuAffinity, connection type, size, lock policy, boolean)
+    BND011  a realizing class has no usable C++ name (unnamed, or a bad
+            AtomicCode cppName)
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -481,6 +483,13 @@
     <xsl:variable name="r" as="element(pim:class)?" select="fp:realizing-class($c)"/>
     <xsl:variable name="h" as="xs:string?" select="fp:tag($r, 'AtomicCode', 'header')[normalize-space(.)]"/>
     <xsl:variable name="n" as="xs:string?" select="fp:tag($r, 'AtomicCode', 'cppName')[normalize-space(.)]"/>
+    <xsl:variable name="cpp" as="xs:string?" select="($n, $r/@name)[1]"/>
+    <xsl:if test="$r and not(normalize-space($cpp) and (every $part in tokenize(replace(string($cpp), '^::', ''), '::')
+                             satisfies matches($part, '^[A-Za-z_][A-Za-z0-9_]*$')))">
+      <xsl:sequence select="fp:fail('BND011', string($r/@id), 'the realizing class of component '''
+          || $c/@name || ''' has no usable C++ name (''' || string($cpp)
+          || '''): name the class, or give its AtomicCode stereotype a cppName')"/>
+    </xsl:if>
     <pim:bound-component component="{$c/@id}" name="{$c/@name}">
       <xsl:if test="$r">
         <xsl:attribute name="realization" select="$r/@id"/>
