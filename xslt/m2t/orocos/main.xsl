@@ -33,7 +33,7 @@
   <xsl:include href="orocos-build.xsl"/>
   <xsl:include href="orocos-deploy.xsl"/>
 
-  <xsl:output method="xml" indent="no" encoding="UTF-8"/>
+  <xsl:output method="xml" indent="no" encoding="UTF-8" cdata-section-elements="fs:file"/>
   <xsl:mode name="m:emit-files" on-no-match="fail"/>
 
   <xsl:template match="/" as="document-node()">

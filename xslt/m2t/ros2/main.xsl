@@ -31,7 +31,7 @@
   <xsl:include href="ros2-build.xsl"/>
   <xsl:include href="ros2-launch.xsl"/>
 
-  <xsl:output method="xml" indent="no" encoding="UTF-8"/>
+  <xsl:output method="xml" indent="no" encoding="UTF-8" cdata-section-elements="fs:file"/>
   <xsl:mode name="m:emit-files" on-no-match="fail"/>
 
   <xsl:variable name="fp:cpp-xsl" as="xs:string" select="'m2t/ros2/ros2-cpp.xsl'"/>
