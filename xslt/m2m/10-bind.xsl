@@ -75,6 +75,7 @@
   <xsl:include href="../common/errors.xsl"/>
   <xsl:include href="../common/indent.xsl"/>
   <xsl:include href="../common/naming.xsl"/>
+  <xsl:include href="../common/profile.xsl"/>
 
   <xsl:output method="xml" indent="no" encoding="UTF-8"/>
 
@@ -93,7 +94,6 @@
   <xsl:key name="fp:instance-by-name" match="pim:instance" use="@name"/>
   <xsl:key name="fp:instance-by-component" match="pim:instance" use="@component"/>
 
-  <xsl:variable name="fp:profile-uri" as="xs:string" select="'http://robomda.org/profile/robomda/1'"/>
 
   <!-- ============================================================ entry -->
   <xsl:template match="/" as="document-node()">
@@ -147,31 +147,14 @@
     </xsl:for-each>
   </xsl:function>
 
-  <!-- f:fail usable where a value is expected (its declared type is
-       statically empty, which a typed branch would reject at compile time) -->
-  <xsl:function name="fp:fail" as="item()*">
-    <xsl:param name="code" as="xs:string"/>
-    <xsl:param name="id" as="xs:string?"/>
-    <xsl:param name="message" as="xs:string"/>
-    <xsl:sequence select="f:fail($code, $id, $message)"/>
-  </xsl:function>
-
   <!-- ===================================================== stereotypes -->
-  <!-- the robomda stereotype $name applied to $e -->
-  <xsl:function name="fp:stereo" as="element(pim:stereotype)?">
-    <xsl:param name="e" as="element()?"/>
-    <xsl:param name="name" as="xs:string"/>
-    <xsl:sequence select="$e/pim:stereotype[@name eq $name]
-        [lower-case(@profile) eq 'robomda' or @profile-uri eq $fp:profile-uri][1]"/>
-  </xsl:function>
-
   <!-- a tag value of stereotype $stereo on $e; enumeration literals given by
        reference resolve to their name; "Kind::LIT" / "Kind.LIT" -> "LIT" -->
   <xsl:function name="fp:tag" as="xs:string?">
     <xsl:param name="e" as="element()?"/>
     <xsl:param name="stereo" as="xs:string"/>
     <xsl:param name="tag" as="xs:string"/>
-    <xsl:variable name="t" as="element()?" select="fp:stereo($e, $stereo)/pim:tag[@name eq $tag][1]"/>
+    <xsl:variable name="t" as="element()?" select="f:stereotype($e, $stereo)/pim:tag[@name eq $tag][1]"/>
     <xsl:sequence select="if (empty($t)) then ()
         else if ($t/@ref = ('true', '1')) then string(key('fp:id', $t/@value, root($t))/@name)
         else string($t/@value)"/>
@@ -213,7 +196,7 @@
     <xsl:param name="id" as="xs:string?"/>
     <xsl:variable name="s" as="xs:string" select="replace(fp:strip($v), '[fFdD]$', '')"/>
     <xsl:sequence select="if ($s castable as xs:double and number($s) ge 0) then number($s)
-        else fp:fail('BND010', $id, $what || ': ''' || $v || ''' is not a non-negative number')"/>
+        else f:fail('BND010', $id, $what || ': ''' || $v || ''' is not a non-negative number')"/>
   </xsl:function>
 
   <xsl:function name="fp:integer" as="xs:integer">
@@ -222,7 +205,7 @@
     <xsl:param name="id" as="xs:string?"/>
     <xsl:variable name="d" as="xs:double" select="fp:number($v, $what, $id)"/>
     <xsl:sequence select="if ($d eq floor($d)) then xs:integer($d)
-        else fp:fail('BND010', $id, $what || ': ''' || $v || ''' is not an integer')"/>
+        else f:fail('BND010', $id, $what || ': ''' || $v || ''' is not an integer')"/>
   </xsl:function>
 
   <xsl:function name="fp:boolean" as="xs:boolean">
@@ -232,7 +215,7 @@
     <xsl:variable name="s" as="xs:string" select="lower-case(fp:strip($v))"/>
     <xsl:sequence select="if ($s = ('true', '1', 'yes')) then true()
         else if ($s = ('false', '0', 'no')) then false()
-        else fp:fail('BND010', $id, $what || ': ''' || $v || ''' is not a boolean')"/>
+        else f:fail('BND010', $id, $what || ': ''' || $v || ''' is not a boolean')"/>
   </xsl:function>
 
   <xsl:function name="fp:enum" as="xs:string">
@@ -245,7 +228,7 @@
     <xsl:variable name="hit" as="xs:string?"
         select="$allowed[translate(., '_', '') eq translate($s, '_', '')][1]"/>
     <xsl:sequence select="if (exists($hit)) then $hit
-        else fp:fail('BND010', $id, $what || ': ''' || $v || ''' is not one of '
+        else f:fail('BND010', $id, $what || ': ''' || $v || ''' is not one of '
                     || string-join($allowed, ', '))"/>
   </xsl:function>
 
@@ -265,7 +248,7 @@
   <xsl:function name="fp:hosts" as="element(pim:node)*">
     <xsl:param name="root" as="document-node()"/>
     <xsl:sequence select="$root/pim:model/pim:platform//pim:node
-                [@kind eq 'node' or exists(fp:stereo(., 'Host'))]"/>
+                [@kind eq 'node' or exists(f:stereotype(., 'Host'))]"/>
   </xsl:function>
 
   <xsl:function name="fp:middleware" as="xs:string">
@@ -278,7 +261,7 @@
         else if ($key = ('ROS', 'ROS1')) then 'ROS'
         else if ($key eq 'ROS2') then 'ROS2'
         else if ($key = ('OPENRTM', 'OPENRTMAIST')) then 'OpenRTM'
-        else fp:fail('BND003', $ee/@id, 'unknown middleware ''' || $raw
+        else f:fail('BND003', $ee/@id, 'unknown middleware ''' || $raw
                     || ''' of execution environment ''' || $ee/@name
                     || ''' (expected OROCOS, ROS, ROS2 or OpenRTM)')"/>
   </xsl:function>
@@ -378,7 +361,7 @@
   <xsl:function name="fp:libraries" as="element(pim:library)*">
     <xsl:param name="model" as="element(pim:model)"/>
     <xsl:variable name="all" as="element(pim:artifact)*" select="$model/pim:platform//pim:artifact"/>
-    <xsl:variable name="profiled" as="element(pim:artifact)*" select="$all[exists(fp:stereo(., 'Library'))]"/>
+    <xsl:variable name="profiled" as="element(pim:artifact)*" select="$all[exists(f:stereotype(., 'Library'))]"/>
     <xsl:for-each select="if (exists($profiled)) then $profiled else $all">
       <xsl:variable name="p" as="xs:string?" select="fp:tag(., 'Library', 'path')[normalize-space(.)]"/>
       <xsl:variable name="t" as="xs:string?" select="fp:tag(., 'Library', 'target')[normalize-space(.)]"/>
@@ -486,7 +469,7 @@
     <xsl:variable name="cpp" as="xs:string?" select="($n, $r/@name)[1]"/>
     <xsl:if test="$r and not(normalize-space($cpp) and (every $part in tokenize(replace(string($cpp), '^::', ''), '::')
                              satisfies matches($part, '^[A-Za-z_][A-Za-z0-9_]*$')))">
-      <xsl:sequence select="fp:fail('BND011', string($r/@id), 'the realizing class of component '''
+      <xsl:sequence select="f:fail('BND011', string($r/@id), 'the realizing class of component '''
           || $c/@name || ''' has no usable C++ name (''' || string($cpp)
           || '''): name the class, or give its AtomicCode stereotype a cppName')"/>
     </xsl:if>
@@ -563,7 +546,7 @@
   <!-- ==================================================== connections -->
   <xsl:function name="fp:policy" as="element(pim:policy)">
     <xsl:param name="candidates" as="element()*"/>
-    <xsl:variable name="e" as="element()?" select="$candidates[exists(fp:stereo(., 'ConnectionPolicy'))][1]"/>
+    <xsl:variable name="e" as="element()?" select="$candidates[exists(f:stereotype(., 'ConnectionPolicy'))][1]"/>
     <xsl:variable name="id" as="xs:string?" select="$e/@id"/>
     <xsl:variable name="type" as="xs:string"
         select="fp:enum((fp:tag($e, 'ConnectionPolicy', 'type')[normalize-space(.)], 'DATA')[1],

@@ -65,6 +65,7 @@
   <xsl:include href="../common/errors.xsl"/>
   <xsl:include href="../common/indent.xsl"/>
   <xsl:include href="../common/naming.xsl"/>
+  <xsl:include href="../common/profile.xsl"/>
 
   <xsl:param name="package-name" as="xs:string" select="''">
     <!-- the component package (CMake project, deployer Import); '' = lower snake-case of the model name -->
@@ -91,20 +92,6 @@
       'inRunTimeError', 'getPeriod', 'setPeriod', 'getCpuAffinity', 'setCpuAffinity',
       'loadService', 'getName', 'getState')"/>
   <xsl:variable name="fp:convention-names" as="xs:string+" select="('sample', 'priority', 'scheduler', 'cpuAffinity')"/>
-
-  <xsl:function name="fp:fail" as="item()*">
-    <xsl:param name="code" as="xs:string"/>
-    <xsl:param name="id" as="xs:string?"/>
-    <xsl:param name="message" as="xs:string"/>
-    <xsl:sequence select="f:fail($code, $id, $message)"/>
-  </xsl:function>
-
-  <xsl:function name="fp:stereo" as="element(pim:stereotype)?">
-    <xsl:param name="e" as="element()?"/>
-    <xsl:param name="name" as="xs:string"/>
-    <xsl:sequence select="$e/pim:stereotype[@name eq $name]
-        [lower-case(@profile) eq 'robomda' or @profile-uri eq 'http://robomda.org/profile/robomda/1'][1]"/>
-  </xsl:function>
 
   <!-- ================================================================ entry -->
   <xsl:template match="/" as="document-node()">
@@ -229,7 +216,7 @@
     <xsl:variable name="t" as="element(ty:type)?" select="fp:type($typed)"/>
     <xsl:sequence select="if (exists($t) and ($t/@primitive ne 'void' or $what eq 'result'))
         then $t
-        else fp:fail('ORO001', $id, $what || ' has type ''' || ($typed/@type-name, $typed/@primitive, '?')[1]
+        else f:fail('ORO001', $id, $what || ' has type ''' || ($typed/@type-name, $typed/@primitive, '?')[1]
                      || (if ($typed/@upper and not($typed/@upper = ('1', ''))) then '[' || $typed/@upper || ']' else '')
                      || ''', which robomda cannot map to an Orocos C++ / XML type (supported: '
                      || string-join($fp:types//ty:type[@primitive ne 'void']/@primitive, ', ') || ')')"/>
@@ -296,7 +283,7 @@
         <xsl:sequence select="fp:operation(.)"/>
       </xsl:for-each>
       <xsl:variable name="configurable" as="element(pim:attribute)*"
-          select="$owner/pim:attribute[exists(fp:stereo(., 'Configurable'))]"/>
+          select="$owner/pim:attribute[exists(f:stereotype(., 'Configurable'))]"/>
       <xsl:choose>
         <xsl:when test="exists($configurable)">
           <xsl:sequence select="$configurable ! fp:property(., true())"/>
@@ -314,7 +301,7 @@
   <xsl:function name="fp:operation" as="element(o:operation)">
     <xsl:param name="op" as="element(pim:operation)"/>
     <xsl:variable name="tag" as="xs:string?"
-        select="fp:stereo($op, 'OperationThread')/pim:tag[@name eq 'thread'][1]/@value"/>
+        select="f:stereotype($op, 'OperationThread')/pim:tag[@name eq 'thread'][1]/@value"/>
     <xsl:variable name="thread" as="xs:string"
         select="if (exists($tag)) then (if (matches($tag, 'CLIENT', 'i')) then 'RTT::ClientThread' else 'RTT::OwnThread')
                 else if ($op/@query = ('true', '1')) then 'RTT::ClientThread' else 'RTT::OwnThread'"/>
@@ -339,11 +326,6 @@
   </xsl:function>
 
   <!-- ================================================= property values -->
-  <xsl:function name="fp:unquote" as="xs:string">
-    <xsl:param name="v" as="xs:string"/>
-    <xsl:sequence select="if (matches($v, '^&quot;.*&quot;$|^''.*''$', 's')) then substring($v, 2, string-length($v) - 2) else $v"/>
-  </xsl:function>
-
   <xsl:function name="fp:cpp-string" as="xs:string">
     <xsl:param name="v" as="xs:string"/>
     <xsl:sequence select="'&quot;' || (if (contains($v, '\') or contains($v, '&quot;') or contains($v, '&#10;'))
@@ -356,7 +338,7 @@
     <xsl:param name="v" as="xs:string"/>
     <xsl:param name="t" as="element(ty:type)"/>
     <xsl:param name="id" as="xs:string"/>
-    <xsl:variable name="s" as="xs:string" select="fp:unquote(normalize-space($v))"/>
+    <xsl:variable name="s" as="xs:string" select="f:unquote(normalize-space($v))"/>
     <xsl:variable name="num" as="xs:string" select="replace($s, '^([+\-]?[0-9.eE+\-]+)[fFdDlLuU]*$', '$1')"/>
     <xsl:variable name="p" as="xs:string" select="$t/@primitive"/>
     <xsl:sequence select="
@@ -364,21 +346,21 @@
       else if ($p eq 'boolean') then
         (if (lower-case($s) = ('true', '1')) then ('1', 'true', 'true')
          else if (lower-case($s) = ('false', '0')) then ('0', 'false', 'false')
-         else fp:fail('ORO002', $id, 'default ''' || $v || ''' is not a boolean'))
+         else f:fail('ORO002', $id, 'default ''' || $v || ''' is not a boolean'))
       else if ($p eq 'char') then
         (if (string-length($s) eq 1 and matches($s, '[A-Za-z0-9 _.,;:+\-*/=!?]'))
          then ($s, '''' || $s || '''', '''' || $s || '''')
-         else fp:fail('ORO002', $id, 'default ''' || $v || ''' is not a single plain character'))
+         else f:fail('ORO002', $id, 'default ''' || $v || ''' is not a single plain character'))
       else if ($p = ('float32', 'float64')) then
         (if ($num castable as xs:double and not(matches($num, 'nan|inf', 'i')))
          then ($num, if (contains($num, '.') or contains(lower-case($num), 'e')) then $num else $num || '.0',
                (if (contains($num, '.') or contains(lower-case($num), 'e')) then $num else $num || '.0')
                || (if ($p eq 'float32') then 'f' else ''))
-         else fp:fail('ORO002', $id, 'default ''' || $v || ''' is not a number'))
+         else f:fail('ORO002', $id, 'default ''' || $v || ''' is not a number'))
       else
         (if ($num castable as xs:integer and (not(starts-with($p, 'u') or $p eq 'octet') or xs:integer($num) ge 0))
          then (string(xs:integer($num)), string(xs:integer($num)), string(xs:integer($num)))
-         else fp:fail('ORO002', $id, 'default ''' || $v || ''' is not a valid ' || $p))"/>
+         else f:fail('ORO002', $id, 'default ''' || $v || ''' is not a valid ' || $p))"/>
   </xsl:function>
 
   <xsl:function name="fp:property" as="element(o:property)">

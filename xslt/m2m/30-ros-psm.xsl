@@ -73,6 +73,7 @@
   <xsl:include href="../common/errors.xsl"/>
   <xsl:include href="../common/indent.xsl"/>
   <xsl:include href="../common/naming.xsl"/>
+  <xsl:include href="../common/profile.xsl"/>
 
   <xsl:param name="ros-version" as="xs:string" select="'1'">
     <!-- '1' (catkin / roscpp) or '2' (ament / rclcpp) -->
@@ -103,13 +104,6 @@
   <xsl:variable name="fp:lifecycle" as="xs:string+" select="('configure', 'start', 'update', 'stop', 'cleanup')"/>
   <xsl:variable name="fp:convention-names" as="xs:string+" select="('sample', 'priority', 'scheduler', 'cpuAffinity')"/>
   <xsl:variable name="fp:target-middleware" as="xs:string" select="if ($ros-version eq '2') then 'ROS2' else 'ROS'"/>
-
-  <xsl:function name="fp:stereo" as="element(pim:stereotype)?">
-    <xsl:param name="e" as="element()?"/>
-    <xsl:param name="name" as="xs:string"/>
-    <xsl:sequence select="$e/pim:stereotype[@name eq $name]
-        [lower-case(@profile) eq 'robomda' or @profile-uri eq 'http://robomda.org/profile/robomda/1'][1]"/>
-  </xsl:function>
 
   <!-- ================================================================ entry -->
   <xsl:template match="/" as="document-node()">
@@ -344,7 +338,7 @@
             || ' Boolean result; SetBool: one Boolean argument): not exposed as ROS services')"/>
       </xsl:if>
       <xsl:variable name="configurable" as="element(pim:attribute)*"
-          select="$owner/pim:attribute[exists(fp:stereo(., 'Configurable'))]"/>
+          select="$owner/pim:attribute[exists(f:stereotype(., 'Configurable'))]"/>
       <xsl:choose>
         <xsl:when test="exists($configurable)">
           <xsl:sequence select="$configurable ! fp:parameter(.)"/>
@@ -383,11 +377,6 @@
   </xsl:function>
 
   <!-- ================================================ parameter values -->
-  <xsl:function name="fp:unquote" as="xs:string">
-    <xsl:param name="v" as="xs:string"/>
-    <xsl:sequence select="if (matches($v, '^&quot;.*&quot;$|^''.*''$', 's')) then substring($v, 2, string-length($v) - 2) else $v"/>
-  </xsl:function>
-
   <xsl:function name="fp:quoted" as="xs:string">
     <xsl:param name="v" as="xs:string"/>
     <xsl:sequence select="'&quot;' || replace(replace(replace($v, '\\', '\\\\'), '&quot;', '\\&quot;'), '&#10;', '\\n') || '&quot;'"/>
@@ -398,7 +387,7 @@
     <xsl:param name="v" as="xs:string"/>
     <xsl:param name="t" as="element(ty:type)"/>
     <xsl:param name="id" as="xs:string"/>
-    <xsl:variable name="s" as="xs:string" select="fp:unquote(normalize-space($v))"/>
+    <xsl:variable name="s" as="xs:string" select="f:unquote(normalize-space($v))"/>
     <xsl:variable name="num" as="xs:string" select="replace($s, '^([+\-]?[0-9.eE+\-]+)[fFdDlLuU]*$', '$1')"/>
     <xsl:variable name="p" as="xs:string" select="string($t/@primitive)"/>
     <xsl:sequence select="

@@ -1,0 +1,35 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/common/profile.xsl - reading the robomda profile's stereotypes in a PIM.
+
+  Reads:   pim:stereotype elements of urn:robomda:pim:1 (schemas/pim/1).
+  Writes:  nothing (a function module for the model-to-model stages).
+  Params:  none.  Errors: none.
+
+  The robomda profile (docs/profile.md) is recognised by its short name
+  (the XML prefix, whatever URI a tool gave it) or by its namespace URI.
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:f="urn:robomda:xslt:function"
+    xmlns:pim="urn:robomda:pim:1"
+    exclude-result-prefixes="#all">
+
+  <xsl:variable name="f:profile-uri" as="xs:string" select="'http://robomda.org/profile/robomda/1'"/>
+
+  <!-- the robomda stereotype $name applied to $e (the first, if applied twice) -->
+  <xsl:function name="f:stereotype" as="element(pim:stereotype)?">
+    <xsl:param name="e" as="element()?"/>
+    <xsl:param name="name" as="xs:string"/>
+    <xsl:sequence select="$e/pim:stereotype[@name eq $name]
+        [lower-case(@profile) eq 'robomda' or @profile-uri eq $f:profile-uri][1]"/>
+  </xsl:function>
+
+  <!-- a default value as written in a model, without one pair of enclosing
+       double or single quotes ("abc" -> abc) -->
+  <xsl:function name="f:unquote" as="xs:string">
+    <xsl:param name="v" as="xs:string"/>
+    <xsl:sequence select="if (matches($v, '^&quot;.*&quot;$|^''.*''$', 's')) then substring($v, 2, string-length($v) - 2) else $v"/>
+  </xsl:function>
+</xsl:stylesheet>
