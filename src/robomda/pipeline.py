@@ -8,6 +8,7 @@ stage's output, all in memory: nothing is written here.
 
 from __future__ import annotations
 
+import functools
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -78,8 +79,13 @@ class RunResult:
 _MANIFEST_SCHEMA: xmlschema.XMLSchema | None = None
 
 
+@functools.lru_cache(maxsize=None)
 def load(manifest: Path) -> Pipeline:
-    """Read and validate a pipeline manifest (following its includes)."""
+    """Read and validate a pipeline manifest (following its includes).
+
+    Cached per path: a batch worker generates many models with the same
+    manifests, which do not change while it runs.
+    """
     global _MANIFEST_SCHEMA
     if _MANIFEST_SCHEMA is None:
         _MANIFEST_SCHEMA = xmlschema.XMLSchema(str(resource_root() / "schemas/pipeline/1/pipeline.xsd"))
