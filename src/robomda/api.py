@@ -1,4 +1,4 @@
-"""The public functions: import a model, generate a target, list targets."""
+"""The public functions: import a model, check it, generate a target, list targets."""
 
 from __future__ import annotations
 
@@ -9,12 +9,12 @@ from pathlib import Path
 from lxml import etree
 
 from robomda import pipeline as pipelines
-from robomda.diagnostics import EXIT_INPUT, Diagnostic, RobomdaError
+from robomda.diagnostics import EXIT_FINDINGS, EXIT_INPUT, EXIT_OK, Diagnostic, RobomdaError
 from robomda.engine import Engine
 from robomda.output import WriteReport, write_fileset
 from robomda.resources import available_targets, pipeline_path
 
-__all__ = ["generate", "import_model", "targets", "Generated"]
+__all__ = ["generate", "import_model", "check", "targets", "Generated", "Checked"]
 
 _ENGINE: Engine | None = None
 
@@ -40,6 +40,22 @@ class Generated:
     report: WriteReport | None
     timings: list[tuple[str, float, float]]
     warnings: list[Diagnostic]
+
+
+@dataclass
+class Checked:
+    """What :func:`check` found: every diagnostic, the targets checked, the exit code."""
+
+    diagnostics: list[Diagnostic]
+    targets: list[str]
+    exit_code: int
+
+    def count(self, severity: str) -> int:
+        return sum(1 for d in self.diagnostics if d.severity == severity)
+
+
+# the middleware an instance is deployed on -> the target that generates for it
+_TARGET_OF_MIDDLEWARE = {"OROCOS": "orocos", "ROS": "ros1", "ROS2": "ros2"}
 
 
 def _check_readable(model: Path) -> None:
@@ -80,6 +96,71 @@ def import_model(model: Path | str, *, bind: bool = True) -> str:
     return pipelines.run(chain, _engine(), model, _context(model, None, "")).output
 
 
+def _usage_target(target: str) -> None:
+    if target not in targets():
+        raise RobomdaError([Diagnostic("error", "USAGE", f"unknown target '{target}' (known: "
+                                       f"{', '.join(targets())})")], EXIT_INPUT)
+
+
+def check(model: Path | str, target: str | None = None, *, package_name: str = "",
+          type_map: Path | str | None = None) -> Checked:
+    """Run the checks of ``model`` without generating anything.
+
+    With a ``target``, everything ``generate`` would check for it: the import
+    and bind errors, the PIM rules, the PSM step and its rules. Without one,
+    the same for every target the model's instances are deployed on (the
+    shared PIM rules when they are deployed on none robomda generates for).
+    Diagnostics found by several targets are reported once. Input that
+    cannot be read at all still raises :class:`RobomdaError` (exit code 2).
+    """
+    model = Path(model)
+    if target is not None:
+        _usage_target(target)
+    _check_readable(model)
+    context = _context(model, None, package_name, Path(type_map) if type_map is not None else None)
+    chosen = [target] if target is not None else []
+    diagnostics: list[Diagnostic] = []
+    exit_code = EXIT_OK
+
+    def run_until_text(name: str) -> pipelines.RunResult | None:
+        nonlocal exit_code
+        chain = pipelines.load(pipeline_path(name))
+        steps = len(chain.steps) - 1 if chain.yields == "files" else None
+        try:
+            result = pipelines.run(chain, _engine(), model, context, steps=steps)
+        except RobomdaError as exc:
+            if exc.exit_code not in (EXIT_FINDINGS,):
+                raise
+            exit_code = EXIT_FINDINGS
+            _add(diagnostics, exc.diagnostics)
+            return None
+        _add(diagnostics, result.warnings)
+        return result
+
+    if not chosen:
+        shared = run_until_text("check")
+        if shared is None:
+            return Checked(diagnostics, ["model"], exit_code)
+        deployed = {i.get("middleware") for i in shared.tree.iter("{urn:robomda:pim:1}instance")}
+        chosen = [t for m, t in _TARGET_OF_MIDDLEWARE.items() if m in deployed]
+        if not chosen:
+            return Checked(diagnostics, ["model"], exit_code)
+        diagnostics.clear()  # the targets' runs repeat the shared findings
+    for name in chosen:
+        run_until_text(name)
+    return Checked(diagnostics, chosen, exit_code)
+
+
+def _add(into: list[Diagnostic], found: list[Diagnostic]) -> None:
+    """Append the diagnostics of ``found`` that ``into`` does not hold yet."""
+    seen = {(d.severity, d.code, d.message, d.line, d.column) for d in into}
+    for d in found:
+        key = (d.severity, d.code, d.message, d.line, d.column)
+        if key not in seen:
+            seen.add(key)
+            into.append(d)
+
+
 def generate(model: Path | str, out: Path | str | None, target: str = "orocos", *, package_name: str = "",
              type_map: Path | str | None = None, write: bool = True) -> Generated:
     """Run ``target``'s chain on ``model`` and write its files into ``out``.
@@ -88,9 +169,7 @@ def generate(model: Path | str, out: Path | str | None, target: str = "orocos", 
     model is valid. With ``write=False`` only the stage outputs are returned.
     """
     model = Path(model)
-    if target not in targets():
-        raise RobomdaError([Diagnostic("error", "USAGE", f"unknown target '{target}' (known: "
-                                       f"{', '.join(targets())})")], EXIT_INPUT)
+    _usage_target(target)
     _check_readable(model)
     out_path = Path(out) if out is not None else None
     chain = pipelines.load(pipeline_path(target))

@@ -9,15 +9,16 @@ from pathlib import Path
 from lxml import etree
 
 from robomda import __version__
-from robomda.api import generate, import_model, targets
+from robomda.api import check, generate, import_model, targets
 from robomda.batch import ProgressBar, run_batch
-from robomda.diagnostics import EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, Diagnostic, RobomdaError
+from robomda.diagnostics import EXIT_FINDINGS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, Diagnostic, RobomdaError
+from robomda.formats import FORMATS, render
 from robomda.output import atomic_write
 
 __all__ = ["main"]
 
 _EXIT_CODES = """exit codes:
-  0  success
+  0  success (warnings may have been reported)
   1  the model has errors (each reported as FILE:LINE:COL: error: [CODE] ...)
   2  usage error, or input that cannot be read (missing, not XML, not UML XMI)
   3  internal error in robomda (please report it with the model)"""
@@ -53,6 +54,24 @@ def _parser() -> argparse.ArgumentParser:
                      help="ROS targets: your message type map (format of xslt/m2m/ros-types.xml); its entries win")
     gen.add_argument("--save-stages", type=Path, metavar="DIR",
                      help="also write every intermediate model (PIM, PSM, file set) into DIR")
+    gen.add_argument("--format", default="text", choices=FORMATS,
+                     help="how to report diagnostics: text on stderr (default), or a json / sarif document "
+                          "on stdout (one model only)")
+
+    chk = sub.add_parser(
+        "check", help="check an XMI model without generating anything",
+        description="Run the model checks on MODEL: import and bind errors, the Schematron rules on the PIM "
+                    "(schemas/pim/1/pim.sch) and on the target's PSM. Without --target, the model is checked "
+                    "for every middleware its components are deployed on. Writes nothing.",
+        epilog=_EXIT_CODES, formatter_class=argparse.RawDescriptionHelpFormatter)
+    chk.add_argument("model", type=Path, metavar="MODEL", help="the UML XMI file")
+    chk.add_argument("-t", "--target", default=None, choices=targets(),
+                     help="check what generating for this target needs (default: the middlewares the model "
+                          "deploys on)")
+    chk.add_argument("--format", default="text", choices=FORMATS,
+                     help="text on stderr (default), or a json / sarif document on stdout")
+    chk.add_argument("--package-name", default="", metavar="NAME", help="as for generate")
+    chk.add_argument("--type-map", type=Path, metavar="FILE", help="as for generate")
 
     imp = sub.add_parser(
         "import", help="write the platform-independent model (PIM) of an XMI model",
@@ -111,16 +130,39 @@ def _batch(args: argparse.Namespace) -> int:
     return report.exit_code
 
 
+def _report(fmt: str, diagnostics: list[Diagnostic], exit_code: int) -> None:
+    """Diagnostics as text on stderr, or as one json / sarif document on stdout."""
+    if fmt == "text":
+        for diag in diagnostics:
+            print(diag.format(), file=sys.stderr)
+    else:
+        sys.stdout.write(render(fmt, diagnostics, exit_code))
+
+
+def _check(args: argparse.Namespace) -> int:
+    done = check(args.model, args.target, package_name=args.package_name, type_map=args.type_map)
+    _report(args.format, done.diagnostics, done.exit_code)
+    summary = (f"robomda: {args.model}: {done.count('error')} errors, {done.count('warning')} warnings, "
+               f"{done.count('info')} notes (checked for {', '.join(done.targets)})")
+    print(summary, file=sys.stdout if args.format == "text" else sys.stderr)
+    return done.exit_code
+
+
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
+    fmt = getattr(args, "format", "text")
     try:
         if args.command == "generate" and args.model.is_dir():
+            if fmt != "text":
+                print("robomda: --format json / sarif applies to one model, not to a folder", file=sys.stderr)
+                return EXIT_INPUT
             return _batch(args)
+        if args.command == "check":
+            return _check(args)
         if args.command == "generate":
             done = generate(args.model, args.output, args.target, package_name=args.package_name,
                             type_map=args.type_map)
-            for warning in done.warnings:
-                print(warning.format(), file=sys.stderr)
+            _report(fmt, done.warnings, EXIT_OK)
             if args.save_stages:
                 for name, text in done.stages.items():
                     _write_model_file(args.save_stages / f"{name}.xml", text)
@@ -130,22 +172,22 @@ def main(argv: list[str] | None = None) -> int:
                       f"{len(report.unchanged)} unchanged, {len(report.kept_user)} user files kept"
                       + (f", fresh copies beside them: {', '.join(report.fresh_copies)}" if report.fresh_copies else "")
                       + (f", removed stale: {', '.join(report.removed)}" if report.removed else "")
-                      + (f"; kept edited stale files: {', '.join(report.kept_stale)}" if report.kept_stale else ""))
+                      + (f"; kept edited stale files: {', '.join(report.kept_stale)}" if report.kept_stale else ""),
+                      file=sys.stdout if fmt == "text" else sys.stderr)
         else:
             text = import_model(args.model, bind=not args.no_bind)
             dest = _pim_destination(args.model, args.output)
             _write_model_file(dest, text)
             print(f"robomda: PIM written to {dest}")
     except RobomdaError as exc:
-        for diag in exc.diagnostics:
-            print(diag.format(), file=sys.stderr)
+        _report(fmt, exc.diagnostics, exc.exit_code)
         return exc.exit_code
     except OSError as exc:
-        print(f"robomda: error: {exc}", file=sys.stderr)
+        _report(fmt, [Diagnostic("error", "IO001", str(exc), file=exc.filename and str(exc.filename))], EXIT_INPUT)
         return EXIT_INPUT
     except Exception as exc:  # noqa: BLE001 - the last guard: a bug, reported without a traceback
-        print(f"robomda: internal error: {type(exc).__name__}: {exc} (please report it with the model)",
-              file=sys.stderr)
+        _report(fmt, [Diagnostic("error", "INTERNAL", f"{type(exc).__name__}: {exc} (please report it with "
+                                 "the model)", file=str(getattr(args, "model", "")) or None)], EXIT_INTERNAL)
         return EXIT_INTERNAL
     return EXIT_OK
 

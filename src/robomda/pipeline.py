@@ -1,13 +1,15 @@
 """Pipelines as data: load a manifest, run its steps, validate every output.
 
 A manifest (``pipelines/*.xml``, schema ``schemas/pipeline/1``) lists the
-stylesheets of a chain, the parameters each one takes and the schema its
-output must satisfy. :func:`run` executes it on one XMI file and returns every
-stage's output, all in memory: nothing is written here.
+stylesheets of a chain, the parameters each one takes, the schema its output
+must satisfy and the Schematron rules checked on it. :func:`run` executes it
+on one XMI file and returns every stage's output and every finding, all in
+memory: nothing is written here.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import time
 from dataclasses import dataclass, field
@@ -29,9 +31,10 @@ from robomda.diagnostics import (
 )
 from robomda.engine import Engine, TransformError
 from robomda.resources import resource_root
+from robomda.rules import run_rules
 from robomda.validate import validate
 
-__all__ = ["Param", "Step", "Pipeline", "RunResult", "load", "run"]
+__all__ = ["Param", "Check", "Step", "Pipeline", "RunResult", "load", "run"]
 
 _NS = {"p": "urn:robomda:pipeline:1"}
 
@@ -44,11 +47,18 @@ class Param:
 
 
 @dataclass(frozen=True)
+class Check:
+    rules: Path  # a Schematron schema
+    phase: str | None
+
+
+@dataclass(frozen=True)
 class Step:
     name: str
     stylesheet: Path
     schema: Path
     params: tuple[Param, ...]
+    checks: tuple[Check, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -68,7 +78,8 @@ class RunResult:
     tree: etree._Element | None = None
     # per step: (name, seconds in XSLT, seconds in XSD validation)
     timings: list[tuple[str, float, float]] = field(default_factory=list)
-    # warnings the stylesheets reported (f:warn), located in the XMI
+    # warnings and infos: from the stylesheets (f:warn) and from the rules,
+    # located in the XMI, in the order the steps found them
     warnings: list[Diagnostic] = field(default_factory=list)
 
     @property
@@ -94,9 +105,16 @@ def load(manifest: Path) -> Pipeline:
     root = etree.parse(str(manifest)).getroot()
     base = manifest.parent
     steps: list[Step] = []
-    for node in root.iterchildren(f"{{{_NS['p']}}}include", f"{{{_NS['p']}}}step"):
-        if etree.QName(node).localname == "include":
+    for node in root.iterchildren(f"{{{_NS['p']}}}include", f"{{{_NS['p']}}}step", f"{{{_NS['p']}}}check"):
+        kind = etree.QName(node).localname
+        if kind == "include":
             steps.extend(load(base / node.get("href")).steps)
+            continue
+        if kind == "check":
+            if not steps:
+                raise ValueError(f"{manifest}: a check needs a step before it")
+            check = Check((base / node.get("rules")).resolve(), node.get("phase"))
+            steps[-1] = dataclasses.replace(steps[-1], checks=steps[-1].checks + (check,))
             continue
         params = tuple(Param(p.get("name"), p.get("value"), p.get("from")) for p in node.findall("p:param", _NS))
         steps.append(Step(node.get("name"), (base / node.get("stylesheet")).resolve(),
@@ -105,17 +123,20 @@ def load(manifest: Path) -> Pipeline:
     return Pipeline(root.get("name"), root.get("yields"), description, tuple(steps), manifest)
 
 
-def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]) -> RunResult:
-    """Run every step on ``model``; raise :class:`RobomdaError` on the first failure.
+def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str], *,
+        steps: int | None = None) -> RunResult:
+    """Run every step (or the first ``steps``) on ``model``; raise :class:`RobomdaError` on failure.
 
     ``context`` supplies the values of parameters declared with ``from``.
-    Each output is validated against its step's schema before the next step
-    sees it.
+    Each output is validated against its step's schema, then checked by the
+    step's rules, before the next step sees it. A stylesheet error stops at
+    once; rule findings at error level stop after the whole check, and the
+    error carries every finding so far (warnings included).
     """
     locator = XmiLocator(model)
     result = RunResult()
     previous: str | None = None
-    for step in pipeline.steps:
+    for step in pipeline.steps[:steps]:
         params = {p.name: (p.value if p.value is not None else context.get(p.source or "", "")) for p in step.params}
         started = time.perf_counter()
         try:
@@ -124,7 +145,9 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
             else:
                 text = engine.transform(step.stylesheet, params, source_text=previous)
         except TransformError as exc:
-            raise _transform_failure(exc, step, locator) from None
+            failure = _transform_failure(exc, step, locator)
+            failure.diagnostics[:0] = result.warnings
+            raise failure from None
         for message in engine.messages:
             parsed = parse_stylesheet_warning(message)
             if parsed is not None:
@@ -138,6 +161,11 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
                 locator.diagnostic("SCHEMA", f"the {step.name} step wrote a model that breaks "
                                    f"{step.schema.name}: {v.reason} at {v.path}", v.element_id, step=step.name)
                 for v in violations], EXIT_INTERNAL)
+        for check in step.checks:
+            found = run_rules(check.rules, check.phase, tree, locator, step.name)
+            if any(d.severity == "error" for d in found):
+                raise RobomdaError(result.warnings + found, EXIT_FINDINGS)
+            result.warnings.extend(found)
         result.stages[step.name] = text
         result.tree = tree
         previous = text

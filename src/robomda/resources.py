@@ -28,5 +28,6 @@ def pipeline_path(name: str) -> Path:
 
 
 def available_targets() -> list[str]:
-    """Targets = pipelines that yield files (every manifest but ``import``)."""
-    return sorted(p.stem for p in (resource_root() / "pipelines").glob("*.xml") if p.stem != "import")
+    """Targets = pipelines that yield files (not ``import`` or ``check``, which yield a model)."""
+    return sorted(p.stem for p in (resource_root() / "pipelines").glob("*.xml")
+                  if 'yields="files"' in p.read_text(encoding="utf-8"))
