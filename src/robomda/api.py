@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -68,7 +69,8 @@ def _check_readable(model: Path) -> None:
         etree.parse(str(model), parser)
     except etree.XMLSyntaxError as exc:
         line, column = exc.position if exc.position else (None, None)
-        raise RobomdaError([Diagnostic("error", "XML001", f"not well-formed XML: {exc.msg}", file=str(model),
+        reason = re.sub(r"(, line \d+)+, column \d+$", "", exc.msg)  # the position is in FILE:LINE:COL
+        raise RobomdaError([Diagnostic("error", "XML001", f"not well-formed XML: {reason}", file=str(model),
                                        line=line, column=column)], EXIT_INPUT) from None
     except OSError as exc:
         raise RobomdaError([Diagnostic("error", "IO001", f"cannot read: {exc}", file=str(model))],

@@ -68,7 +68,10 @@ class Diagnostic:
         if self.xmi_id or self.element_kind:
             parts = []
             if self.element_kind:
-                parts.append(f"{self.element_kind} '{self.element_name or ''}'")
+                name = self.element_name or ""
+                if len(name) > 80:  # a name as long as a file: its start says enough
+                    name = name[:60] + "..."
+                parts.append(f"{self.element_kind} '{name}'")
             if self.xmi_id:
                 parts.append(self.xmi_id)
             text += f" ({', '.join(parts)})"

@@ -46,9 +46,13 @@ def _validator(rules: Path, phase: str | None) -> isoschematron.Schematron:
 
 
 def _element_id(node: etree._Element | None) -> str | None:
-    """The xmi:id a model element stands for: its own, else its nearest ancestor's."""
+    """The xmi:id a model element stands for: its own, else its nearest ancestor's.
+
+    Model elements carry it as ``xmi-id`` or ``id``; a bound component as
+    ``component``, a bound data port as ``port``.
+    """
     while node is not None:
-        for attr in ("xmi-id", "id"):
+        for attr in ("xmi-id", "id", "component", "port"):
             value = node.get(attr)
             if value:
                 return value
