@@ -453,6 +453,7 @@ def test_profile_matches_spec(profile):
         "OperationThread": (["Operation"], ["thread"]),
         "AtomicCode": (["Class"], ["header", "cppName"]),
         "Library": (["Artifact"], ["path", "target", "includeDir"]),
+        "StartAfter": (["Dependency"], []),
     }
     assert {k: (v["metas"], list(v["tags"])) for k, v in profile.items()} == expected
     assert profile["Activity"]["tags"]["scheduler"] == "OTHER"

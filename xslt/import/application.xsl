@@ -37,11 +37,21 @@
     partWithPort and its role is a port of the connector's owner; ends with
     role and part (partWithPort). A connector with an end outside the model
     (href role) is not written.
+  - Dependency (exactly xmi:type uml:Dependency, not Usage / Realization ...)
+    marked as a deployment-sequence constraint (fp:is-start-after: the
+    robomda stereotype StartAfter, else the name "startAfter", case-
+    insensitive) -> pim:dependency with its clients (the parts that start
+    later) and suppliers (the parts started first), in document order,
+    wherever it is owned (package or classifier). Every other plain
+    Dependency carries no PIM content and is not written. Clients and
+    suppliers in another model (href) are not written; a dependency left
+    without a client or a supplier is not written (with a message).
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
     xmlns:xs="http://www.w3.org/2001/XMLSchema"
     xmlns:map="http://www.w3.org/2005/xpath-functions/map"
+    xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
     xmlns:mp="urn:robomda:xslt:mode:private"
     xmlns:tp="urn:robomda:xslt:template:private"
@@ -239,6 +249,43 @@
     <xsl:param name="u" as="element()"/>
     <xsl:sequence select="(fp:targets($u, 'supplier') ! fp:interface-of(.))/."/>
   </xsl:function>
+
+  <!-- ============================================ deployment sequence -->
+  <!-- true when $d is a plain Dependency that says "client starts after
+       supplier": the robomda stereotype StartAfter (recognised by the XML
+       prefix robomda or the profile URI, as every later stage does), else
+       the name startAfter (unprofiled models, docs/profile.md) -->
+  <xsl:function name="fp:is-start-after" as="xs:boolean">
+    <xsl:param name="d" as="element()"/>
+    <xsl:sequence select="$d/@x:type eq 'Dependency'
+        and (lower-case(normalize-space($d/@name)) eq 'startafter'
+             or exists(key('fp:stereotype-by-base', fp:id($d), root($d))
+                       [local-name() eq 'StartAfter']
+                       [lower-case(string(prefix-from-QName(node-name(.)))) eq 'robomda'
+                        or namespace-uri() eq $f:profile-uri]))"/>
+  </xsl:function>
+
+  <xsl:template match="*[@x:type eq 'Dependency']" mode="mp:packageable"
+                as="element(pim:dependency)?">
+    <xsl:choose>
+      <xsl:when test="not(fp:is-start-after(.))"/>
+      <xsl:when test="empty(fp:targets(., 'client')) or empty(fp:targets(., 'supplier'))">
+        <xsl:message select="'robomda import: dependency ' || fp:label(.) || ' [xmi:id=' || fp:id(.)
+                             || '] has no client or no supplier in this model; not imported'"/>
+      </xsl:when>
+      <xsl:otherwise>
+        <pim:dependency id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+          <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
+          <xsl:for-each select="fp:targets(., 'client')">
+            <pim:client element="{fp:id(.)}"/>
+          </xsl:for-each>
+          <xsl:for-each select="fp:targets(., 'supplier')">
+            <pim:supplier element="{fp:id(.)}"/>
+          </xsl:for-each>
+        </pim:dependency>
+      </xsl:otherwise>
+    </xsl:choose>
+  </xsl:template>
 
   <!-- ========================================================= features -->
   <xsl:template match="generalization" mode="mp:feature" as="element(pim:generalization)?">

@@ -8,7 +8,7 @@
            reported element does not depend on the engine's evaluation
            order).
   Params:  none.
-  Errors:  the descriptions of IMP010-IMP019 (codes documented in
+  Errors:  the descriptions of IMP010-IMP020 (codes documented in
            import.xsl). A reference is dangling when it is an id that no
            element of the file (outside xmi:Extension) carries and that is
            not a tool built-in type (EAJava_int ...). An href into another
@@ -34,7 +34,8 @@
       'Deployment':           map { 'code': 'IMP016', 'refs': ('client', 'supplier', 'deployedArtifact', 'location') },
       'Manifestation':        map { 'code': 'IMP017', 'refs': ('client', 'supplier', 'utilizedElement') },
       'ConnectorEnd':         map { 'code': 'IMP018', 'refs': ('role', 'partWithPort') },
-      'CommunicationPath':    map { 'code': 'IMP019', 'refs': ('memberEnd') }
+      'CommunicationPath':    map { 'code': 'IMP019', 'refs': ('memberEnd') },
+      'Dependency':           map { 'code': 'IMP020', 'refs': ('client', 'supplier') }
     }"/>
 
   <!-- the metaclasses that have checked references -->
@@ -44,7 +45,11 @@
   <xsl:function name="fp:problems" as="map(*)*">
     <xsl:param name="e" as="element()"/>
     <xsl:variable name="meta" as="xs:string" select="fp:meta($e)"/>
-    <xsl:variable name="rule" as="map(*)?" select="$checked-references($meta)"/>
+    <!-- a plain Dependency is checked only when it is a deployment-sequence
+         constraint (StartAfter): every other one is not imported -->
+    <xsl:variable name="rule" as="map(*)?"
+        select="if ($meta eq 'Dependency' and not(fp:is-start-after($e))) then ()
+                else $checked-references($meta)"/>
     <xsl:if test="exists($rule)">
       <xsl:for-each select="$rule?refs">
         <xsl:variable name="prop" as="xs:string" select="."/>

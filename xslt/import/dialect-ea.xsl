@@ -26,6 +26,13 @@
     through them to the interface.
   - Component realization: EA writes a generic uml:Realization from the
     realizing class (client) to the component (supplier).
+  - Dependencies between parts (a deployment-sequence StartAfter): a
+    packagedElement xmi:type="uml:Dependency" in the package of the source
+    element, client and supplier as attributes; the stereotype is applied
+    the standard way (a top-level robomda:StartAfter with base_Dependency,
+    no xmi:id) and repeated in the xmi:Extension connector properties
+    (stereotype="StartAfter"), which is ignored like the rest of the
+    extension. Nothing dialect-specific is needed (application.xsl).
   - Tool: xmi:Documentation exporter "Enterprise Architect", the Sparx
     profile namespaces, or EAID_/EAPK_ ids.
 -->

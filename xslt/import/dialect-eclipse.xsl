@@ -18,6 +18,10 @@
     library.uml#Integer, pathmap://UML_METAMODELS/Ecore.metamodel.uml#EInt,
     pathmap://PapyrusC_Cpp_LIBRARIES/AnsiCLibrary.uml#<id> ...: the library
     patterns are data in xslt/common/primitive-types.xml.
+  - Dependencies (a deployment-sequence StartAfter between parts) are
+    packagedElements of the package Papyrus creates them in, client and
+    supplier as id attributes; the stereotype application is a top-level
+    robomda:StartAfter with base_Dependency (application.xsl reads both).
   - Empty default values are written <defaultValue xmi:type=
     "uml:LiteralString"><value xsi:nil="true"/></defaultValue>: no default.
   - Tool: Papyrus when a namespace, href or exporter names Papyrus (its

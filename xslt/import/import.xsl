@@ -12,7 +12,8 @@
            MagicDraw / Cameo (dialect-magicdraw.xsl), StarUML and Visual
            Paradigm (dialect-other.xsl).
   Writes:  a PIM valid against schemas/pim/1/pim.xsd (urn:robomda:pim:1):
-           application (application.xsl), platform (platform.xsl),
+           application (application.xsl; with the deployment-sequence
+           dependencies, pim:dependency), platform (platform.xsl),
            stereotypes and comments (stereotypes.xsl). Deterministic and
            engine-independent: no generate-id(), no clock; ids missing in
            the XMI become "robomda.<path>" (xmi-common.xsl, fp:id).
@@ -20,7 +21,8 @@
            directories; written to pim:model/@source.
   Modules: xmi-common.xsl (normalisation, keys, references, types),
            check.xsl (dangling references), application.xsl, platform.xsl,
-           stereotypes.xsl, dialect-*.xsl; data:
+           stereotypes.xsl, dialect-*.xsl, ../common/profile.xsl (the
+           robomda profile URI); data:
            ../common/primitive-types.xml.
 
   Errors (namespace urn:robomda:error, raised with f:fail; the description
@@ -46,7 +48,9 @@
             in the file.
     IMP018  a connector end whose role or partWithPort is not in the file.
     IMP019  a CommunicationPath whose memberEnd is not in the file.
-  For IMP010-IMP019 ID is the referencing element's xmi:id and the message
+    IMP020  a deployment-sequence Dependency (stereotype StartAfter, or
+            named startAfter) whose client or supplier is not in the file.
+  For IMP010-IMP020 ID is the referencing element's xmi:id and the message
   names the element, its owner, the property and the missing id. An href to
   another file (a library type, an imported model) is never dangling.
   Non-fatal notes go to xsl:message ("robomda import: ...").
@@ -65,6 +69,7 @@
 
   <xsl:include href="../common/errors.xsl"/>
   <xsl:include href="../common/indent.xsl"/>
+  <xsl:include href="../common/profile.xsl"/>
   <xsl:include href="xmi-common.xsl"/>
   <xsl:include href="check.xsl"/>
   <xsl:include href="stereotypes.xsl"/>
@@ -172,7 +177,7 @@
   </xsl:function>
 
   <!-- model checks: duplicate ids (IMP004), then the first dangling
-       reference in document order (IMP010-IMP019, check.xsl) -->
+       reference in document order (IMP010-IMP020, check.xsl) -->
   <xsl:function name="fp:check-model" as="xs:boolean">
     <xsl:param name="norm" as="document-node()"/>
     <xsl:param name="model-el" as="element()"/>

@@ -11,7 +11,8 @@
            tp:decoration).
   Params:  none.
   Errors:  none. An application whose base element is not in the PIM
-           (a Dependency, a Diagram ...) is not written.
+           (a Diagram, a plain Dependency other than a StartAfter one ...)
+           is not written.
 
   Rules
   - @name = local name of the application element; @profile = its XML

@@ -37,6 +37,11 @@
   need a transport). Peers: a reader instance gets the writer instances of a
   connection whose interface declares operations (it may call them); data
   flow alone needs no peers.
+  Deployment sequence (seed 002): the o:instance elements are written in
+  the binding's start order (pim:instance/@start-order; instances without
+  one, on a cycle of the constraints, come last in binding order), so the
+  text stage loads, configures and starts them in that order; each keeps
+  its constraints on other Orocos instances as o:start-after.
 
   Errors (urn:robomda:error, f:fail):
     ORO001  a port, operation parameter or Configurable property has a type
@@ -169,7 +174,13 @@
           </xsl:for-each>
         </o:connection>
       </xsl:for-each>
-      <xsl:for-each select="$instances">
+      <xsl:variable name="in-start-order" as="element(pim:instance)*">
+        <xsl:perform-sort select="$instances">
+          <xsl:sort select="empty(@start-order)"/>
+          <xsl:sort select="xs:integer((@start-order, 0)[1])"/>
+        </xsl:perform-sort>
+      </xsl:variable>
+      <xsl:for-each select="$in-start-order">
         <xsl:sequence select="fp:instance(., $pkg, $b, $task-contexts)"/>
       </xsl:for-each>
     </o:deployment>
@@ -413,6 +424,9 @@
       </xsl:for-each>
       <xsl:for-each select="$tc/o:property[@xml-default]">
         <o:property-value name="{@name}" xml-type="{@xml-type}" value="{@xml-default}" script-value="{@script-default}"/>
+      </xsl:for-each>
+      <xsl:for-each select="$i/pim:start-after[fp:orocos-instances(key('fp:instance', @instance, root($i)), $b)]">
+        <o:start-after instance="{@instance}" xmi-id="{@xmi-id}"/>
       </xsl:for-each>
     </o:instance>
   </xsl:function>

@@ -26,6 +26,12 @@
   - Properties: only names the component declares, with the model defaults.
   - AutoConf and AutoStart are 1 (XML); .ops and Lua configure all, then
     start all, in instance order.
+  - Deployment sequence (seed 002): the PSM's instance order is the start
+    order, so every file loads, configures and starts in it. The cpf
+    format has no order setting: the OCL deployer configures and starts
+    the components of a file in the order of their struct elements, which
+    is why the XML lists them in start order. When the model has StartAfter
+    constraints, each file says so in a comment (fp:sequence-note).
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -66,6 +72,15 @@
                           return ($w/@instance || '.' || $w/@port, $r/@instance || '.' || $r/@port)"/>
   </xsl:function>
 
+  <!-- "controller after arm, vision; ..." for the instances with
+       constraints; () when the deployment has none -->
+  <xsl:function name="fp:sequence-note" as="xs:string?">
+    <xsl:param name="d" as="element(o:deployment)"/>
+    <xsl:variable name="constrained" as="element(o:instance)*" select="$d/o:instance[o:start-after]"/>
+    <xsl:sequence select="if (empty($constrained)) then ()
+        else string-join($constrained ! (@name || ' after ' || string-join(distinct-values(o:start-after/@instance), ', ')), '; ')"/>
+  </xsl:function>
+
   <!-- ======================================================= XML -->
   <xsl:function name="fp:deploy-xml" as="xs:string">
     <xsl:param name="d" as="element(o:deployment)"/>
@@ -90,6 +105,9 @@
           '    ' || fp:simple('init', 'boolean', if (xs:boolean(@init)) then '1' else '0'),
           '    ' || fp:simple('pull', 'boolean', if (xs:boolean(@pull)) then '1' else '0'),
           '  &lt;/struct&gt;'),
+        for $note in fp:sequence-note($d)
+        return ('', '  &lt;!-- deployment sequence: ' || $note || '. The deployer loads, configures and starts',
+                '       the components in the order of this file. --&gt;'),
         $d/o:instance ! fp:xml-instance(.),
         '&lt;/properties&gt;'))"/>
   </xsl:function>
@@ -153,6 +171,7 @@
                  return 'connect(' || fp:cpp-string($e[2 * $j - 1]) || ', ' || fp:cpp-string($e[2 * $j]) || ', cp_' || $k/@name || ')'),
         '',
         '// lifecycle',
+        fp:sequence-note($d) ! ('// in start order (deployment sequence: ' || . || ')'),
         $d/o:instance ! (@name || '.configure()'),
         $d/o:instance ! (@name || '.start()')))"/>
   </xsl:function>
@@ -248,6 +267,7 @@
           '  end'),
         '',
         '  -- lifecycle: configure all, then start all',
+        fp:sequence-note($d) ! ('  -- in start order (deployment sequence: ' || . || ')'),
         '  for _, n in ipairs(names) do check(comps[n]:configure(), &quot;configure &quot; .. n) end',
         '  for _, n in ipairs(names) do check(comps[n]:start(), &quot;start &quot; .. n) end',
         '',
