@@ -8,7 +8,7 @@
            reported element does not depend on the engine's evaluation
            order).
   Params:  none.
-  Errors:  the descriptions of IMP010-IMP020 (codes documented in
+  Errors:  the descriptions of IMP010-IMP021 (codes documented in
            import.xsl). A reference is dangling when it is an id that no
            element of the file (outside xmi:Extension) carries and that is
            not a tool built-in type (EAJava_int ...). An href into another
@@ -64,6 +64,34 @@
         </xsl:for-each>
       </xsl:for-each>
     </xsl:if>
+    <xsl:if test="$meta eq 'Generalization' and fp:generalizes-itself($e)">
+      <xsl:sequence select="map {
+          'code': 'IMP021',
+          'id': fp:id($e),
+          'message': fp:describe($e) || ' makes ' || fp:label($e/..) || ' a specialization of itself'
+                     || ' (cyclic generalization through ' || string-join(fp:targets($e, 'general') ! fp:label(.), ', ')
+                     || '): remove one generalization of the cycle'
+        }"/>
+    </xsl:if>
+  </xsl:function>
+
+  <!-- true when going up the generalizations from the general of $g comes
+       back to the classifier that owns $g -->
+  <xsl:function name="fp:generalizes-itself" as="xs:boolean">
+    <xsl:param name="g" as="element()"/>
+    <xsl:sequence select="fp:reaches(fp:targets($g, 'general'), $g/.., ())"/>
+  </xsl:function>
+
+  <!-- breadth-first up the generalizations, each classifier visited once -->
+  <xsl:function name="fp:reaches" as="xs:boolean">
+    <xsl:param name="front" as="element()*"/>
+    <xsl:param name="target" as="element()"/>
+    <xsl:param name="seen" as="element()*"/>
+    <xsl:sequence select="
+        if (empty($front)) then false()
+        else if (some $c in $front satisfies $c is $target) then true()
+        else fp:reaches(($front/*[fp:meta(.) eq 'Generalization'] ! fp:targets(., 'general'))
+                          except ($seen | $front), $target, $seen | $front)"/>
   </xsl:function>
 
   <!-- "Property 'speed' of Class 'Arm'" -->

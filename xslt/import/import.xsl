@@ -50,7 +50,9 @@
     IMP019  a CommunicationPath whose memberEnd is not in the file.
     IMP020  a deployment-sequence Dependency (stereotype StartAfter, or
             named startAfter) whose client or supplier is not in the file.
-  For IMP010-IMP020 ID is the referencing element's xmi:id and the message
+    IMP021  a Generalization that makes its classifier a specialization of
+            itself (a cycle of generalizations).
+  For IMP010-IMP021 ID is the referencing element's xmi:id and the message
   names the element, its owner, the property and the missing id. An href to
   another file (a library type, an imported model) is never dangling.
   Non-fatal notes go to xsl:message ("robomda import: ...").
@@ -177,7 +179,7 @@
   </xsl:function>
 
   <!-- model checks: duplicate ids (IMP004), then the first dangling
-       reference in document order (IMP010-IMP020, check.xsl) -->
+       reference in document order (IMP010-IMP021, check.xsl) -->
   <xsl:function name="fp:check-model" as="xs:boolean">
     <xsl:param name="norm" as="document-node()"/>
     <xsl:param name="model-el" as="element()"/>
