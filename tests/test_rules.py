@@ -62,6 +62,8 @@ CASES_BY_RULE: dict[str, tuple[Path, str | None, Path, list[tuple[str, str]]]] =
     "CMP001": (PIM_RULES, None, PID_PIM, [('host="_pid000node"', 'host=""')]),
     "CMP002": (PIM_RULES, None, PID_PIM, [('<pim:instance name="PIDController"',
                                           '<pim:instance name="TrajectoryGenerator"')]),
+    "CMP006": (PIM_RULES, None, PID_PIM, [_SECOND_HOST, (r'(<pim:instance name="RobotInterface".*?<pim:activity [^>]*/>\s*)',
+                                          r'\1<pim:deployed-on deployment="_d9" host="_h2"/>')]),
     "CMP003": (PIM_RULES, None, PID_PIM, [_SECOND_HOST, _ROBOT_ON_H2]),
     "CMP004": (PIM_RULES, None, PID_PIM, [_SECOND_HOST, _ROBOT_ON_H2]),
     "CMP005": (PIM_RULES, None, PID_PIM, [(r'(<pim:instance name="PIDController"[^>]*?) start-order="2">',

@@ -568,6 +568,19 @@
       </xsl:for-each>
       <xsl:if test="$r"><xsl:attribute name="realization" select="$r/@id"/></xsl:if>
       <xsl:sequence select="fp:activity(($part, $c, $r), $r, $ee, $inst-id)"/>
+      <!-- every deployment that reaches the instance, so the deployment
+           rules (schemas/pim/1/pim.sch) can see one deployed twice -->
+      <xsl:for-each select="$deployments">
+        <xsl:variable name="d-ee" as="element(pim:node)?"
+            select="if (../@kind eq 'execution-environment') then ..
+                    else (..//pim:node[@kind eq 'execution-environment'])[1]"/>
+        <xsl:variable name="d-host" as="element(pim:node)?"
+            select="($d-ee/ancestor::pim:node[. intersect $hosts][1], ..[. intersect $hosts])[1]"/>
+        <pim:deployed-on deployment="{@id}">
+          <xsl:if test="$d-ee"><xsl:attribute name="execution-environment" select="$d-ee/@id"/></xsl:if>
+          <xsl:if test="$d-host"><xsl:attribute name="host" select="$d-host/@id"/></xsl:if>
+        </pim:deployed-on>
+      </xsl:for-each>
     </pim:instance>
   </xsl:function>
 
