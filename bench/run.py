@@ -7,7 +7,7 @@ For each size it writes a synthetic ring model (bench/synth.py), then, in a
 fresh process per size (so peak memory is that size's own), runs the Orocos
 chain end to end (XMI to files on disk) after one warm-up run on a tiny model
 (so stylesheet compilation is not counted) and reports: wall time, time in
-XSLT and in XSD validation per step, peak resident memory, and a SaxonC
+XSLT, in XSD validation and in the Schematron rules per step, peak resident memory, and a SaxonC
 identity transform of the same XMI as a floor. Every figure comes from the
 same run; compare ratios, not absolute seconds, across machines.
 
@@ -65,9 +65,10 @@ def _one(size: int, workdir: Path) -> dict[str, object]:
         "size": size,
         "xmi_bytes": model.stat().st_size,
         "wall_s": wall,
-        "xslt_s": sum(t for _, t, _ in done.timings),
-        "xsd_s": sum(v for _, _, v in done.timings),
-        "steps": [[name, t, v] for name, t, v in done.timings],
+        "xslt_s": sum(t for _, t, _, _ in done.timings),
+        "xsd_s": sum(v for _, _, v, _ in done.timings),
+        "rules_s": sum(r for _, _, _, r in done.timings),
+        "steps": [[name, t, v, r] for name, t, v, r in done.timings],
         "identity_s": floor,
         "files": len(done.report.written) if done.report else 0,
         "peak_rss_mib": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024,
@@ -153,15 +154,15 @@ def main() -> int:
                 return 1
             rows.append(json.loads(proc.stdout.strip().splitlines()[-1]))
 
-    print(f"{'components':>10} {'XMI MiB':>8} {'total s':>8} {'XSLT s':>7} {'XSD s':>7} "
+    print(f"{'components':>10} {'XMI MiB':>8} {'total s':>8} {'XSLT s':>7} {'XSD s':>7} {'rules s':>7} "
           f"{'identity s':>10} {'total/identity':>14} {'peak MiB':>9} {'files':>6}")
     for r in rows:
         print(f"{r['size']:>10} {r['xmi_bytes'] / 2**20:>8.1f} {r['wall_s']:>8.2f} {r['xslt_s']:>7.2f} "
-              f"{r['xsd_s']:>7.2f} {r['identity_s']:>10.3f} {r['wall_s'] / r['identity_s']:>14.1f} "
+              f"{r['xsd_s']:>7.2f} {r['rules_s']:>7.2f} {r['identity_s']:>10.3f} {r['wall_s'] / r['identity_s']:>14.1f} "
               f"{r['peak_rss_mib']:>9.0f} {r['files']:>6}")
-    print("\nper step (XSLT s / XSD s):")
+    print("\nper step (XSLT s / XSD s / rules s):")
     for r in rows:
-        print(f"  {r['size']:>6}: " + ", ".join(f"{n} {t:.2f}/{v:.2f}" for n, t, v in r["steps"]))
+        print(f"  {r['size']:>6}: " + ", ".join(f"{n} {t:.2f}/{v:.2f}/{c:.2f}" for n, t, v, c in r["steps"]))
     print()
     for line in batch_lines:
         print(line)

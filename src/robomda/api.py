@@ -39,7 +39,7 @@ class Generated:
 
     stages: dict[str, str]
     report: WriteReport | None
-    timings: list[tuple[str, float, float]]
+    timings: list[tuple[str, float, float, float]]
     warnings: list[Diagnostic]
 
 

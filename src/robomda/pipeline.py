@@ -76,8 +76,8 @@ class RunResult:
 
     stages: dict[str, str] = field(default_factory=dict)
     tree: etree._Element | None = None
-    # per step: (name, seconds in XSLT, seconds in XSD validation)
-    timings: list[tuple[str, float, float]] = field(default_factory=list)
+    # per step: (name, seconds in XSLT, in XSD validation, in Schematron rules)
+    timings: list[tuple[str, float, float, float]] = field(default_factory=list)
     # warnings and infos: from the stylesheets (f:warn) and from the rules,
     # located in the XMI, in the order the steps found them
     warnings: list[Diagnostic] = field(default_factory=list)
@@ -155,7 +155,7 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
                 result.warnings.append(locator.diagnostic(code, text_, xmi_id, severity="warning", step=step.name))
         transformed = time.perf_counter()
         tree, violations = validate(text, step.schema)
-        result.timings.append((step.name, transformed - started, time.perf_counter() - transformed))
+        validated = time.perf_counter()
         if violations:
             raise RobomdaError([
                 locator.diagnostic("SCHEMA", f"the {step.name} step wrote a model that breaks "
@@ -166,6 +166,8 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
             if any(d.severity == "error" for d in found):
                 raise RobomdaError(result.warnings + found, EXIT_FINDINGS)
             result.warnings.extend(found)
+        result.timings.append((step.name, transformed - started, validated - transformed,
+                               time.perf_counter() - validated))
         result.stages[step.name] = text
         result.tree = tree
         previous = text
