@@ -53,7 +53,7 @@
     <xsl:if test="exists($rule)">
       <xsl:for-each select="$rule?refs">
         <xsl:variable name="prop" as="xs:string" select="."/>
-        <xsl:for-each select="fp:dangling($e, fp:refs($e, $prop))">
+        <xsl:for-each select="fp:dangling-ids($e, fp:ref-ids($e, $prop))">
           <xsl:sequence select="map {
               'code': $rule?code,
               'id': fp:id($e),

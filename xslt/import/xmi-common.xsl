@@ -87,15 +87,25 @@
        (no namespace, a namespace of $common-xmi-ns / $common-uml-ns) have
        their own rules; the regular expressions run only for the rest. -->
   <xsl:mode name="mp:normalise" on-no-match="shallow-copy"/>
-  <!-- hook for dialect modules: extra attributes on a normalised element -->
+  <!-- hook for dialect modules: extra attributes on a normalised element
+       that has an href (a reference into another file: the only elements
+       a dialect annotates; testing @href first spares a template dispatch
+       per element) -->
   <xsl:mode name="mp:normalise-extra" on-no-match="deep-skip"/>
 
   <!-- elements in no namespace (most of an XMI file) -->
   <xsl:template match="*[namespace-uri() eq '']" mode="mp:normalise" priority="2" as="element()">
     <xsl:copy copy-namespaces="no">
       <xsl:apply-templates select="@*" mode="mp:normalise"/>
-      <xsl:call-template name="tp:default-meta"/>
-      <xsl:apply-templates select="." mode="mp:normalise-extra"/>
+      <!-- x:type of an element without xmi:type: the declared type of its
+           feature -->
+      <xsl:variable name="meta" as="xs:string?" select="$default-metas(local-name())"/>
+      <xsl:if test="exists($meta)
+                    and not(@*[local-name() eq 'type'][namespace-uri()]
+                              [namespace-uri() = $common-xmi-ns or fp:is-xmi-ns(namespace-uri())])">
+        <xsl:attribute name="x:type" select="$meta"/>
+      </xsl:if>
+      <xsl:apply-templates select=".[@href]" mode="mp:normalise-extra"/>
       <xsl:apply-templates select="node()" mode="mp:normalise"/>
     </xsl:copy>
   </xsl:template>
@@ -109,10 +119,11 @@
   <xsl:template name="tp:normalise-uml" as="element()">
     <xsl:element name="u:{local-name()}" namespace="{$U}">
       <xsl:apply-templates select="@*" mode="mp:normalise"/>
-      <xsl:if test="not(@*[local-name() eq 'type'][fp:is-xmi-ns(namespace-uri())])">
+      <xsl:if test="not(@*[local-name() eq 'type']
+                          [namespace-uri() = $common-xmi-ns or fp:is-xmi-ns(namespace-uri())])">
         <xsl:attribute name="x:type" namespace="{$X}" select="local-name()"/>
       </xsl:if>
-      <xsl:apply-templates select="." mode="mp:normalise-extra"/>
+      <xsl:apply-templates select=".[@href]" mode="mp:normalise-extra"/>
       <xsl:apply-templates select="node()" mode="mp:normalise"/>
     </xsl:element>
   </xsl:template>
@@ -136,21 +147,11 @@
           <xsl:if test="$ns eq $U and not(@*[local-name() eq 'type'][fp:is-xmi-ns(namespace-uri())])">
             <xsl:attribute name="x:type" namespace="{$X}" select="local-name()"/>
           </xsl:if>
-          <xsl:apply-templates select="." mode="mp:normalise-extra"/>
+          <xsl:apply-templates select=".[@href]" mode="mp:normalise-extra"/>
           <xsl:apply-templates select="node()" mode="mp:normalise"/>
         </xsl:element>
       </xsl:otherwise>
     </xsl:choose>
-  </xsl:template>
-
-  <!-- x:type of a no-namespace element without xmi:type: the declared type
-       of its feature -->
-  <xsl:template name="tp:default-meta" as="attribute()?">
-    <xsl:variable name="meta" as="xs:string?" select="$default-metas(local-name())"/>
-    <xsl:if test="exists($meta)
-                  and not(@*[local-name() eq 'type'][namespace-uri()][fp:is-xmi-ns(namespace-uri())])">
-      <xsl:attribute name="x:type" namespace="{$X}" select="$meta"/>
-    </xsl:if>
   </xsl:template>
 
   <!-- tool extension blocks carry no UML semantics: dropped -->
@@ -171,21 +172,37 @@
     <xsl:call-template name="tp:normalise-xmi-attribute"/>
   </xsl:template>
 
+  <!-- xmi:id and xmi:type (nearly every XMI attribute) with a fixed name:
+       cheaper than a computed one -->
   <xsl:template name="tp:normalise-xmi-attribute" as="attribute()">
-    <xsl:attribute name="x:{local-name()}" namespace="{$X}"
-        select="if (local-name() = 'type') then fp:norm-type(.) else string(.)"/>
+    <xsl:variable name="name" as="xs:string" select="local-name()"/>
+    <xsl:choose>
+      <xsl:when test="$name eq 'id'">
+        <xsl:attribute name="x:id" select="string(.)"/>
+      </xsl:when>
+      <xsl:when test="$name eq 'type'">
+        <xsl:attribute name="x:type" select="fp:norm-type(.)"/>
+      </xsl:when>
+      <xsl:otherwise>
+        <xsl:attribute name="x:{$name}" namespace="{$X}" select="string(.)"/>
+      </xsl:otherwise>
+    </xsl:choose>
   </xsl:template>
 
-  <!-- xmi:type="uml:Class" -> "Class"; a non-UML type -> "{uri}local" -->
+  <!-- xmi:type="uml:Class" -> "Class"; a non-UML type -> "{uri}local".
+       The UML namespace is tested with "=" first, the pattern only for
+       other URIs; the common one-colon value is cut with substring-after. -->
   <xsl:function name="fp:norm-type" as="xs:string">
     <xsl:param name="a" as="attribute()"/>
     <xsl:variable name="v" as="xs:string" select="normalize-space($a)"/>
     <xsl:variable name="prefix" as="xs:string" select="substring-before($v, ':')"/>
+    <xsl:variable name="local" as="xs:string" select="substring-after($v, ':')"/>
     <xsl:variable name="uri" as="xs:string"
         select="if ($prefix) then string(namespace-uri-for-prefix($prefix, $a/..)) else ''"/>
-    <xsl:sequence select="if (not(contains($v, ':')) or $uri = $common-uml-ns or fp:is-uml-ns($uri))
-                          then replace($v, '^.*:', '')
-                          else '{' || $uri || '}' || substring-after($v, ':')"/>
+    <xsl:sequence select="if (not(contains($v, ':'))) then $v
+                          else if ($uri = $common-uml-ns or fp:is-uml-ns($uri))
+                          then (if (contains($local, ':')) then replace($v, '^.*:', '') else $local)
+                          else '{' || $uri || '}' || $local"/>
   </xsl:function>
 
   <!-- ================================================================ keys -->
@@ -321,12 +338,13 @@
     <xsl:sequence select="fp:ref-ids($e, $prop) ! fp:element($e, .)"/>
   </xsl:function>
 
-  <!-- the ids among $refs that are neither in the file nor a tool built-in -->
-  <xsl:function name="fp:dangling" as="xs:string*">
+  <!-- the ids among $ids (fp:ref-ids: the references inside the file;
+       hrefs are never dangling) that are neither in the file nor a tool
+       built-in -->
+  <xsl:function name="fp:dangling-ids" as="xs:string*">
     <xsl:param name="ctx" as="node()"/>
-    <xsl:param name="refs" as="map(*)*"/>
-    <xsl:sequence select="$refs[map:contains(., 'id')] ! .?id
-                          [empty(fp:element($ctx, .))][empty(fp:builtin-library(.))]"/>
+    <xsl:param name="ids" as="xs:string*"/>
+    <xsl:sequence select="$ids[empty(fp:element($ctx, .))][empty(fp:builtin-library(.))]"/>
   </xsl:function>
 
   <!-- ================================================ qualified names -->
