@@ -132,7 +132,9 @@
     <xsl:sequence select="fp:check-references(.)"/>
     <xsl:copy>
       <xsl:copy-of select="@*"/>
-      <xsl:apply-templates select="node() except pim:binding" mode="m:bind"/>
+      <!-- no m:bind rule matches below pim:model: a deep copy, not a
+           template dispatch per node -->
+      <xsl:copy-of select="node() except pim:binding"/>
       <xsl:call-template name="fp:binding"/>
     </xsl:copy>
   </xsl:template>
