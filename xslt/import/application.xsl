@@ -347,9 +347,11 @@
       <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
       <!-- a void return parameter is no return (EA writes one for every
            operation) -->
-      <xsl:for-each select="ownedParameter[not(@direction = 'return' and fp:typed(., $href-types)[name() eq 'primitive'] = 'void')]">
+      <xsl:for-each select="ownedParameter">
+        <xsl:variable name="typed" as="attribute()*" select="fp:typed(., $href-types)"/>
+        <xsl:if test="not(@direction = 'return' and $typed[name() eq 'primitive'] = 'void')">
         <pim:parameter id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
-          <xsl:sequence select="fp:typed(., $href-types)"/>
+          <xsl:sequence select="$typed"/>
           <xsl:attribute name="direction"
               select="if (@direction = ('in', 'out', 'inout', 'return')) then string(@direction) else 'in'"/>
           <xsl:for-each select="fp:default(.)">
@@ -357,6 +359,7 @@
           </xsl:for-each>
           <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
         </pim:parameter>
+        </xsl:if>
       </xsl:for-each>
     </pim:operation>
   </xsl:template>

@@ -310,19 +310,6 @@
                            $e/*[local-name() eq $prop][namespace-uri() eq '']/@x:idref/string())"/>
   </xsl:function>
 
-  <!-- all references of property $prop, as maps: map{'id': ...} for a
-       reference inside the file, map{'href': ..., 'el': ...} for an href -->
-  <xsl:function name="fp:refs" as="map(*)*">
-    <xsl:param name="e" as="element()"/>
-    <xsl:param name="prop" as="xs:string"/>
-    <xsl:sequence select="
-        ($e/@*[local-name() eq $prop][namespace-uri() eq '']/tokenize(.) ! map { 'id': . },
-         for $c in $e/*[local-name() eq $prop][namespace-uri() eq '']
-         return if ($c/@x:idref) then map { 'id': string($c/@x:idref) }
-                else if ($c/@href) then map { 'href': string($c/@href), 'el': $c }
-                else ())"/>
-  </xsl:function>
-
   <!-- the element with xmi:id $id in the document of $ctx -->
   <xsl:function name="fp:element" as="element()?">
     <xsl:param name="ctx" as="node()"/>
@@ -482,23 +469,30 @@
   <xsl:function name="fp:typed" as="attribute()*">
     <xsl:param name="e" as="element()"/>
     <xsl:param name="href-types" as="map(xs:string, map(*))"/>
-    <xsl:variable name="ref" as="map(*)?" select="fp:refs($e, 'type')[1]"/>
+    <!-- the first type reference: an id of the type attribute, else the
+         first type child with an xmi:idref (an id) or an href -->
+    <xsl:variable name="attr-id" as="xs:string?" select="tokenize($e/@type)[1]"/>
+    <xsl:variable name="child" as="element()?"
+        select="if (exists($attr-id)) then () else $e/type[@x:idref or @href][1]"/>
+    <xsl:variable name="id" as="xs:string?"
+        select="if (exists($attr-id)) then $attr-id else $child/@x:idref/string()"/>
+    <xsl:variable name="href" as="xs:string?" select="if (exists($id)) then () else $child/@href/string()"/>
+    <xsl:variable name="t" as="element()?" select="if (exists($id)) then fp:element($e, $id) else ()"/>
     <xsl:choose>
-      <xsl:when test="empty($ref)"/>
-      <xsl:when test="map:contains($ref, 'href')">
-        <xsl:variable name="info" as="map(*)" select="($href-types($ref?href), fp:href-type($ref?href))[1]"/>
+      <xsl:when test="empty($id) and empty($href)"/>
+      <xsl:when test="exists($href)">
+        <xsl:variable name="info" as="map(*)" select="($href-types($href), fp:href-type($href))[1]"/>
         <xsl:variable name="lib" as="xs:string" select="$info?library"/>
-        <xsl:variable name="dialect-name" as="xs:boolean" select="exists($ref?el/@x:referent-path)"/>
+        <xsl:variable name="dialect-name" as="xs:boolean" select="exists($child/@x:referent-path)"/>
         <xsl:variable name="name" as="xs:string"
-            select="if ($dialect-name) then fp:href-name($ref?href, $ref?el) else $info?name"/>
+            select="if ($dialect-name) then fp:href-name($href, $child) else $info?name"/>
         <xsl:attribute name="type-name" select="$name"/>
         <xsl:attribute name="type-library" select="$lib"/>
         <xsl:for-each select="if ($dialect-name) then fp:primitive-kind($lib, $name) else $info?kind">
           <xsl:attribute name="primitive" select="."/>
         </xsl:for-each>
       </xsl:when>
-      <xsl:when test="exists(fp:element($e, $ref?id))">
-        <xsl:variable name="t" as="element()" select="fp:element($e, $ref?id)"/>
+      <xsl:when test="exists($t)">
         <xsl:attribute name="type" select="fp:id($t)"/>
         <xsl:attribute name="type-name" select="string($t/@name)"/>
         <xsl:attribute name="type-library" select="'local'"/>
@@ -508,9 +502,9 @@
           </xsl:for-each>
         </xsl:if>
       </xsl:when>
-      <xsl:when test="exists(fp:builtin-library($ref?id))">
-        <xsl:variable name="lib" as="xs:string" select="fp:builtin-library($ref?id)"/>
-        <xsl:variable name="name" as="xs:string" select="fp:builtin-name($ref?id)"/>
+      <xsl:when test="exists(fp:builtin-library($id))">
+        <xsl:variable name="lib" as="xs:string" select="fp:builtin-library($id)"/>
+        <xsl:variable name="name" as="xs:string" select="fp:builtin-name($id)"/>
         <xsl:attribute name="type-name" select="$name"/>
         <xsl:attribute name="type-library" select="$lib"/>
         <xsl:for-each select="fp:primitive-kind($lib, $name)">
