@@ -3,7 +3,7 @@
   xslt/import/dialect-magicdraw.xsl - MagicDraw / Cameo quirks (XMI 2.4, 2.5).
 
   Reads:   the original XMI (mode mp:normalise-extra, called by the
-           normalisation in xmi-common.xsl for every element).
+           normalisation in xmi-common.xsl for every element with an href).
   Writes:  attribute x:referent-path on normalised elements.
   Params:  none.
   Errors:  none.
