@@ -104,6 +104,16 @@ def _usage_target(target: str) -> None:
                                        f"{', '.join(targets())})")], EXIT_INPUT)
 
 
+def _type_map(type_map: Path | str | None) -> Path | None:
+    """The user's type-map file, which must exist when given."""
+    if type_map is None:
+        return None
+    if not Path(type_map).is_file():
+        raise RobomdaError([Diagnostic("error", "IO001", f"no such type-map file: {type_map}", file=str(type_map))],
+                           EXIT_INPUT)
+    return Path(type_map)
+
+
 def check(model: Path | str, target: str | None = None, *, package_name: str = "",
           type_map: Path | str | None = None) -> Checked:
     """Run the checks of ``model`` without generating anything.
@@ -119,7 +129,7 @@ def check(model: Path | str, target: str | None = None, *, package_name: str = "
     if target is not None:
         _usage_target(target)
     _check_readable(model)
-    context = _context(model, None, package_name, Path(type_map) if type_map is not None else None)
+    context = _context(model, None, package_name, _type_map(type_map))
     chosen = [target] if target is not None else []
     diagnostics: list[Diagnostic] = []
     exit_code = EXIT_OK
@@ -131,7 +141,7 @@ def check(model: Path | str, target: str | None = None, *, package_name: str = "
         try:
             result = pipelines.run(chain, _engine(), model, context, steps=steps)
         except RobomdaError as exc:
-            if exc.exit_code not in (EXIT_FINDINGS,):
+            if exc.exit_code != EXIT_FINDINGS:
                 raise
             exit_code = EXIT_FINDINGS
             _add(diagnostics, exc.diagnostics)
@@ -175,10 +185,7 @@ def generate(model: Path | str, out: Path | str | None, target: str = "orocos", 
     _check_readable(model)
     out_path = Path(out) if out is not None else None
     chain = pipelines.load(pipeline_path(target))
-    if type_map is not None and not Path(type_map).is_file():
-        raise RobomdaError([Diagnostic("error", "IO001", f"no such type-map file: {type_map}", file=str(type_map))],
-                           EXIT_INPUT)
-    context = _context(model, out_path, package_name, Path(type_map) if type_map is not None else None)
+    context = _context(model, out_path, package_name, _type_map(type_map))
     result = pipelines.run(chain, _engine(), model, context)
     report = None
     if write and out_path is not None and chain.yields == "files" and result.tree is not None:

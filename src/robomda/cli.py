@@ -11,7 +11,7 @@ from lxml import etree
 from robomda import __version__
 from robomda.api import check, generate, import_model, targets
 from robomda.batch import ProgressBar, run_batch
-from robomda.diagnostics import EXIT_FINDINGS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, Diagnostic, RobomdaError
+from robomda.diagnostics import EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, Diagnostic, RobomdaError
 from robomda.formats import FORMATS, render
 from robomda.output import atomic_write
 
