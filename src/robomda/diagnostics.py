@@ -25,6 +25,7 @@ __all__ = [
     "EXIT_INTERNAL",
     "parse_stylesheet_error",
     "parse_stylesheet_warning",
+    "model_element_id",
 ]
 
 EXIT_OK = 0
@@ -103,6 +104,21 @@ def parse_stylesheet_error(text: str) -> tuple[str, str, str] | None:
     if not match:
         return None
     return match["code"], " ".join(match["message"].split()), match["id"]
+
+
+def model_element_id(node: etree._Element | None) -> str | None:
+    """The xmi:id an element of a robomda model stands for: its own, else its nearest ancestor's.
+
+    Model elements carry it as ``xmi-id`` or ``id``; a bound component as
+    ``component``, a bound data port as ``port``.
+    """
+    while node is not None:
+        for attr in ("xmi-id", "id", "component", "port"):
+            value = node.get(attr)
+            if value:
+                return value
+        node = node.getparent()
+    return None
 
 
 @dataclass(frozen=True)

@@ -19,7 +19,7 @@ from pathlib import Path
 
 from lxml import etree, isoschematron
 
-from robomda.diagnostics import Diagnostic, XmiLocator
+from robomda.diagnostics import Diagnostic, XmiLocator, model_element_id
 
 __all__ = ["Finding", "run_rules", "SEVERITIES"]
 
@@ -45,21 +45,6 @@ def _validator(rules: Path, phase: str | None) -> isoschematron.Schematron:
     return _COMPILED[key]
 
 
-def _element_id(node: etree._Element | None) -> str | None:
-    """The xmi:id a model element stands for: its own, else its nearest ancestor's.
-
-    Model elements carry it as ``xmi-id`` or ``id``; a bound component as
-    ``component``, a bound data port as ``port``.
-    """
-    while node is not None:
-        for attr in ("xmi-id", "id", "component", "port"):
-            value = node.get(attr)
-            if value:
-                return value
-        node = node.getparent()
-    return None
-
-
 def findings(rules: Path, phase: str | None, tree: etree._Element) -> list[Finding]:
     """Every failed assert and successful report of ``rules`` on ``tree``, in report order."""
     validator = _validator(rules, phase)
@@ -74,7 +59,7 @@ def findings(rules: Path, phase: str | None, tree: etree._Element) -> list[Findi
         message = " ".join("".join(item.findtext(f"{{{_SVRL}}}text") or "").split())
         located = doc.xpath(item.get("location", "/")) if item.get("location") else []
         node = located[0] if located and isinstance(located[0], etree._Element) else None
-        result.append(Finding(item.get("id") or "RULE", severity, message, _element_id(node)))
+        result.append(Finding(item.get("id") or "RULE", severity, message, model_element_id(node)))
     return result
 
 

@@ -21,6 +21,8 @@ from pathlib import Path
 import xmlschema
 from lxml import etree
 
+from robomda.diagnostics import model_element_id
+
 __all__ = ["Violation", "validate", "parse"]
 
 _FAST: dict[Path, etree.XMLSchema] = {}
@@ -70,7 +72,7 @@ def validate(text: str, schema_path: Path, *, limit: int = 20) -> tuple[etree._E
     found: list[Violation] = []
     for error in _explain(schema_path).iter_errors(root):
         elem = error.elem if isinstance(error.elem, etree._Element) else None
-        found.append(Violation(error.reason or str(error.message), error.path or "", _nearest_id(elem)))
+        found.append(Violation(error.reason or str(error.message), error.path or "", model_element_id(elem)))
         if len(found) >= limit:
             break
     if not found:  # the validators disagree: report libxml2's own findings
@@ -78,12 +80,3 @@ def validate(text: str, schema_path: Path, *, limit: int = 20) -> tuple[etree._E
             found.append(Violation(entry.message, f"line {entry.line}", None))
     return root, found
 
-
-def _nearest_id(elem: etree._Element | None) -> str | None:
-    while elem is not None:
-        for attr in ("xmi-id", "id"):
-            value = elem.get(attr)
-            if value:
-                return value
-        elem = elem.getparent()
-    return None
