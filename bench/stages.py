@@ -1,4 +1,5 @@
-"""Time each stylesheet of a chain alone (no validation, no writing), by model size.
+"""Time each stylesheet of a chain alone (no validation, no writing; each
+stage includes writing its result as text, as the pipeline does), by model size.
 
     python bench/stages.py 500 1000 2000      # sizes of bench/synth.py models
 
@@ -34,14 +35,15 @@ def main(sizes: list[int], target: str = "orocos") -> None:
     with tempfile.TemporaryDirectory() as tmp:
         for size in sizes:
             model = write_model(size, Path(tmp) / f"synth-{size}.xmi")
-            text: str | None = None
+            source: object = model
             row = []
-            for step in chain.steps:
+            for index, step in enumerate(chain.steps):
                 params = {p.name: p.value if p.value is not None else context.get(p.source or "", "")
                           for p in step.params}
                 started = time.perf_counter()
-                text = (engine.transform(step.stylesheet, params, source_file=model) if text is None
-                        else engine.transform(step.stylesheet, params, source_text=text))
+                # as the pipeline does: each stage's tree is the next one's source
+                text, tree = engine.run(step.stylesheet, params, source, keep_tree=index < len(chain.steps) - 1)
+                source = tree if tree is not None else text
                 row.append(f"{step.name} {time.perf_counter() - started:.2f}s ({len(text) // 1024} KiB)")
             print(f"{size:>6}: " + ", ".join(row), flush=True)
 

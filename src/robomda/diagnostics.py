@@ -37,7 +37,9 @@ EXIT_INTERNAL = 3  # a bug in robomda (never a traceback: reported like this)
 # has an error": they exit with EXIT_INPUT.
 INPUT_CODES = frozenset({"XML001", "IO001", "IMP001", "IMP002"})
 
-_STYLESHEET_ERROR = re.compile(r"(?P<code>[A-Z]{2,5}[0-9]{3}): (?P<message>.*?) \[xmi:id=(?P<id>[^\]]*)\]\s*$", re.S)
+# Saxon may follow the description with its own trace ("During lazy
+# evaluation of ..."), depending on how the transform was called
+_STYLESHEET_ERROR = re.compile(r"(?P<code>[A-Z]{2,5}[0-9]{3}): (?P<message>.*?) \[xmi:id=(?P<id>[^\]]*)\](?=\s|$)", re.S)
 
 
 @dataclass(frozen=True)

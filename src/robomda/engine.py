@@ -15,7 +15,22 @@ from typing import Iterator
 
 from saxonche import PySaxonApiError, PySaxonProcessor
 
-__all__ = ["Engine", "TransformError"]
+__all__ = ["Engine", "TransformError", "Tree"]
+
+# writes a kept result tree as its text (see Engine.run)
+_SERIALIZER = """<xsl:stylesheet version="3.0" xmlns:xsl="http://www.w3.org/1999/XSL/Transform">
+<xsl:output method="xml" indent="no" encoding="UTF-8"/>
+<xsl:template match="/"><xsl:sequence select="."/></xsl:template>
+</xsl:stylesheet>"""
+
+
+class Tree:
+    """A result tree held by Saxon, to be the source of the next stage."""
+
+    __slots__ = ("node",)
+
+    def __init__(self, node: object) -> None:
+        self.node = node
 
 
 class TransformError(Exception):
@@ -51,6 +66,7 @@ class Engine:
         self._proc = PySaxonProcessor(license=False)
         self._xslt = self._proc.new_xslt30_processor()
         self._compiled: dict[Path, object] = {}
+        self._serializer: object | None = None
         # the xsl:message texts of the last transform (warnings travel this way)
         self.messages: list[str] = []
 
@@ -78,6 +94,19 @@ class Engine:
     def transform(self, stylesheet: Path, params: dict[str, str], *,
                   source_file: Path | None = None, source_text: str | None = None) -> str:
         """Run ``stylesheet`` on a file or a string; return the serialized result."""
+        source = source_file.resolve() if source_file is not None else source_text
+        return self.run(stylesheet, params, source, keep_tree=False)[0]
+
+    def run(self, stylesheet: Path, params: dict[str, str], source: Path | str | Tree, *,
+            keep_tree: bool) -> tuple[str, Tree | None]:
+        """Run ``stylesheet`` on a file, a string or a tree from an earlier run.
+
+        Returns the serialized result and, with ``keep_tree``, the result
+        tree itself, which the next stage of a chain takes as its source
+        without parsing the text again (about a tenth of a stage's time on
+        large models). A kept tree is serialized as plain XML (UTF-8, no
+        indentation), which is what every intermediate stage declares.
+        """
         executable = self.compile(stylesheet)
         executable.clear_parameters()
         executable.clear_xsl_messages()
@@ -86,22 +115,37 @@ class Engine:
         for name, value in params.items():
             executable.set_parameter(name, self._proc.make_atomic_value("untypedAtomic", value))
         failure: PySaxonApiError | None = None
-        result: str | None = None
+        text: str | None = None
+        tree: Tree | None = None
         with _captured_stderr() as err:
             try:
-                if source_file is not None:
-                    node = self._proc.parse_xml(xml_file_name=str(source_file.resolve()))
+                if isinstance(source, Tree):
+                    node = source.node
+                elif isinstance(source, Path):
+                    node = self._proc.parse_xml(xml_file_name=str(source))
                 else:
-                    node = self._proc.parse_xml(xml_text=source_text)
+                    node = self._proc.parse_xml(xml_text=source)
                 # as Saxon's command line does with -s: the source is both the
                 # global context item and the initial match selection
                 executable.set_global_context_item(xdm_item=node)
-                result = executable.apply_templates_returning_string(xdm_value=node)
+                if keep_tree:
+                    value = executable.apply_templates_returning_value(xdm_value=node)
+                    if value is not None and value.size == 1 and value.head.is_node:
+                        tree = Tree(value.head.get_node_value())
+                        text = self._serialize(tree)
+                else:
+                    text = executable.apply_templates_returning_string(xdm_value=node)
             except PySaxonApiError as exc:
                 failure = exc
         saved = executable.get_xsl_messages()
         if saved is not None:
             self.messages = [str(saved.item_at(i).string_value) for i in range(saved.size)]
-        if failure is not None or result is None:
+        if failure is not None or text is None:
             raise TransformError(stylesheet, str(failure or "no result").strip(), "".join(err))
-        return result
+        return text, tree
+
+    def _serialize(self, tree: Tree) -> str:
+        if self._serializer is None:
+            self._serializer = self._xslt.compile_stylesheet(stylesheet_text=_SERIALIZER)
+        self._serializer.set_global_context_item(xdm_item=tree.node)
+        return self._serializer.apply_templates_returning_string(xdm_value=tree.node)

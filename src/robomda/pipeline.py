@@ -29,7 +29,7 @@ from robomda.diagnostics import (
     parse_stylesheet_error,
     parse_stylesheet_warning,
 )
-from robomda.engine import Engine, TransformError
+from robomda.engine import Engine, TransformError, Tree
 from robomda.resources import resource_root
 from robomda.rules import run_rules
 from robomda.validate import validate
@@ -135,15 +135,14 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
     """
     locator = XmiLocator(model)
     result = RunResult()
-    previous: str | None = None
-    for step in pipeline.steps[:steps]:
+    chain = pipeline.steps[:steps]
+    previous: Path | str | Tree = model.resolve()
+    for index, step in enumerate(chain):
         params = {p.name: (p.value if p.value is not None else context.get(p.source or "", "")) for p in step.params}
         started = time.perf_counter()
         try:
-            if previous is None:
-                text = engine.transform(step.stylesheet, params, source_file=model)
-            else:
-                text = engine.transform(step.stylesheet, params, source_text=previous)
+            # every stage but the last keeps its tree for the next one
+            text, tree_ = engine.run(step.stylesheet, params, previous, keep_tree=index < len(chain) - 1)
         except TransformError as exc:
             failure = _transform_failure(exc, step, locator)
             failure.diagnostics[:0] = result.warnings
@@ -170,7 +169,7 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
                                time.perf_counter() - validated))
         result.stages[step.name] = text
         result.tree = tree
-        previous = text
+        previous = tree_ if tree_ is not None else text
     return result
 
 
