@@ -41,7 +41,10 @@ class Finding:
 def _validator(rules: Path, phase: str | None) -> isoschematron.Schematron:
     key = (rules, phase)
     if key not in _COMPILED:
-        _COMPILED[key] = isoschematron.Schematron(etree.parse(str(rules)), phase=phase, store_report=True)
+        # no svrl:fired-rule per matched element: only failures and reports
+        # are read, and the full trace was larger than the model itself
+        _COMPILED[key] = isoschematron.Schematron(etree.parse(str(rules)), phase=phase, store_report=True,
+                                                  compile_params={"generate-fired-rule": "'false'"})
     return _COMPILED[key]
 
 
