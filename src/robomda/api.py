@@ -10,7 +10,7 @@ from pathlib import Path
 from lxml import etree
 
 from robomda import pipeline as pipelines
-from robomda.diagnostics import EXIT_FINDINGS, EXIT_INPUT, EXIT_OK, Diagnostic, RobomdaError
+from robomda.diagnostics import EXIT_FINDINGS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, Diagnostic, RobomdaError
 from robomda.engine import Engine
 from robomda.output import WriteReport, write_fileset
 from robomda.resources import available_targets, pipeline_path
@@ -60,10 +60,14 @@ _TARGET_OF_MIDDLEWARE = {"OROCOS": "orocos", "ROS": "ros1", "ROS2": "ros2"}
 
 
 def _check_readable(model: Path) -> None:
-    """Fail with a located diagnostic when ``model`` is missing or not well-formed XML."""
+    """Fail with a diagnostic when ``model`` is not a file (well-formedness: :func:`_run`)."""
     if not model.is_file():
         raise RobomdaError([Diagnostic("error", "IO001", f"no such model file: {model}", file=str(model))],
                            EXIT_INPUT)
+
+
+def _check_well_formed(model: Path) -> None:
+    """Fail with a located diagnostic when ``model`` is not well-formed XML."""
     parser = etree.XMLParser(huge_tree=True, resolve_entities=False, no_network=True)
     try:
         etree.parse(str(model), parser)
@@ -75,6 +79,21 @@ def _check_readable(model: Path) -> None:
     except OSError as exc:
         raise RobomdaError([Diagnostic("error", "IO001", f"cannot read: {exc}", file=str(model))],
                            EXIT_INPUT) from None
+
+
+def _run(chain: pipelines.Pipeline, model: Path, context: dict[str, str], *,
+         steps: int | None = None) -> pipelines.RunResult:
+    """Run ``chain`` on ``model``; a model Saxon cannot parse fails as XML001, located by lxml.
+
+    Well-formedness is checked only after a failure: a good model is parsed
+    once, by Saxon, not once more up front.
+    """
+    try:
+        return pipelines.run(chain, _engine(), model, context, steps=steps)
+    except RobomdaError as exc:
+        if exc.exit_code == EXIT_INTERNAL:
+            _check_well_formed(model)
+        raise
 
 
 def _context(model: Path, out: Path | None, package_name: str, type_map: Path | None = None) -> dict[str, str]:
@@ -95,7 +114,7 @@ def import_model(model: Path | str, *, bind: bool = True) -> str:
     chain = pipelines.load(pipeline_path("import"))
     if not bind:
         chain = pipelines.Pipeline(chain.name, chain.yields, chain.description, chain.steps[:1], chain.manifest)
-    return pipelines.run(chain, _engine(), model, _context(model, None, "")).output
+    return _run(chain, model, _context(model, None, "")).output
 
 
 def _usage_target(target: str) -> None:
@@ -139,7 +158,7 @@ def check(model: Path | str, target: str | None = None, *, package_name: str = "
         chain = pipelines.load(pipeline_path(name))
         steps = len(chain.steps) - 1 if chain.yields == "files" else None
         try:
-            result = pipelines.run(chain, _engine(), model, context, steps=steps)
+            result = _run(chain, model, context, steps=steps)
         except RobomdaError as exc:
             if exc.exit_code != EXIT_FINDINGS:
                 raise
@@ -186,7 +205,7 @@ def generate(model: Path | str, out: Path | str | None, target: str = "orocos", 
     out_path = Path(out) if out is not None else None
     chain = pipelines.load(pipeline_path(target))
     context = _context(model, out_path, package_name, _type_map(type_map))
-    result = pipelines.run(chain, _engine(), model, context)
+    result = _run(chain, model, context)
     report = None
     if write and out_path is not None and chain.yields == "files" and result.tree is not None:
         report = write_fileset(result.tree, out_path)
