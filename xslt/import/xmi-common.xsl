@@ -16,9 +16,9 @@
              known (written or implied: fp:meta), so rules and keys test
              @x:type instead of calling a function. Every later step reads
              this copy, so one set of rules serves every XMI and UML
-             version. The common namespaces are compared with "="
-             ($common-xmi-ns, $common-uml-ns); the patterns run only for
-             other URIs;
+             version. The common namespaces are looked up in maps
+             ($common-xmi-ns, $common-uml-ns: fp:xmi-ns, fp:uml-ns); the
+             patterns run only for other URIs;
            - fp:href-types: what each distinct type href says (library,
              name, primitive kind), computed once per document;
            - the keys (every id look-up goes through xsl:key);
@@ -60,16 +60,16 @@
         '^https?://(schema|www)\.omg\.org/(spec/)?XMI(/[0-9.]+)?/?$', 'i')"/>
   </xsl:function>
 
-  <!-- the XMI and UML namespaces of the common tools, tested with "=" in
-       the match patterns of mp:normalise before any regular expression is
-       run (only those that fp:is-xmi-ns / fp:is-uml-ns accept: the
-       patterns above stay the definition) -->
-  <xsl:variable name="common-xmi-ns" as="xs:string*" select="(
+  <!-- the XMI and UML namespaces of the common tools, looked up in a map
+       by the normalisation before any regular expression is run (only
+       those that fp:is-xmi-ns / fp:is-uml-ns accept: the patterns above
+       stay the definition) -->
+  <xsl:variable name="common-xmi-ns" as="map(xs:string, xs:boolean)" select="map:merge((
       'http://www.omg.org/XMI', 'http://schema.omg.org/spec/XMI/2.1',
       'http://www.omg.org/spec/XMI/20100901', 'http://www.omg.org/spec/XMI/20110701',
       'http://www.omg.org/spec/XMI/20131001', 'http://www.omg.org/spec/XMI/20161101'
-      )[fp:is-xmi-ns(.)]"/>
-  <xsl:variable name="common-uml-ns" as="xs:string*" select="(
+      )[fp:is-xmi-ns(.)] ! map:entry(., true()))"/>
+  <xsl:variable name="common-uml-ns" as="map(xs:string, xs:boolean)" select="map:merge((
       'http://www.eclipse.org/uml2/2.0.0/UML', 'http://www.eclipse.org/uml2/2.1.0/UML',
       'http://www.eclipse.org/uml2/3.0.0/UML', 'http://www.eclipse.org/uml2/4.0.0/UML',
       'http://www.eclipse.org/uml2/5.0.0/UML', 'http://schema.omg.org/spec/UML/2.0',
@@ -77,15 +77,28 @@
       'http://schema.omg.org/spec/UML/2.2', 'http://www.omg.org/spec/UML/20090901',
       'http://www.omg.org/spec/UML/20110701', 'http://www.omg.org/spec/UML/20131001',
       'http://www.omg.org/spec/UML/20161101'
-      )[fp:is-uml-ns(.)]"/>
+      )[fp:is-uml-ns(.)] ! map:entry(., true()))"/>
+
+  <!-- fp:is-xmi-ns and fp:is-uml-ns, the common namespaces first -->
+  <xsl:function name="fp:xmi-ns" as="xs:boolean">
+    <xsl:param name="uri" as="xs:string"/>
+    <xsl:sequence select="map:contains($common-xmi-ns, $uri) or fp:is-xmi-ns($uri)"/>
+  </xsl:function>
+
+  <xsl:function name="fp:uml-ns" as="xs:boolean">
+    <xsl:param name="uri" as="xs:string"/>
+    <xsl:sequence select="map:contains($common-uml-ns, $uri) or fp:is-uml-ns($uri)"/>
+  </xsl:function>
 
   <!-- ================================================== normalisation -->
   <!-- Every element whose UML metaclass is known gets x:type (xmi:type
        reduced to the metaclass name, else the element name of a UML
        element, else the default type of the feature in $default-metas), so
-       fp:meta and the match patterns read one attribute. The common cases
-       (no namespace, a namespace of $common-xmi-ns / $common-uml-ns) have
-       their own rules; the regular expressions run only for the rest. -->
+       fp:meta and the match patterns read one attribute. Elements in no
+       namespace (most of a file) have their own rule, matched by a name
+       test; the attributes in no namespace are copied in one go; the
+       namespace patterns run only for URIs outside $common-xmi-ns /
+       $common-uml-ns. -->
   <xsl:mode name="mp:normalise" on-no-match="shallow-copy"/>
   <!-- hook for dialect modules: extra attributes on a normalised element
        that has an href (a reference into another file: the only elements
@@ -94,60 +107,53 @@
   <xsl:mode name="mp:normalise-extra" on-no-match="deep-skip"/>
 
   <!-- elements in no namespace (most of an XMI file) -->
-  <xsl:template match="*[namespace-uri() eq '']" mode="mp:normalise" priority="2" as="element()">
+  <xsl:template match="Q{}*" mode="mp:normalise" priority="2" as="element()">
     <xsl:copy copy-namespaces="no">
-      <xsl:apply-templates select="@*" mode="mp:normalise"/>
+      <xsl:call-template name="tp:normalise-attributes"/>
       <!-- x:type of an element without xmi:type: the declared type of its
            feature -->
       <xsl:variable name="meta" as="xs:string?" select="$default-metas(local-name())"/>
-      <xsl:if test="exists($meta)
-                    and not(@*[local-name() eq 'type'][namespace-uri()]
-                              [namespace-uri() = $common-xmi-ns or fp:is-xmi-ns(namespace-uri())])">
+      <xsl:if test="exists($meta) and not(@*:type[namespace-uri()][fp:xmi-ns(namespace-uri())])">
         <xsl:attribute name="x:type" select="$meta"/>
       </xsl:if>
-      <xsl:apply-templates select=".[@href]" mode="mp:normalise-extra"/>
+      <xsl:if test="@href">
+        <xsl:apply-templates select="." mode="mp:normalise-extra"/>
+      </xsl:if>
       <xsl:apply-templates select="node()" mode="mp:normalise"/>
     </xsl:copy>
   </xsl:template>
 
-  <!-- UML elements -->
-  <xsl:template match="*[namespace-uri() = $common-uml-ns]" mode="mp:normalise" priority="2"
-                as="element()">
-    <xsl:call-template name="tp:normalise-uml"/>
-  </xsl:template>
-
-  <xsl:template name="tp:normalise-uml" as="element()">
-    <xsl:element name="u:{local-name()}" namespace="{$U}">
-      <xsl:apply-templates select="@*" mode="mp:normalise"/>
-      <xsl:if test="not(@*[local-name() eq 'type']
-                          [namespace-uri() = $common-xmi-ns or fp:is-xmi-ns(namespace-uri())])">
-        <xsl:attribute name="x:type" namespace="{$X}" select="local-name()"/>
-      </xsl:if>
-      <xsl:apply-templates select=".[@href]" mode="mp:normalise-extra"/>
-      <xsl:apply-templates select="node()" mode="mp:normalise"/>
-    </xsl:element>
-  </xsl:template>
-
-  <!-- any other element: by the namespace patterns -->
+  <!-- any other element: by its namespace -->
   <xsl:template match="*" mode="mp:normalise" as="element()">
     <xsl:variable name="ns" as="xs:string" select="namespace-uri()"/>
     <xsl:choose>
-      <xsl:when test="fp:is-uml-ns($ns)">
-        <xsl:call-template name="tp:normalise-uml"/>
+      <xsl:when test="fp:uml-ns($ns)">
+        <xsl:element name="u:{local-name()}" namespace="{$U}">
+          <xsl:call-template name="tp:normalise-attributes"/>
+          <xsl:if test="not(@*:type[fp:xmi-ns(namespace-uri())])">
+            <xsl:attribute name="x:type" namespace="{$X}" select="local-name()"/>
+          </xsl:if>
+          <xsl:if test="@href">
+            <xsl:apply-templates select="." mode="mp:normalise-extra"/>
+          </xsl:if>
+          <xsl:apply-templates select="node()" mode="mp:normalise"/>
+        </xsl:element>
       </xsl:when>
-      <xsl:when test="fp:is-xmi-ns($ns)">
+      <xsl:when test="fp:xmi-ns($ns)">
         <xsl:element name="x:{local-name()}" namespace="{$X}">
-          <xsl:apply-templates select="@*" mode="mp:normalise"/>
+          <xsl:call-template name="tp:normalise-attributes"/>
           <xsl:apply-templates select="node()" mode="mp:normalise"/>
         </xsl:element>
       </xsl:when>
       <xsl:otherwise>
         <xsl:element name="{name()}" namespace="{$ns}">
-          <xsl:apply-templates select="@*" mode="mp:normalise"/>
-          <xsl:if test="$ns eq $U and not(@*[local-name() eq 'type'][fp:is-xmi-ns(namespace-uri())])">
+          <xsl:call-template name="tp:normalise-attributes"/>
+          <xsl:if test="$ns eq $U and not(@*:type[fp:is-xmi-ns(namespace-uri())])">
             <xsl:attribute name="x:type" namespace="{$X}" select="local-name()"/>
           </xsl:if>
-          <xsl:apply-templates select=".[@href]" mode="mp:normalise-extra"/>
+          <xsl:if test="@href">
+            <xsl:apply-templates select="." mode="mp:normalise-extra"/>
+          </xsl:if>
           <xsl:apply-templates select="node()" mode="mp:normalise"/>
         </xsl:element>
       </xsl:otherwise>
@@ -155,42 +161,42 @@
   </xsl:template>
 
   <!-- tool extension blocks carry no UML semantics: dropped -->
-  <xsl:template match="*[local-name() = 'Extension'][fp:is-xmi-ns(namespace-uri())]
-                       | eAnnotations" mode="mp:normalise" priority="3" as="empty-sequence()"/>
+  <xsl:template match="*:Extension[fp:is-xmi-ns(namespace-uri())] | Q{}eAnnotations" mode="mp:normalise"
+                priority="3" as="empty-sequence()"/>
   <xsl:template match="comment() | processing-instruction()" mode="mp:normalise"
                 as="empty-sequence()"/>
 
-  <!-- XMI attributes into x:; every other attribute as it is (built-in
-       rule) -->
-  <xsl:template match="@*[namespace-uri() = $common-xmi-ns]" mode="mp:normalise" priority="2"
-                as="attribute()">
-    <xsl:call-template name="tp:normalise-xmi-attribute"/>
-  </xsl:template>
-
-  <xsl:template match="@*[namespace-uri()][fp:is-xmi-ns(namespace-uri())]" mode="mp:normalise"
-                priority="1" as="attribute()">
-    <xsl:call-template name="tp:normalise-xmi-attribute"/>
-  </xsl:template>
-
-  <!-- xmi:id and xmi:type (nearly every XMI attribute) with a fixed name:
-       cheaper than a computed one -->
-  <xsl:template name="tp:normalise-xmi-attribute" as="attribute()">
-    <xsl:variable name="name" as="xs:string" select="local-name()"/>
-    <xsl:choose>
-      <xsl:when test="$name eq 'id'">
-        <xsl:attribute name="x:id" select="string(.)"/>
-      </xsl:when>
-      <xsl:when test="$name eq 'type'">
-        <xsl:attribute name="x:type" select="fp:norm-type(.)"/>
-      </xsl:when>
-      <xsl:otherwise>
-        <xsl:attribute name="x:{$name}" namespace="{$X}" select="string(.)"/>
-      </xsl:otherwise>
-    </xsl:choose>
+  <!-- the attributes of the context element: those in no namespace (most
+       of them) copied in one go, XMI ones into x: (xmi:id and xmi:type,
+       nearly every XMI attribute, with a fixed name: cheaper than a
+       computed one), any other as it is -->
+  <xsl:template name="tp:normalise-attributes" as="attribute()*">
+    <xsl:copy-of select="@Q{}*"/>
+    <xsl:for-each select="@*[namespace-uri()]">
+      <xsl:choose>
+        <xsl:when test="fp:xmi-ns(namespace-uri())">
+          <xsl:variable name="name" as="xs:string" select="local-name()"/>
+          <xsl:choose>
+            <xsl:when test="$name eq 'id'">
+              <xsl:attribute name="x:id" select="string(.)"/>
+            </xsl:when>
+            <xsl:when test="$name eq 'type'">
+              <xsl:attribute name="x:type" select="fp:norm-type(.)"/>
+            </xsl:when>
+            <xsl:otherwise>
+              <xsl:attribute name="x:{$name}" namespace="{$X}" select="string(.)"/>
+            </xsl:otherwise>
+          </xsl:choose>
+        </xsl:when>
+        <xsl:otherwise>
+          <xsl:copy-of select="."/>
+        </xsl:otherwise>
+      </xsl:choose>
+    </xsl:for-each>
   </xsl:template>
 
   <!-- xmi:type="uml:Class" -> "Class"; a non-UML type -> "{uri}local".
-       The UML namespace is tested with "=" first, the pattern only for
+       The UML namespace is looked up first, the pattern runs only for
        other URIs; the common one-colon value is cut with substring-after. -->
   <xsl:function name="fp:norm-type" as="xs:string">
     <xsl:param name="a" as="attribute()"/>
@@ -200,7 +206,7 @@
     <xsl:variable name="uri" as="xs:string"
         select="if ($prefix) then string(namespace-uri-for-prefix($prefix, $a/..)) else ''"/>
     <xsl:sequence select="if (not(contains($v, ':'))) then $v
-                          else if ($uri = $common-uml-ns or fp:is-uml-ns($uri))
+                          else if (fp:uml-ns($uri))
                           then (if (contains($local, ':')) then replace($v, '^.*:', '') else $local)
                           else '{' || $uri || '}' || $local"/>
   </xsl:function>
