@@ -3,12 +3,14 @@
   xslt/import/application.xsl - the application part of the PIM (component
   diagram, seed 000 Tables 1, 2 and 4).
 
-  Reads:   the normalised XMI, from the model root (fp:root-of) down.
+  Reads:   the normalised XMI, from the model root (fp:model-root) down.
   Writes:  pim:package, pim:primitive, pim:datatype, pim:enumeration,
            pim:class, pim:interface, pim:component and what they hold
            (schemas/pim/1/pim.xsd); mode mp:packageable.
-  Params:  none; tunnel parameter href-types (fp:href-types of the
-           normalised XMI, set by import.xsl) reaches the mp:feature rules.
+  Params:  none; tunnel parameters set by import.xsl: href-types
+           (fp:href-types of the normalised XMI) reaches the mp:feature
+           rules, root (the model root) every rule that writes a
+           qualified name (fp:qname).
   Errors:  none raised here: the check pass (check.xsl) has reported every
            dangling reference before this runs.
 
@@ -71,7 +73,8 @@
   <!-- ========================================================= packages -->
   <xsl:template match="*[@x:type = ('Package', 'Model')]" mode="mp:packageable"
                 as="element(pim:package)">
-    <pim:package id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+    <xsl:param name="root" as="element()" tunnel="yes"/>
+    <pim:package id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
       <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
       <xsl:apply-templates select="fp:owned-packageables(.)" mode="mp:packageable"/>
     </pim:package>
@@ -80,14 +83,16 @@
   <!-- ============================================== simple classifiers -->
   <xsl:template match="*[@x:type eq 'PrimitiveType']" mode="mp:packageable"
                 as="element(pim:primitive)">
-    <pim:primitive id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+    <xsl:param name="root" as="element()" tunnel="yes"/>
+    <pim:primitive id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
       <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
     </pim:primitive>
   </xsl:template>
 
   <xsl:template match="*[@x:type eq 'DataType']" mode="mp:packageable"
                 as="element(pim:datatype)">
-    <pim:datatype id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+    <xsl:param name="root" as="element()" tunnel="yes"/>
+    <pim:datatype id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
       <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
       <xsl:apply-templates select="generalization" mode="mp:feature"/>
       <xsl:apply-templates select="ownedAttribute[not(@x:type = 'Port')]" mode="mp:feature"/>
@@ -97,10 +102,11 @@
 
   <xsl:template match="*[@x:type eq 'Enumeration']" mode="mp:packageable"
                 as="element(pim:enumeration)">
-    <pim:enumeration id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+    <xsl:param name="root" as="element()" tunnel="yes"/>
+    <pim:enumeration id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
       <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
       <xsl:for-each select="ownedLiteral">
-        <pim:literal id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+        <pim:literal id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
           <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
         </pim:literal>
       </xsl:for-each>
@@ -109,7 +115,8 @@
 
   <!-- ====================================================== classifiers -->
   <xsl:template match="*[@x:type eq 'Class']" mode="mp:packageable" as="element(pim:class)">
-    <pim:class id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}"
+    <xsl:param name="root" as="element()" tunnel="yes"/>
+    <pim:class id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}"
         abstract="{fp:bool(@isAbstract, false())}" active="{fp:bool(@isActive, false())}">
       <xsl:call-template name="tp:classifier-body"/>
       <xsl:apply-templates select="fp:owned-packageables(.)" mode="mp:packageable"/>
@@ -117,15 +124,17 @@
   </xsl:template>
 
   <xsl:template match="*[@x:type eq 'Interface']" mode="mp:packageable" as="element(pim:interface)">
-    <pim:interface id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+    <xsl:param name="root" as="element()" tunnel="yes"/>
+    <pim:interface id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
       <xsl:call-template name="tp:classifier-body"/>
       <xsl:apply-templates select="fp:owned-packageables(.)" mode="mp:packageable"/>
     </pim:interface>
   </xsl:template>
 
   <xsl:template match="*[@x:type eq 'Component']" mode="mp:packageable" as="element(pim:component)">
+    <xsl:param name="root" as="element()" tunnel="yes"/>
     <xsl:variable name="c" as="element()" select="."/>
-    <pim:component id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}"
+    <pim:component id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}"
         abstract="{fp:bool(@isAbstract, false())}">
       <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
       <xsl:variable name="realizations" as="element()*"
@@ -153,6 +162,7 @@
 
   <!-- the pim:classifier-body group of the context classifier -->
   <xsl:template name="tp:classifier-body" as="element()*">
+    <xsl:param name="root" as="element()" tunnel="yes"/>
     <xsl:param name="decorate" as="xs:boolean" select="true()"/>
     <xsl:param name="href-types" as="map(xs:string, map(*))" tunnel="yes"/>
     <xsl:variable name="c" as="element()" select="."/>
@@ -212,7 +222,7 @@
     <xsl:apply-templates select="$properties except $parts" mode="mp:feature"/>
     <xsl:apply-templates select="(ownedAttribute | ownedPort)[@x:type eq 'Port']" mode="mp:feature"/>
     <xsl:for-each select="$parts">
-      <pim:part id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+      <pim:part id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
         <xsl:sequence select="fp:typed(., $href-types)"/>
         <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
       </pim:part>
@@ -267,6 +277,7 @@
 
   <xsl:template match="*[@x:type eq 'Dependency']" mode="mp:packageable"
                 as="element(pim:dependency)?">
+    <xsl:param name="root" as="element()" tunnel="yes"/>
     <xsl:choose>
       <xsl:when test="not(fp:is-start-after(.))"/>
       <xsl:when test="empty(fp:targets(., 'client')) or empty(fp:targets(., 'supplier'))">
@@ -274,7 +285,7 @@
                              || '] has no client or no supplier in this model; not imported'"/>
       </xsl:when>
       <xsl:otherwise>
-        <pim:dependency id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+        <pim:dependency id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
           <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
           <xsl:for-each select="fp:targets(., 'client')">
             <pim:client element="{fp:id(.)}"/>
@@ -296,8 +307,9 @@
   </xsl:template>
 
   <xsl:template match="ownedAttribute | ownedEnd" mode="mp:feature" as="element(pim:attribute)">
+    <xsl:param name="root" as="element()" tunnel="yes"/>
     <xsl:param name="href-types" as="map(xs:string, map(*))" tunnel="yes"/>
-    <pim:attribute id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+    <pim:attribute id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
       <xsl:sequence select="fp:typed(., $href-types)"/>
       <xsl:attribute name="visibility" select="fp:visibility(.)"/>
       <xsl:attribute name="static" select="fp:bool(@isStatic, false())"/>
@@ -312,9 +324,10 @@
   </xsl:template>
 
   <xsl:template match="*[@x:type eq 'Port']" mode="mp:feature" as="element(pim:port)">
+    <xsl:param name="root" as="element()" tunnel="yes"/>
     <xsl:param name="href-types" as="map(xs:string, map(*))" tunnel="yes"/>
     <xsl:variable name="id" as="xs:string" select="fp:id(.)"/>
-    <pim:port id="{$id}" name="{@name}" qualified-name="{fp:qname(.)}">
+    <pim:port id="{$id}" name="{@name}" qualified-name="{fp:qname(., $root)}">
       <xsl:sequence select="fp:typed(., $href-types)"/>
       <xsl:attribute name="visibility" select="fp:visibility(.)"/>
       <xsl:attribute name="conjugated" select="fp:bool(@isConjugated, false())"/>
@@ -340,8 +353,9 @@
   </xsl:template>
 
   <xsl:template match="ownedOperation" mode="mp:feature" as="element(pim:operation)">
+    <xsl:param name="root" as="element()" tunnel="yes"/>
     <xsl:param name="href-types" as="map(xs:string, map(*))" tunnel="yes"/>
-    <pim:operation id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}"
+    <pim:operation id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}"
         visibility="{fp:visibility(.)}" static="{fp:bool(@isStatic, false())}"
         abstract="{fp:bool(@isAbstract, false())}" query="{fp:bool(@isQuery, false())}">
       <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
@@ -350,7 +364,7 @@
       <xsl:for-each select="ownedParameter">
         <xsl:variable name="typed" as="attribute()*" select="fp:typed(., $href-types)"/>
         <xsl:if test="not(@direction = 'return' and $typed[name() eq 'primitive'] = 'void')">
-        <pim:parameter id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+        <pim:parameter id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
           <xsl:sequence select="$typed"/>
           <xsl:attribute name="direction"
               select="if (@direction = ('in', 'out', 'inout', 'return')) then string(@direction) else 'in'"/>
@@ -365,6 +379,7 @@
   </xsl:template>
 
   <xsl:template match="ownedConnector" mode="mp:feature" as="element(pim:connector)?">
+    <xsl:param name="root" as="element()" tunnel="yes"/>
     <xsl:variable name="owner" as="element()" select=".."/>
     <xsl:variable name="ends" as="element()*" select="end[exists(fp:targets(., 'role'))]"/>
     <xsl:if test="count($ends) ge 2">
@@ -375,7 +390,7 @@
                       and (fp:targets($end, 'role')[1]/.. is $owner)
                       and fp:meta(fp:targets($end, 'role')[1]) eq 'Port'))
           then 'delegation' else 'assembly'"/>
-      <pim:connector id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}" kind="{$kind}">
+      <pim:connector id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}" kind="{$kind}">
         <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
         <xsl:for-each select="$ends">
           <pim:end id="{fp:id(.)}" role="{fp:id(fp:targets(., 'role')[1])}">

@@ -119,10 +119,11 @@
             <pim:application>
               <xsl:apply-templates select="fp:owned-packageables($root)" mode="mp:packageable">
                 <xsl:with-param name="href-types" as="map(xs:string, map(*))" select="$href-types" tunnel="yes"/>
+                <xsl:with-param name="root" as="element()" select="$root" tunnel="yes"/>
               </xsl:apply-templates>
             </pim:application>
             <xsl:call-template name="tp:platform">
-              <xsl:with-param name="root" select="$root"/>
+              <xsl:with-param name="root" as="element()" select="$root" tunnel="yes"/>
               <xsl:with-param name="href-types" as="map(xs:string, map(*))" select="$href-types" tunnel="yes"/>
             </xsl:call-template>
           </pim:model>

@@ -7,8 +7,10 @@
            under the model root, whatever package or classifier owns it.
   Writes:  pim:platform with pim:node (nested), pim:artifact and
            pim:communication-path (schemas/pim/1/pim.xsd).
-  Params:  none; tunnel parameter href-types (fp:href-types of the
-           normalised XMI, set by import.xsl) reaches the mp:feature rules.
+  Params:  none; tunnel parameters set by import.xsl: root (the model
+           root: where the deployment elements are looked for, and where
+           qualified names start) and href-types (fp:href-types of the
+           normalised XMI, for the mp:feature rules).
   Errors:  none raised here: check.xsl has reported dangling references.
 
   Rules
@@ -42,7 +44,7 @@
   <xsl:mode name="mp:platform" on-no-match="deep-skip"/>
 
   <xsl:template name="tp:platform" as="element(pim:platform)">
-    <xsl:param name="root" as="element()"/>
+    <xsl:param name="root" as="element()" tunnel="yes"/>
     <xsl:variable name="all" as="element()*" select="$root/descendant-or-self::*[@x:type = $platform-metas]"/>
     <pim:platform>
       <xsl:apply-templates select="$all[@x:type = $node-metas][not(../@x:type = $node-metas)]"
@@ -55,8 +57,9 @@
   <xsl:template match="*" mode="mp:platform" priority="-1" as="empty-sequence()"/>
 
   <xsl:template match="*[@x:type = $node-metas]" mode="mp:platform" as="element(pim:node)">
+    <xsl:param name="root" as="element()" tunnel="yes"/>
     <xsl:variable name="meta" as="xs:string" select="fp:meta(.)"/>
-    <pim:node id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}"
+    <pim:node id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}"
         kind="{if ($meta eq 'Device') then 'device'
                else if ($meta eq 'ExecutionEnvironment') then 'execution-environment'
                else 'node'}">
@@ -80,7 +83,8 @@
   </xsl:template>
 
   <xsl:template match="*[@x:type = $artifact-metas]" mode="mp:platform" as="element(pim:artifact)">
-    <pim:artifact id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+    <xsl:param name="root" as="element()" tunnel="yes"/>
+    <pim:artifact id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
       <xsl:if test="@fileName">
         <xsl:attribute name="file-name" select="@fileName"/>
       </xsl:if>
@@ -102,6 +106,7 @@
 
   <xsl:template match="*[@x:type eq 'CommunicationPath']" mode="mp:platform"
                 as="element(pim:communication-path)?">
+    <xsl:param name="root" as="element()" tunnel="yes"/>
     <xsl:variable name="member-ends" as="element()*" select="fp:targets(., 'memberEnd')"/>
     <xsl:variable name="ends" as="element()*"
         select="if (exists($member-ends)) then $member-ends else ownedEnd"/>
@@ -109,7 +114,7 @@
         select="$ends ! fp:type-element(.)[@x:type = $node-metas]"/>
     <xsl:choose>
       <xsl:when test="count($nodes) ge 2">
-        <pim:communication-path id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(.)}">
+        <pim:communication-path id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
           <xsl:call-template name="tp:decoration">
             <xsl:with-param name="e" select="."/>
           </xsl:call-template>

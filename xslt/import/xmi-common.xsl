@@ -241,12 +241,6 @@
     <xsl:sequence select="($models[self::u:Model], $models)[1]"/>
   </xsl:function>
 
-  <!-- the element the PIM model stands for (fp:model-root, dialect-ea.xsl) -->
-  <xsl:function name="fp:root-of" as="element()?">
-    <xsl:param name="n" as="node()"/>
-    <xsl:sequence select="fp:model-el($n) ! fp:model-root(.)"/>
-  </xsl:function>
-
   <!-- =================================================== ids, metaclass -->
   <!-- the element's xmi:id, or a deterministic synthetic id "robomda.<path>"
        anchored at the nearest ancestor that has an xmi:id -->
@@ -341,9 +335,11 @@
   </xsl:function>
 
   <!-- ================================================ qualified names -->
+  <!-- "root::pkg::Class::attr": the names from the model root (fp:model-
+       root, found once per document and passed down) to $e -->
   <xsl:function name="fp:qname" as="xs:string">
     <xsl:param name="e" as="element()"/>
-    <xsl:variable name="root" as="element()" select="fp:root-of($e)"/>
+    <xsl:param name="root" as="element()"/>
     <xsl:sequence select="string-join($e/ancestor-or-self::*[not(. &lt;&lt; $root)] ! string(@name), '::')"/>
   </xsl:function>
 
