@@ -164,7 +164,7 @@
   <xsl:template name="tp:classifier-body" as="element()*">
     <xsl:param name="root" as="element()" tunnel="yes"/>
     <xsl:param name="decorate" as="xs:boolean" select="true()"/>
-    <xsl:param name="href-types" as="map(xs:string, map(*))" tunnel="yes"/>
+    <xsl:param name="href-types" as="map(*)" tunnel="yes"/>
     <xsl:variable name="c" as="element()" select="."/>
     <xsl:variable name="id" as="xs:string" select="fp:id(.)"/>
     <xsl:variable name="meta" as="xs:string" select="fp:meta(.)"/>
@@ -308,7 +308,7 @@
 
   <xsl:template match="ownedAttribute | ownedEnd" mode="mp:feature" as="element(pim:attribute)">
     <xsl:param name="root" as="element()" tunnel="yes"/>
-    <xsl:param name="href-types" as="map(xs:string, map(*))" tunnel="yes"/>
+    <xsl:param name="href-types" as="map(*)" tunnel="yes"/>
     <pim:attribute id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
       <xsl:sequence select="fp:typed(., $href-types)"/>
       <xsl:attribute name="visibility" select="fp:visibility(.)"/>
@@ -325,7 +325,7 @@
 
   <xsl:template match="*[@x:type eq 'Port']" mode="mp:feature" as="element(pim:port)">
     <xsl:param name="root" as="element()" tunnel="yes"/>
-    <xsl:param name="href-types" as="map(xs:string, map(*))" tunnel="yes"/>
+    <xsl:param name="href-types" as="map(*)" tunnel="yes"/>
     <xsl:variable name="id" as="xs:string" select="fp:id(.)"/>
     <pim:port id="{$id}" name="{@name}" qualified-name="{fp:qname(., $root)}">
       <xsl:sequence select="fp:typed(., $href-types)"/>
@@ -354,7 +354,7 @@
 
   <xsl:template match="ownedOperation" mode="mp:feature" as="element(pim:operation)">
     <xsl:param name="root" as="element()" tunnel="yes"/>
-    <xsl:param name="href-types" as="map(xs:string, map(*))" tunnel="yes"/>
+    <xsl:param name="href-types" as="map(*)" tunnel="yes"/>
     <pim:operation id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}"
         visibility="{fp:visibility(.)}" static="{fp:bool(@isStatic, false())}"
         abstract="{fp:bool(@isAbstract, false())}" query="{fp:bool(@isQuery, false())}">

@@ -38,9 +38,6 @@
       'Dependency':           map { 'code': 'IMP020', 'refs': ('client', 'supplier') }
     }"/>
 
-  <!-- the metaclasses that have checked references -->
-  <xsl:variable name="checked-metas" as="xs:string+" select="map:keys($checked-references)"/>
-
   <!-- the problems of one element: maps with code, id, message -->
   <xsl:function name="fp:problems" as="map(*)*">
     <xsl:param name="e" as="element()"/>

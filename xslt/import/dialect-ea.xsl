@@ -88,6 +88,6 @@
     <xsl:sequence select="contains(lower-case($exporter), 'enterprise architect')
         or (not($exporter) and (
               some $ns in $doc/*/namespace::* satisfies contains($ns, 'sparxsystems')
-              or exists(($doc/*//@*[local-name() eq 'id'][starts-with(., 'EAID_') or starts-with(., 'EAPK_')])[1])))"/>
+              or exists(($doc/*//@*:id[starts-with(., 'EAID_') or starts-with(., 'EAPK_')])[1])))"/>
   </xsl:function>
 </xsl:stylesheet>

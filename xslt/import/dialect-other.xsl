@@ -27,7 +27,7 @@
     <xsl:param name="doc" as="document-node()"/>
     <xsl:param name="exporter" as="xs:string"/>
     <xsl:sequence select="contains(lower-case($exporter), 'staruml')
-        or (not($exporter) and exists(($doc/*//@*[local-name() eq 'id'][matches(., '^AAAAAA[A-Za-z0-9+/]{10,}=*$')])[1]))"/>
+        or (not($exporter) and exists(($doc/*//@*:id[starts-with(., 'AAAAAA')][matches(., '^AAAAAA[A-Za-z0-9+/]{10,}=*$')])[1]))"/>
   </xsl:function>
 
   <xsl:function name="fp:is-visual-paradigm" as="xs:boolean">

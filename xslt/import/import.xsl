@@ -60,6 +60,7 @@
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
     xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:map="http://www.w3.org/2005/xpath-functions/map"
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
     xmlns:mp="urn:robomda:xslt:mode:private"
@@ -107,7 +108,7 @@
       <xsl:variable name="model-el" as="element()" select="fp:model-el($norm)"/>
       <xsl:variable name="root" as="element()" select="fp:model-root($model-el)"/>
       <xsl:if test="fp:check-model($norm, $model-el)">
-        <xsl:variable name="href-types" as="map(xs:string, map(*))" select="fp:href-types($norm)"/>
+        <xsl:variable name="href-types" as="map(*)" select="fp:href-types($norm)"/>
         <xsl:variable name="pim" as="document-node()">
         <xsl:document>
           <pim:model id="{fp:id($root)}" name="{$root/@name}" source="{$source-name}"
@@ -118,13 +119,13 @@
             </xsl:call-template>
             <pim:application>
               <xsl:apply-templates select="fp:owned-packageables($root)" mode="mp:packageable">
-                <xsl:with-param name="href-types" as="map(xs:string, map(*))" select="$href-types" tunnel="yes"/>
+                <xsl:with-param name="href-types" as="map(*)" select="$href-types" tunnel="yes"/>
                 <xsl:with-param name="root" as="element()" select="$root" tunnel="yes"/>
               </xsl:apply-templates>
             </pim:application>
             <xsl:call-template name="tp:platform">
               <xsl:with-param name="root" as="element()" select="$root" tunnel="yes"/>
-              <xsl:with-param name="href-types" as="map(xs:string, map(*))" select="$href-types" tunnel="yes"/>
+              <xsl:with-param name="href-types" as="map(*)" select="$href-types" tunnel="yes"/>
             </xsl:call-template>
           </pim:model>
         </xsl:document>
@@ -194,7 +195,8 @@
       </xsl:for-each-group>
     </xsl:variable>
     <xsl:variable name="problems" as="map(*)*"
-        select="$model-el/descendant-or-self::*[@x:type = $checked-metas] ! fp:problems(.)"/>
+        select="$model-el/descendant-or-self::*[map:contains($checked-references, string(@x:type))]
+                ! fp:problems(.)"/>
     <xsl:choose>
       <xsl:when test="exists($duplicates)">
         <xsl:variable name="holders" as="element()*" select="key('fp:by-id', $duplicates[1], $norm)"/>

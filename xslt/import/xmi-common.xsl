@@ -306,8 +306,8 @@
   <xsl:function name="fp:ref-ids" as="xs:string*">
     <xsl:param name="e" as="element()"/>
     <xsl:param name="prop" as="xs:string"/>
-    <xsl:sequence select="($e/@*[local-name() eq $prop][namespace-uri() eq '']/tokenize(.),
-                           $e/*[local-name() eq $prop][namespace-uri() eq '']/@x:idref/string())"/>
+    <xsl:sequence select="($e/@Q{}*[local-name() eq $prop]/tokenize(.),
+                           $e/Q{}*[local-name() eq $prop]/@x:idref/string())"/>
   </xsl:function>
 
   <!-- the element with xmi:id $id in the document of $ctx -->
@@ -371,13 +371,13 @@
         else $value"/>
   </xsl:function>
 
-  <!-- a multiplicity bound: "*" for unlimited -->
+  <!-- a multiplicity bound: the value of $spec (lowerValue, upperValue),
+       else the attribute $attr (lower, upper); "*" for unlimited -->
   <xsl:function name="fp:bound" as="xs:string?">
-    <xsl:param name="e" as="element()"/>
-    <xsl:param name="which" as="xs:string"/>
-    <xsl:variable name="spec" as="element()?" select="$e/*[local-name() eq $which || 'Value'][1]"/>
+    <xsl:param name="spec" as="element()?"/>
+    <xsl:param name="attr" as="attribute()*"/>
     <xsl:variable name="raw" as="xs:string?"
-        select="if ($spec) then fp:value($spec) else $e/@*[local-name() eq $which]/string()"/>
+        select="if ($spec) then fp:value($spec) else $attr/string()"/>
     <xsl:sequence select="if ($raw = ('-1', '*')) then '*' else $raw"/>
   </xsl:function>
 
@@ -459,7 +459,7 @@
   </xsl:function>
 
   <!-- fp:href-type of every distinct href of a type reference in $norm -->
-  <xsl:function name="fp:href-types" as="map(xs:string, map(*))">
+  <xsl:function name="fp:href-types" as="map(*)">
     <xsl:param name="norm" as="document-node()"/>
     <xsl:sequence select="map:merge(distinct-values($norm//type/@href) ! map { string(.): fp:href-type(.) })"/>
   </xsl:function>
@@ -470,7 +470,7 @@
        fp:href-types of the document (an href missing there is computed) -->
   <xsl:function name="fp:typed" as="attribute()*">
     <xsl:param name="e" as="element()"/>
-    <xsl:param name="href-types" as="map(xs:string, map(*))"/>
+    <xsl:param name="href-types" as="map(*)"/>
     <!-- the first type reference: an id of the type attribute, else the
          first type child with an xmi:idref (an id) or an href -->
     <xsl:variable name="attr-id" as="xs:string?" select="tokenize($e/@type)[1]"/>
@@ -515,8 +515,8 @@
       </xsl:when>
     </xsl:choose>
     <!-- always explicit: tools differ in writing the default 1..1 or not -->
-    <xsl:attribute name="lower" select="(fp:bound($e, 'lower'), '1')[1]"/>
-    <xsl:attribute name="upper" select="(fp:bound($e, 'upper'), '1')[1]"/>
+    <xsl:attribute name="lower" select="(fp:bound($e/*:lowerValue[1], $e/@*:lower), '1')[1]"/>
+    <xsl:attribute name="upper" select="(fp:bound($e/*:upperValue[1], $e/@*:upper), '1')[1]"/>
   </xsl:function>
 
   <!-- the local type element of a typed element, if any -->
