@@ -60,11 +60,13 @@
   <!-- stereotypes and documentation of the PIM element made from $e -->
   <xsl:template name="tp:decoration" as="element()*">
     <xsl:param name="e" as="element()"/>
-    <xsl:apply-templates select="key('fp:stereotype-by-base', fp:id($e), root($e))"
-        mode="mp:stereotype"/>
-    <xsl:for-each select="fp:doc($e)">
-      <pim:doc><xsl:value-of select="."/></pim:doc>
-    </xsl:for-each>
+    <xsl:variable name="id" as="xs:string" select="fp:id($e)"/>
+    <xsl:if test="exists($e/ownedComment) or exists(key('fp:decorated', $id, root($e)))">
+      <xsl:apply-templates select="key('fp:stereotype-by-base', $id, root($e))" mode="mp:stereotype"/>
+      <xsl:for-each select="fp:doc($e)">
+        <pim:doc><xsl:value-of select="."/></pim:doc>
+      </xsl:for-each>
+    </xsl:if>
   </xsl:template>
 
   <xsl:mode name="mp:stereotype" on-no-match="deep-skip"/>

@@ -229,6 +229,12 @@
   <xsl:key name="fp:stereotype-by-base"
       match="/x:XMI/*[not(namespace-uri() = ($U, $X))][@*[starts-with(local-name(), 'base_')]]"
       use="@*[starts-with(local-name(), 'base_')]/tokenize(.)"/>
+  <!-- every id either key above holds (and maybe a few more): one look-up
+       tells tp:decoration that an element has no stereotype and no
+       annotating comment, most elements of a model -->
+  <xsl:key name="fp:decorated"
+      match="/x:XMI/*[not(namespace-uri() = ($U, $X))][@*[starts-with(local-name(), 'base_')]] | ownedComment"
+      use="fp:ref-ids(., 'annotatedElement'), @*[starts-with(local-name(), 'base_')]/tokenize(.)"/>
 
   <!-- the UML model element of a normalised document (a bare uml:Model or
        uml:Package, else the first uml:Model, else uml:Package, of xmi:XMI) -->
