@@ -6,7 +6,9 @@
   Writes:  nothing; fp:problems describes what is wrong with one element,
            import.xsl raises the first problem in document order (so the
            reported element does not depend on the engine's evaluation
-           order).
+           order). fp:any-dangling-ids tells in one pass whether any
+           element can have a dangling reference, so a sound model (the
+           common case) calls fp:problems only for its Generalizations.
   Params:  none.
   Errors:  the descriptions of IMP010-IMP021 (codes documented in
            import.xsl). A reference is dangling when it is an id that no
@@ -19,6 +21,7 @@
     xmlns:xs="http://www.w3.org/2001/XMLSchema"
     xmlns:map="http://www.w3.org/2005/xpath-functions/map"
     xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:x="urn:robomda:import:xmi"
     exclude-result-prefixes="#all">
 
   <!-- which references of which metaclass are checked, with the code -->
@@ -37,6 +40,22 @@
       'CommunicationPath':    map { 'code': 'IMP019', 'refs': ('memberEnd') },
       'Dependency':           map { 'code': 'IMP020', 'refs': ('client', 'supplier') }
     }"/>
+
+  <!-- every property name of $checked-references (the keys) -->
+  <xsl:variable name="checked-properties" as="map(xs:string, xs:boolean)"
+      select="map:merge(distinct-values($checked-references?*?refs) ! map:entry(., true()))"/>
+
+  <!-- the ids that the elements $checked (of a metaclass of
+       $checked-references) reference by any checked property name, and
+       that are dangling: empty when fp:problems finds no dangling
+       reference in $checked (a superset of the ids it would report, in
+       one pass instead of a call per element and property) -->
+  <xsl:function name="fp:any-dangling-ids" as="xs:string*">
+    <xsl:param name="checked" as="element()*"/>
+    <xsl:sequence select="$checked[1] ! fp:dangling-ids(., distinct-values(
+        $checked/(@Q{}*[map:contains($checked-properties, local-name())]/tokenize(.),
+                  Q{}*[map:contains($checked-properties, local-name())]/@x:idref/string())))"/>
+  </xsl:function>
 
   <!-- the problems of one element: maps with code, id, message -->
   <xsl:function name="fp:problems" as="map(*)*">

@@ -194,9 +194,13 @@
         </xsl:if>
       </xsl:for-each-group>
     </xsl:variable>
+    <xsl:variable name="checked" as="element()*"
+        select="$model-el/descendant-or-self::*[map:contains($checked-references, string(@x:type))]"/>
+    <!-- when no checked reference dangles, only a Generalization can have
+         a problem (a cycle) -->
     <xsl:variable name="problems" as="map(*)*"
-        select="$model-el/descendant-or-self::*[map:contains($checked-references, string(@x:type))]
-                ! fp:problems(.)"/>
+        select="(if (exists(fp:any-dangling-ids($checked))) then $checked
+                 else $checked[@x:type eq 'Generalization']) ! fp:problems(.)"/>
     <xsl:choose>
       <xsl:when test="exists($duplicates)">
         <xsl:variable name="holders" as="element()*" select="key('fp:by-id', $duplicates[1], $norm)"/>
