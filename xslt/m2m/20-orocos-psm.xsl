@@ -59,6 +59,7 @@
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
     xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:map="http://www.w3.org/2005/xpath-functions/map"
     xmlns:pim="urn:robomda:pim:1"
     xmlns:o="urn:robomda:psm-orocos:1"
     xmlns:ty="urn:robomda:orocos-types:1"
@@ -82,7 +83,6 @@
   <xsl:key name="fp:id" match="*[@id]" use="@id"/>
   <xsl:key name="fp:type" match="ty:type" use="@primitive"/>
   <xsl:key name="fp:bc" match="pim:bound-component" use="@component"/>
-  <xsl:key name="fp:instance" match="pim:instance" use="@name"/>
   <xsl:key name="fp:instance-of" match="pim:instance" use="@component"/>
   <xsl:key name="fp:instance-by-middleware" match="pim:instance" use="@middleware"/>
   <xsl:key name="fp:connection-by-instance" match="pim:connection" use="(pim:writer | pim:reader)/@instance"/>
@@ -131,8 +131,14 @@
       <xsl:sequence select="f:warn('ORO007', string(@xmi-id), 'instance ''' || @name || ''' is deployed on '
           || @middleware || ', not OROCOS: it is not part of the Orocos package')"/>
     </xsl:for-each>
+    <!-- the names and the component ids of $instances, as sets: whether an
+         instance / component is in the package is one look-up -->
+    <xsl:variable name="targets" as="map(xs:string, xs:boolean)"
+        select="map:merge(distinct-values($instances/@name ! string(.)) ! map:entry(., true()))"/>
+    <xsl:variable name="target-components" as="map(xs:string, xs:boolean)"
+        select="map:merge(distinct-values($instances/@component ! string(.)) ! map:entry(., true()))"/>
     <xsl:variable name="components" as="element(pim:bound-component)*"
-        select="$b/pim:bound-component[fp:orocos-instances(key('fp:instance-of', @component), $b)]"/>
+        select="$b/pim:bound-component[@component ! map:contains($target-components, string(.))]"/>
     <xsl:for-each-group select="$components" group-by="f:upper-camel(@name)">
       <xsl:if test="count(current-group()) gt 1">
         <xsl:sequence select="f:fail('ORO004', current-group()[2]/@component, 'components '''
@@ -140,7 +146,7 @@
       </xsl:if>
     </xsl:for-each-group>
     <xsl:variable name="connections" as="element(pim:connection)*"
-        select="$b/pim:connection[fp:kept-connection(., $b)]"/>
+        select="$b/pim:connection[fp:kept-connection(., $b, $targets)]"/>
     <!-- each task context is made once: listed here, and looked up (key
          fp:task-context) by the instances for their property values -->
     <xsl:variable name="task-contexts" as="document-node()">
@@ -166,10 +172,10 @@
                       size="{pim:policy/@size}" lock-policy="{pim:policy/@lock-policy}"
                       lock-policy-code="{index-of(('UNSYNC', 'LOCKED', 'LOCK_FREE'), pim:policy/@lock-policy) - 1}"
                       init="{pim:policy/@init}" pull="{pim:policy/@pull}" topic="{pim:policy/@topic}">
-          <xsl:for-each select="pim:writer[fp:orocos-instances(key('fp:instance', @instance), $b)]">
+          <xsl:for-each select="pim:writer[@instance ! map:contains($targets, string(.))]">
             <o:writer instance="{@instance}" port="{@data-port}" xmi-id="{@port}"/>
           </xsl:for-each>
-          <xsl:for-each select="pim:reader[fp:orocos-instances(key('fp:instance', @instance), $b)]">
+          <xsl:for-each select="pim:reader[@instance ! map:contains($targets, string(.))]">
             <o:reader instance="{@instance}" port="{@data-port}" xmi-id="{@port}"/>
           </xsl:for-each>
         </o:connection>
@@ -181,7 +187,7 @@
         </xsl:perform-sort>
       </xsl:variable>
       <xsl:for-each select="$in-start-order">
-        <xsl:sequence select="fp:instance(., $pkg, $b, $task-contexts)"/>
+        <xsl:sequence select="fp:instance(., $pkg, $b, $task-contexts, $targets)"/>
       </xsl:for-each>
     </o:deployment>
   </xsl:template>
@@ -195,22 +201,16 @@
                           or empty(key('fp:instance-by-middleware', 'OROCOS', root($i)))"/>
   </xsl:function>
 
-  <!-- true when one of $is (instances found by key) is an OROCOS instance of
-       the binding $b -->
-  <xsl:function name="fp:orocos-instances" as="xs:boolean">
-    <xsl:param name="is" as="element(pim:instance)*"/>
-    <xsl:param name="b" as="element(pim:binding)"/>
-    <xsl:sequence select="exists($is[fp:on-target(.)][.. is $b])"/>
-  </xsl:function>
-
   <!-- a connection of the binding $b that the PSM keeps: one of its writers
-       and one of its readers are OROCOS instances -->
+       and one of its readers are OROCOS instances ($targets: the names of
+       the instances of $b that are on the target, see fp:on-target) -->
   <xsl:function name="fp:kept-connection" as="xs:boolean">
     <xsl:param name="k" as="element(pim:connection)"/>
     <xsl:param name="b" as="element(pim:binding)"/>
+    <xsl:param name="targets" as="map(xs:string, xs:boolean)"/>
     <xsl:sequence select="$k/.. is $b
-                          and fp:orocos-instances(key('fp:instance', $k/pim:writer/@instance, root($b)), $b)
-                          and fp:orocos-instances(key('fp:instance', $k/pim:reader/@instance, root($b)), $b)"/>
+                          and (some $n in $k/pim:writer/@instance satisfies map:contains($targets, string($n)))
+                          and (some $n in $k/pim:reader/@instance satisfies map:contains($targets, string($n)))"/>
   </xsl:function>
 
   <!-- ============================================================ types -->
@@ -269,6 +269,10 @@
           </xsl:if>
         </o:hook>
       </xsl:for-each>
+      <!-- some instance of the component is non-periodic (see o:port/@event) -->
+      <xsl:variable name="non-periodic" as="xs:boolean"
+          select="some $a in key('fp:instance-of', $bc/@component, root($bc))/pim:activity
+                  satisfies number($a/@period) eq 0"/>
       <xsl:for-each select="$bc/pim:data-port">
         <xsl:variable name="port" as="element(pim:port)" select="key('fp:id', @port, root($bc))"/>
         <xsl:variable name="t" as="element(ty:type)"
@@ -279,9 +283,7 @@
              instance of the component is non-periodic: a periodic activity
              already runs updateHook on its own clock -->
         <o:port xmi-id="{@port}" direction="{@direction}"
-                event="{@direction eq 'in' and
-                        (some $a in key('fp:instance-of', $bc/@component, root($bc))/pim:activity
-                         satisfies number($a/@period) eq 0)}"
+                event="{@direction eq 'in' and $non-periodic}"
                 rtt-class="{if (@direction eq 'out') then 'RTT::OutputPort' else 'RTT::InputPort'}&lt;{$t/@cpp}&gt;"
                 name="{@name}" member="port_{@name}" interface="{@interface-name}" datum="{@datum-name}"
                 accessor="{$acc}" accessor-declared="{exists($callable[@name eq $acc])}"
@@ -398,13 +400,14 @@
     <xsl:param name="pkg" as="xs:string"/>
     <xsl:param name="b" as="element(pim:binding)"/>
     <xsl:param name="task-contexts" as="document-node()"/>
-    <xsl:variable name="c" as="element(pim:component)" select="key('fp:id', $i/@component, root($i))"/>
-    <xsl:variable name="class" as="xs:string" select="f:upper-camel($c/@name)"/>
+    <xsl:param name="targets" as="map(xs:string, xs:boolean)"/>
     <xsl:variable name="tc" as="element(o:task-context)"
         select="key('fp:task-context', $i/@component, $task-contexts)"/>
+    <!-- f:upper-camel of the component's name, made once by fp:task-context -->
+    <xsl:variable name="class" as="xs:string" select="$tc/@class"/>
     <xsl:variable name="a" as="element(pim:activity)" select="$i/pim:activity"/>
     <xsl:variable name="mine" as="element(pim:connection)*"
-        select="key('fp:connection-by-instance', $i/@name, root($i))[fp:kept-connection(., $b)]"/>
+        select="key('fp:connection-by-instance', $i/@name, root($i))[fp:kept-connection(., $b, $targets)]"/>
     <o:instance xmi-id="{$i/@xmi-id}" name="{$i/@name}" task-context="{$class}" type-name="{$pkg}::{$class}">
       <xsl:for-each select="key('fp:id', $i/@host, root($i))">
         <xsl:attribute name="host" select="(key('fp:host', @id, root($i))/@hostname, @name)[1]"/>
@@ -425,7 +428,7 @@
       <xsl:for-each select="$tc/o:property[@xml-default]">
         <o:property-value name="{@name}" xml-type="{@xml-type}" value="{@xml-default}" script-value="{@script-default}"/>
       </xsl:for-each>
-      <xsl:for-each select="$i/pim:start-after[fp:orocos-instances(key('fp:instance', @instance, root($i)), $b)]">
+      <xsl:for-each select="$i/pim:start-after[@instance ! map:contains($targets, string(.))]">
         <o:start-after instance="{@instance}" xmi-id="{@xmi-id}"/>
       </xsl:for-each>
     </o:instance>
