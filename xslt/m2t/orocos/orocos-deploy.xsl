@@ -62,8 +62,8 @@
     <xsl:param name="name" as="xs:string?"/>
     <xsl:param name="type" as="xs:string"/>
     <xsl:param name="value" as="xs:string"/>
-    <xsl:sequence select="'&lt;simple' || (if (exists($name)) then ' name=&quot;' || fp:xml-text($name) || '&quot;' else '')
-        || ' type=&quot;' || $type || '&quot;&gt;&lt;value&gt;' || fp:xml-text($value) || '&lt;/value&gt;&lt;/simple&gt;'"/>
+    <xsl:sequence select="concat('&lt;simple', if (exists($name)) then concat(' name=&quot;', fp:xml-text($name), '&quot;') else '',
+        ' type=&quot;', $type, '&quot;&gt;&lt;value&gt;', fp:xml-text($value), '&lt;/value&gt;&lt;/simple&gt;')"/>
   </xsl:function>
 
   <xsl:function name="fp:ends" as="xs:string*">
