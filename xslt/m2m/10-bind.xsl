@@ -569,7 +569,8 @@
         <xsl:attribute name="middleware-version" select="."/>
       </xsl:for-each>
       <xsl:if test="$r"><xsl:attribute name="realization" select="$r/@id"/></xsl:if>
-      <xsl:sequence select="fp:activity(($part, $c, $r), $r, $ee, $inst-id)"/>
+      <!-- only the elements with an Activity stereotype can give a tag -->
+      <xsl:sequence select="fp:activity(($part, $c, $r)[exists(f:stereotype(., 'Activity'))], $r, $ee, $inst-id)"/>
       <!-- every deployment that reaches the instance, so the deployment
            rules (schemas/pim/1/pim.sch) can see one deployed twice -->
       <xsl:for-each select="$deployments">
@@ -709,6 +710,21 @@
   <xsl:function name="fp:policy" as="element(pim:policy)">
     <xsl:param name="candidates" as="element()*"/>
     <xsl:variable name="e" as="element()?" select="$candidates[exists(f:stereotype(., 'ConnectionPolicy'))][1]"/>
+    <xsl:choose>
+      <xsl:when test="empty($e)">
+        <!-- no ConnectionPolicy anywhere: the defaults, as the general case
+             below gives them -->
+        <pim:policy type="DATA" size="1" lock-policy="LOCK_FREE" init="false" pull="false" topic="" source="default"/>
+      </xsl:when>
+      <xsl:otherwise>
+        <xsl:sequence select="fp:policy-of($e)"/>
+      </xsl:otherwise>
+    </xsl:choose>
+  </xsl:function>
+
+  <!-- the policy given by the ConnectionPolicy stereotype of $e -->
+  <xsl:function name="fp:policy-of" as="element(pim:policy)">
+    <xsl:param name="e" as="element()"/>
     <xsl:variable name="id" as="xs:string?" select="$e/@id"/>
     <xsl:variable name="type" as="xs:string"
         select="fp:enum((fp:tag($e, 'ConnectionPolicy', 'type')[normalize-space(.)], 'DATA')[1],
@@ -721,10 +737,9 @@
         init="{fp:boolean((fp:tag($e, 'ConnectionPolicy', 'init')[normalize-space(.)], 'false')[1], 'init', $id)}"
         pull="{fp:boolean((fp:tag($e, 'ConnectionPolicy', 'pull')[normalize-space(.)], 'false')[1], 'pull', $id)}"
         topic="{fp:tag($e, 'ConnectionPolicy', 'topic')}"
-        source="{if (empty($e)) then 'default' else if ($e/self::pim:connector) then 'connector'
-                 else if ($e/self::pim:port) then 'port' else 'interface'}">
-      <xsl:if test="$e"><xsl:attribute name="source-element" select="$e/@id"/></xsl:if>
-    </pim:policy>
+        source="{if ($e/self::pim:connector) then 'connector'
+                 else if ($e/self::pim:port) then 'port' else 'interface'}"
+        source-element="{$e/@id}"/>
   </xsl:function>
 
   <xsl:function name="fp:connection-name" as="xs:string">
