@@ -4,7 +4,10 @@
 
   Reads:   a PIM, urn:robomda:pim:1 (schemas/pim/1/pim.xsd), as written by
            xslt/import/import.xsl; an existing pim:binding is replaced.
-  Writes:  the same PIM with pim:binding appended (schemas/pim/1/binding.xsd).
+  Writes:  the same PIM with pim:binding appended (schemas/pim/1/binding.xsd),
+           indented as f:indent (common/indent.xsl) indents it; a model with
+           element-only content is indented in the same pass, through
+           f:indent's own rules (mode mp:indent), with no copy of it first.
   Params:  none.
 
   What it resolves (docs/profile.md: stereotypes of profile "robomda" first,
@@ -100,6 +103,7 @@
 
   <xsl:mode on-no-match="shallow-copy"/>
   <xsl:mode name="m:bind" on-no-match="shallow-copy"/>
+  <xsl:mode name="mp:bind-indented" on-no-match="fail"/>
 
   <xsl:key name="fp:id" match="*[@id]" use="@id"/>
   <xsl:key name="fp:part-by-type" match="pim:part" use="@type"/>
@@ -119,13 +123,63 @@
 
 
   <!-- ============================================================ entry -->
+  <!-- The usual input (a pim:model with element-only content) is written
+       in one pass: the model's children go straight through f:indent's
+       rules (mode mp:indent of common/indent.xsl), with the new binding
+       last, which gives the bytes f:indent of the bound copy would give
+       without building that copy of the whole model first. Any other input
+       takes the general way. -->
   <xsl:template match="/" as="document-node()">
-    <xsl:variable name="result" as="document-node()">
+    <xsl:choose>
+      <xsl:when test="pim:model[empty(text()[normalize-space()])]">
+        <xsl:document>
+          <xsl:for-each select="node()">
+            <xsl:if test="position() gt 1">
+              <xsl:text>&#10;</xsl:text>
+            </xsl:if>
+            <xsl:choose>
+              <xsl:when test="self::pim:model">
+                <xsl:apply-templates select="." mode="mp:bind-indented"/>
+              </xsl:when>
+              <xsl:otherwise>
+                <xsl:apply-templates select="." mode="mp:indent">
+                  <xsl:with-param name="margin" select="'&#10;'"/>
+                </xsl:apply-templates>
+              </xsl:otherwise>
+            </xsl:choose>
+          </xsl:for-each>
+        </xsl:document>
+      </xsl:when>
+      <xsl:otherwise>
+        <xsl:variable name="result" as="document-node()">
+          <xsl:document>
+            <xsl:apply-templates select="node()" mode="m:bind"/>
+          </xsl:document>
+        </xsl:variable>
+        <xsl:sequence select="f:indent($result)"/>
+      </xsl:otherwise>
+    </xsl:choose>
+  </xsl:template>
+
+  <!-- the bound model, indented: what f:indent makes of the m:bind result
+       below (one child per line, two spaces a level) -->
+  <xsl:template match="pim:model" mode="mp:bind-indented" as="element(pim:model)">
+    <xsl:sequence select="fp:check-references(.)"/>
+    <xsl:variable name="binding" as="document-node()">
       <xsl:document>
-        <xsl:apply-templates select="node()" mode="m:bind"/>
+        <xsl:call-template name="fp:binding"/>
       </xsl:document>
     </xsl:variable>
-    <xsl:sequence select="f:indent($result)"/>
+    <xsl:copy>
+      <xsl:copy-of select="@*"/>
+      <xsl:for-each select="(* except pim:binding) | comment() | processing-instruction(), $binding/pim:binding">
+        <xsl:text>&#10;  </xsl:text>
+        <xsl:apply-templates select="." mode="mp:indent">
+          <xsl:with-param name="margin" select="'&#10;  '"/>
+        </xsl:apply-templates>
+      </xsl:for-each>
+      <xsl:text>&#10;</xsl:text>
+    </xsl:copy>
   </xsl:template>
 
   <xsl:template match="pim:model" mode="m:bind" as="element(pim:model)">
