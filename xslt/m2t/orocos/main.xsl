@@ -11,6 +11,8 @@
              component has no realizing class
              src/components.cpp, CMakeLists.txt, package.xml
              deploy/<model>.xml, deploy/<model>.ops, deploy/<model>.lua
+           One fs:file a line, as f:indent (common/indent.xsl) would indent
+           the file set, written so directly (no copy of all the text).
   Params:  model-dir-from-output (xslt/m2t/orocos/params.xsl).
   Errors:  none (the PSM is complete and valid).
   Modules: orocos-text.xsl (text helpers), orocos-cpp.xsl, orocos-build.xsl,
@@ -27,7 +29,6 @@
     exclude-result-prefixes="#all">
 
   <xsl:include href="params.xsl"/>
-  <xsl:include href="../../common/indent.xsl"/>
   <xsl:include href="orocos-text.xsl"/>
   <xsl:include href="orocos-cpp.xsl"/>
   <xsl:include href="orocos-build.xsl"/>
@@ -36,18 +37,18 @@
   <xsl:output method="xml" indent="no" encoding="UTF-8" cdata-section-elements="fs:file"/>
   <xsl:mode name="m:emit-files" on-no-match="fail"/>
 
+  <!-- the file set comes out as f:indent (common/indent.xsl) would indent
+       it (one fs:file a line; their text as it is), written so directly:
+       f:indent would copy all the text once more -->
   <xsl:template match="/" as="document-node()">
-    <xsl:variable name="result" as="document-node()">
-      <xsl:document>
-        <xsl:apply-templates select="o:deployment" mode="m:emit-files"/>
-      </xsl:document>
-    </xsl:variable>
-    <xsl:sequence select="f:indent($result)"/>
+    <xsl:document>
+      <xsl:apply-templates select="o:deployment" mode="m:emit-files"/>
+    </xsl:document>
   </xsl:template>
 
   <xsl:template match="o:deployment" mode="m:emit-files" as="element(fs:files)">
     <xsl:variable name="pkg" as="xs:string" select="@package"/>
-    <fs:files target="orocos">
+    <xsl:variable name="files" as="element(fs:file)*">
       <xsl:for-each select="o:task-context">
         <xsl:sequence select="fp:file('include/' || $pkg || '/' || @generated-class || '.hpp', 'generated', $fp:cpp-xsl, fp:cpp-header(.))"/>
         <xsl:sequence select="fp:file('src/' || @generated-class || '.cpp', 'generated', $fp:cpp-xsl, fp:cpp-source(.))"/>
@@ -62,6 +63,15 @@
       <xsl:sequence select="fp:file('deploy/' || @deploy-name || '.xml', 'generated', $fp:deploy-xsl, fp:deploy-xml(.))"/>
       <xsl:sequence select="fp:file('deploy/' || @deploy-name || '.ops', 'generated', $fp:deploy-xsl, fp:deploy-ops(.))"/>
       <xsl:sequence select="fp:file('deploy/' || @deploy-name || '.lua', 'generated', $fp:deploy-xsl, fp:deploy-lua(.))"/>
+    </xsl:variable>
+    <fs:files target="orocos">
+      <xsl:for-each select="$files">
+        <xsl:text>&#10;  </xsl:text>
+        <xsl:sequence select="."/>
+      </xsl:for-each>
+      <xsl:if test="exists($files)">
+        <xsl:text>&#10;</xsl:text>
+      </xsl:if>
     </fs:files>
   </xsl:template>
 
