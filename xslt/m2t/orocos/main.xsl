@@ -50,19 +50,19 @@
     <xsl:variable name="pkg" as="xs:string" select="@package"/>
     <xsl:variable name="files" as="element(fs:file)*">
       <xsl:for-each select="o:task-context">
-        <xsl:sequence select="fp:file('include/' || $pkg || '/' || @generated-class || '.hpp', 'generated', $fp:cpp-xsl, fp:cpp-header(.))"/>
-        <xsl:sequence select="fp:file('src/' || @generated-class || '.cpp', 'generated', $fp:cpp-xsl, fp:cpp-source(.))"/>
+        <xsl:sequence select="fp:file(concat('include/', $pkg, '/', @generated-class, '.hpp'), 'generated', $fp:cpp-xsl, fp:cpp-header(.))"/>
+        <xsl:sequence select="fp:file(concat('src/', @generated-class, '.cpp'), 'generated', $fp:cpp-xsl, fp:cpp-source(.))"/>
         <xsl:if test="@kind eq 'base'">
-          <xsl:sequence select="fp:file('include/' || $pkg || '/' || @class || '.hpp', 'user', $fp:cpp-xsl, fp:user-header(.))"/>
-          <xsl:sequence select="fp:file('src/' || @class || '.cpp', 'user', $fp:cpp-xsl, fp:user-source(.))"/>
+          <xsl:sequence select="fp:file(concat('include/', $pkg, '/', @class, '.hpp'), 'user', $fp:cpp-xsl, fp:user-header(.))"/>
+          <xsl:sequence select="fp:file(concat('src/', @class, '.cpp'), 'user', $fp:cpp-xsl, fp:user-source(.))"/>
         </xsl:if>
       </xsl:for-each>
       <xsl:sequence select="fp:file('src/components.cpp', 'generated', $fp:cpp-xsl, fp:components-cpp(.))"/>
       <xsl:sequence select="fp:file('CMakeLists.txt', 'generated', $fp:build-xsl, fp:cmakelists(.))"/>
       <xsl:sequence select="fp:file('package.xml', 'generated', $fp:build-xsl, fp:package-xml(.))"/>
-      <xsl:sequence select="fp:file('deploy/' || @deploy-name || '.xml', 'generated', $fp:deploy-xsl, fp:deploy-xml(.))"/>
-      <xsl:sequence select="fp:file('deploy/' || @deploy-name || '.ops', 'generated', $fp:deploy-xsl, fp:deploy-ops(.))"/>
-      <xsl:sequence select="fp:file('deploy/' || @deploy-name || '.lua', 'generated', $fp:deploy-xsl, fp:deploy-lua(.))"/>
+      <xsl:sequence select="fp:file(concat('deploy/', @deploy-name, '.xml'), 'generated', $fp:deploy-xsl, fp:deploy-xml(.))"/>
+      <xsl:sequence select="fp:file(concat('deploy/', @deploy-name, '.ops'), 'generated', $fp:deploy-xsl, fp:deploy-ops(.))"/>
+      <xsl:sequence select="fp:file(concat('deploy/', @deploy-name, '.lua'), 'generated', $fp:deploy-xsl, fp:deploy-lua(.))"/>
     </xsl:variable>
     <fs:files target="orocos">
       <xsl:for-each select="$files">

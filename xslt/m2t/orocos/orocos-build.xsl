@@ -38,15 +38,15 @@
     <xsl:param name="d" as="element(o:deployment)"/>
     <xsl:variable name="pkg" as="xs:string" select="$d/@package"/>
     <xsl:variable name="sources" as="xs:string*"
-        select="$d/o:task-context ! ('src/' || @generated-class || '.cpp', if (@kind eq 'base') then 'src/' || @class || '.cpp' else ()),
+        select="$d/o:task-context ! (concat('src/', @generated-class, '.cpp'), if (@kind eq 'base') then concat('src/', @class, '.cpp') else ()),
                 'src/components.cpp'"/>
     <xsl:variable name="headers" as="xs:string*"
-        select="$d/o:task-context ! ('include/' || $pkg || '/' || @generated-class || '.hpp',
-                                     if (@kind eq 'base') then 'include/' || $pkg || '/' || @class || '.hpp' else ())"/>
+        select="$d/o:task-context ! (concat('include/', $pkg, '/', @generated-class, '.hpp'),
+                                     if (@kind eq 'base') then concat('include/', $pkg, '/', @class, '.hpp') else ())"/>
     <xsl:sequence select="fp:lines((
-        fp:banner('# ', $fp:build-xsl, 'model ''' || $d/@model-name || '''', false()),
+        fp:banner('# ', $fp:build-xsl, concat('model ''', $d/@model-name, ''''), false()),
         'cmake_minimum_required(VERSION 3.5)',
-        'project(' || $pkg || ')',
+        concat('project(', $pkg, ')'),
         '',
         '# RTT 2.10 headers do not compile as C++20: pin the standard.',
         'set(CMAKE_CXX_STANDARD 14)',
@@ -63,42 +63,42 @@
         $d/o:library ! fp:library-find(.),
         '',
         '# One component library with every component type (src/components.cpp).',
-        'orocos_component(' || $pkg || ' ' || string-join($sources, ' ') || ')',
+        concat('orocos_component(', $pkg, ' ', string-join($sources, ' '), ')'),
         $d/o:library ! fp:library-link(., $pkg),
         '',
-        'orocos_install_headers(' || string-join($headers, ' ') || ')',
+        concat('orocos_install_headers(', string-join($headers, ' '), ')'),
         'orocos_generate_package()'))"/>
   </xsl:function>
 
   <xsl:function name="fp:library-find" as="xs:string*">
     <xsl:param name="lib" as="element(o:library)"/>
-    <xsl:variable name="v" as="xs:string" select="'${' || $lib/@cmake-var || '}'"/>
+    <xsl:variable name="v" as="xs:string" select="concat('${', $lib/@cmake-var, '}')"/>
     <xsl:sequence select="
         '',
-        '# atomic-code library ''' || $lib/@name || ''' (artifact path ''' || $lib/@path || ''', CMake target ' || $lib/@target || ')',
-        'set(' || $lib/@cmake-var || ' &quot;' || fp:library-dir($lib) || '&quot; CACHE PATH',
-        '    &quot;Directory of the atomic-code library ' || $lib/@name || '&quot;)',
-        'if(EXISTS &quot;' || $v || '/CMakeLists.txt&quot; AND NOT TARGET ' || $lib/@target || ')',
-        '  add_subdirectory(&quot;' || $v || '&quot; ' || $lib/@build-dir || ')',
+        concat('# atomic-code library ''', $lib/@name, ''' (artifact path ''', $lib/@path, ''', CMake target ', $lib/@target, ')'),
+        concat('set(', $lib/@cmake-var, ' &quot;', fp:library-dir($lib), '&quot; CACHE PATH'),
+        concat('    &quot;Directory of the atomic-code library ', $lib/@name, '&quot;)'),
+        concat('if(EXISTS &quot;', $v, '/CMakeLists.txt&quot; AND NOT TARGET ', $lib/@target, ')'),
+        concat('  add_subdirectory(&quot;', $v, '&quot; ', $lib/@build-dir, ')'),
         'endif()',
-        'include_directories(&quot;' || $v || '/' || $lib/@include-dir || '&quot; &quot;' || $v || '&quot;)'"/>
+        concat('include_directories(&quot;', $v, '/', $lib/@include-dir, '&quot; &quot;', $v, '&quot;)')"/>
   </xsl:function>
 
   <xsl:function name="fp:library-link" as="xs:string*">
     <xsl:param name="lib" as="element(o:library)"/>
     <xsl:param name="pkg" as="xs:string"/>
-    <xsl:variable name="v" as="xs:string" select="'${' || $lib/@cmake-var || '}'"/>
+    <xsl:variable name="v" as="xs:string" select="concat('${', $lib/@cmake-var, '}')"/>
     <xsl:variable name="found" as="xs:string" select="replace($lib/@cmake-var, '_DIR$', '_LIBRARY')"/>
     <xsl:sequence select="
-        'if(TARGET ' || $lib/@target || ')',
-        '  target_link_libraries(' || $pkg || ' ' || $lib/@target || ')',
+        concat('if(TARGET ', $lib/@target, ')'),
+        concat('  target_link_libraries(', $pkg, ' ', $lib/@target, ')'),
         'else()',
-        '  find_library(' || $found || ' NAMES ' || $lib/@target,
-        '    PATHS &quot;' || $v || '&quot; &quot;' || $v || '/lib&quot; &quot;' || $v || '/build&quot; NO_DEFAULT_PATH)',
-        '  if(' || $found || ')',
-        '    target_link_libraries(' || $pkg || ' ${' || $found || '})',
+        concat('  find_library(', $found, ' NAMES ', $lib/@target),
+        concat('    PATHS &quot;', $v, '&quot; &quot;', $v, '/lib&quot; &quot;', $v, '/build&quot; NO_DEFAULT_PATH)'),
+        concat('  if(', $found, ')'),
+        concat('    target_link_libraries(', $pkg, ' ${', $found, '})'),
         '  else()',
-        '    message(WARNING &quot;atomic-code library ' || $lib/@name || ' (target ' || $lib/@target || ') not found in ' || $v || '&quot;)',
+        concat('    message(WARNING &quot;atomic-code library ', $lib/@name, ' (target ', $lib/@target, ') not found in ', $v, '&quot;)'),
         '  endif()',
         'endif()'"/>
   </xsl:function>
@@ -108,12 +108,12 @@
     <xsl:sequence select="fp:lines((
         '&lt;?xml version=&quot;1.0&quot;?&gt;',
         '&lt;!--',
-        fp:indent(2, fp:banner('', $fp:build-xsl, 'model ''' || fp:xml-text($d/@model-name) || '''', false())),
+        fp:indent(2, fp:banner('', $fp:build-xsl, concat('model ''', fp:xml-text($d/@model-name), ''''), false())),
         '--&gt;',
         '&lt;package format=&quot;3&quot;&gt;',
-        '  &lt;name&gt;' || $d/@package || '&lt;/name&gt;',
+        concat('  &lt;name&gt;', $d/@package, '&lt;/name&gt;'),
         '  &lt;version&gt;0.0.0&lt;/version&gt;',
-        '  &lt;description&gt;Orocos RTT components of model ' || fp:xml-text($d/@model-name) || ', generated by robomda.&lt;/description&gt;',
+        concat('  &lt;description&gt;Orocos RTT components of model ', fp:xml-text($d/@model-name), ', generated by robomda.&lt;/description&gt;'),
         '  &lt;maintainer email=&quot;maintainer@example.com&quot;&gt;robomda user&lt;/maintainer&gt;',
         '  &lt;license&gt;TODO&lt;/license&gt;',
         '',

@@ -29,12 +29,12 @@
   <xsl:function name="fp:guard" as="xs:string">
     <xsl:param name="tc" as="element(o:task-context)"/>
     <xsl:param name="class" as="xs:string"/>
-    <xsl:sequence select="upper-case($tc/@namespace || '_' || replace(replace($class, '([a-z0-9])([A-Z])', '$1_$2'), '[^A-Za-z0-9_]', '_')) || '_HPP'"/>
+    <xsl:sequence select="concat(upper-case(concat($tc/@namespace, '_', replace(replace($class, '([a-z0-9])([A-Z])', '$1_$2'), '[^A-Za-z0-9_]', '_'))), '_HPP')"/>
   </xsl:function>
 
   <xsl:function name="fp:what" as="xs:string">
     <xsl:param name="tc" as="element(o:task-context)"/>
-    <xsl:sequence select="'component ''' || $tc/@name || ''' of model ''' || $tc/../@model-name || ''''"/>
+    <xsl:sequence select="concat('component ''', $tc/@name, ''' of model ''', $tc/../@model-name, '''')"/>
   </xsl:function>
 
   <xsl:function name="fp:doc-of" as="xs:string">
@@ -46,8 +46,8 @@
   <xsl:function name="fp:signature" as="xs:string">
     <xsl:param name="op" as="element(o:operation)"/>
     <xsl:param name="with-names" as="xs:boolean"/>
-    <xsl:sequence select="'(' || string-join($op/o:parameter !
-        (@decl-type || ' ' || (if ($with-names) then @name else '/*' || @name || '*/')), ', ') || ')'"/>
+    <xsl:sequence select="concat('(', string-join($op/o:parameter !
+        (concat(@decl-type, ' ', (if ($with-names) then @name else concat('/*', @name, '*/')))), ', '), ')')"/>
   </xsl:function>
 
   <xsl:function name="fp:includes" as="xs:string*">
@@ -61,33 +61,33 @@
   <xsl:function name="fp:member-decls" as="xs:string*">
     <xsl:param name="tc" as="element(o:task-context)"/>
     <xsl:sequence select="
-        if ($tc/o:port) then ('', '// data ports (R2)', $tc/o:port ! (@rtt-class || ' ' || @member || ';')) else (),
+        if ($tc/o:port) then ('', '// data ports (R2)', $tc/o:port ! (concat(@rtt-class, ' ', @member, ';'))) else (),
         if ($tc/@kind eq 'base' and $tc/o:property)
-        then ('', '// properties (R4)', $tc/o:property ! (@cpp-type || ' ' || @member || ';')) else ()"/>
+        then ('', '// properties (R4)', $tc/o:property ! (concat(@cpp-type, ' ', @member, ';'))) else ()"/>
   </xsl:function>
 
   <!-- constructor body: ports, properties, operations -->
   <xsl:function name="fp:constructor-body" as="xs:string*">
     <xsl:param name="tc" as="element(o:task-context)"/>
     <xsl:variable name="owner" as="xs:string"
-        select="if ($tc/@kind eq 'wrapper') then $tc/o:realizing-class/@cpp-name || '::' else ''"/>
+        select="if ($tc/@kind eq 'wrapper') then concat($tc/o:realizing-class/@cpp-name, '::') else ''"/>
     <xsl:for-each select="$tc/o:port">
-      <xsl:sequence select="'this->ports()->' || (if (@event eq 'true') then 'addEventPort' else 'addPort')
-          || '(' || @member || ').doc(' || fp:cpp-string(fp:doc-of(., @interface || '::' || @datum)) || ');'"/>
+      <xsl:sequence select="concat('this->ports()->', (if (@event eq 'true') then 'addEventPort' else 'addPort'),
+           '(', @member, ').doc(', fp:cpp-string(fp:doc-of(., concat(@interface, '::', @datum))), ');')"/>
       <xsl:if test="@direction eq 'out'">
-        <xsl:sequence select="@member || '.setDataSample(' || @sample || ');'"/>
+        <xsl:sequence select="concat(@member, '.setDataSample(', @sample, ');')"/>
       </xsl:if>
     </xsl:for-each>
     <xsl:for-each select="$tc/o:property">
-      <xsl:sequence select="'this->addProperty(' || fp:cpp-string(@name) || ', ' || $owner || @member
-          || ').doc(' || fp:cpp-string(fp:doc-of(., @name)) || ');'"/>
+      <xsl:sequence select="concat('this->addProperty(', fp:cpp-string(@name), ', ', $owner, @member,
+           ').doc(', fp:cpp-string(fp:doc-of(., @name)), ');')"/>
     </xsl:for-each>
     <xsl:for-each select="$tc/o:operation">
-      <xsl:sequence select="'this->addOperation(' || fp:cpp-string(@name) || ', &amp;' || $tc/@generated-class
-          || '::' || @name || ', this, ' || @thread || ')',
-          '    .doc(' || fp:cpp-string(fp:doc-of(., @name)) || ')'
-          || string-join(o:parameter ! ('.arg(' || fp:cpp-string(@name) || ', ' || fp:cpp-string(fp:doc-of(., @direction || ' ' || @cpp-type)) || ')'), '')
-          || ';'"/>
+      <xsl:sequence select="concat('this->addOperation(', fp:cpp-string(@name), ', &amp;', $tc/@generated-class,
+           '::', @name, ', this, ', @thread, ')'),
+          concat('    .doc(', fp:cpp-string(fp:doc-of(., @name)), ')',
+           string-join(o:parameter ! (concat('.arg(', fp:cpp-string(@name), ', ', fp:cpp-string(fp:doc-of(., concat(@direction, ' ', @cpp-type))), ')')), ''),
+           ';')"/>
     </xsl:for-each>
   </xsl:function>
 
@@ -95,8 +95,8 @@
     <xsl:param name="tc" as="element(o:task-context)"/>
     <xsl:variable name="inits" as="xs:string*" select="
         'RTT::TaskContext(name, PreOperational)',
-        $tc/o:port ! (@member || '(' || fp:cpp-string(@name) || ')'),
-        if ($tc/@kind eq 'base') then $tc/o:property ! (@member || '(' || @cpp-default || ')') else ()"/>
+        $tc/o:port ! (concat(@member, '(', fp:cpp-string(@name), ')')),
+        if ($tc/@kind eq 'base') then $tc/o:property ! (concat(@member, '(', @cpp-default, ')')) else ()"/>
     <xsl:sequence select="string-join($inits, ',&#10;    ')"/>
   </xsl:function>
 
@@ -108,25 +108,25 @@
     <xsl:variable name="wrapper" as="xs:boolean" select="$tc/@kind eq 'wrapper'"/>
     <xsl:sequence select="fp:lines((
         fp:banner('// ', $fp:cpp-xsl, fp:what($tc), false()),
-        '#ifndef ' || $guard,
-        '#define ' || $guard,
+        concat('#ifndef ', $guard),
+        concat('#define ', $guard),
         '',
         fp:includes($tc),
-        if ($wrapper) then '#include &lt;' || $tc/o:realizing-class/@header || '&gt;' else (),
+        if ($wrapper) then concat('#include &lt;', $tc/o:realizing-class/@header, '&gt;') else (),
         '',
-        'namespace ' || $tc/@namespace || ' {',
+        concat('namespace ', $tc/@namespace, ' {'),
         '',
         '/**',
-        ' * ' || fp:doc-of($tc, 'Orocos TaskContext of component ' || $tc/@name || '.'),
-        if ($wrapper) then ' * Wraps the atomic code ' || $tc/o:realizing-class/@cpp-name || ' (seed 000, R1).'
-        else ' * Generated base: derive ' || $tc/@class || ' from it (user file).',
+        concat(' * ', fp:doc-of($tc, concat('Orocos TaskContext of component ', $tc/@name, '.'))),
+        if ($wrapper) then concat(' * Wraps the atomic code ', $tc/o:realizing-class/@cpp-name, ' (seed 000, R1).')
+        else concat(' * Generated base: derive ', $tc/@class, ' from it (user file).'),
         ' */',
-        'class ' || $cls || ' : public RTT::TaskContext'
-          || (if ($wrapper) then ', public ' || $tc/o:realizing-class/@cpp-name else ''),
+        concat('class ', $cls, ' : public RTT::TaskContext',
+           (if ($wrapper) then concat(', public ', $tc/o:realizing-class/@cpp-name) else '')),
         '{',
         'public:',
-        '  explicit ' || $cls || '(const std::string&amp; name);',
-        '  virtual ~' || $cls || '();',
+        concat('  explicit ', $cls, '(const std::string&amp; name);'),
+        concat('  virtual ~', $cls, '();'),
         if ($wrapper) then (
           '',
           '  bool configureHook() override;',
@@ -138,16 +138,16 @@
         if (not($wrapper) and $tc/o:operation) then (
           '',
           'protected:',
-          '  // operations (R3): implemented by ' || $tc/@class,
-          $tc/o:operation ! ('  virtual ' || @return-type || ' ' || @name || fp:signature(., true()) || ' = 0;'))
+          concat('  // operations (R3): implemented by ', $tc/@class),
+          $tc/o:operation ! (concat('  virtual ', @return-type, ' ', @name, fp:signature(., true()), ' = 0;')))
         else (),
         if ($tc/o:port or (not($wrapper) and $tc/o:property)) then ('', 'protected:') else (),
         fp:indent(2, fp:member-decls($tc)[position() gt 1]),
         '};',
         '',
-        '}  // namespace ' || $tc/@namespace,
+        concat('}  // namespace ', $tc/@namespace),
         '',
-        '#endif  // ' || $guard))"/>
+        concat('#endif  // ', $guard)))"/>
   </xsl:function>
 
   <!-- ================================================ generated source -->
@@ -157,22 +157,22 @@
     <xsl:variable name="wrapper" as="xs:boolean" select="$tc/@kind eq 'wrapper'"/>
     <xsl:sequence select="fp:lines((
         fp:banner('// ', $fp:cpp-xsl, fp:what($tc), false()),
-        '#include &lt;' || $tc/@namespace || '/' || $cls || '.hpp&gt;',
+        concat('#include &lt;', $tc/@namespace, '/', $cls, '.hpp&gt;'),
         '',
-        'namespace ' || $tc/@namespace || ' {',
+        concat('namespace ', $tc/@namespace, ' {'),
         '',
-        $cls || '::' || $cls || '(const std::string&amp; name)',
-        '  : ' || fp:initialisers($tc),
+        concat($cls, '::', $cls, '(const std::string&amp; name)'),
+        concat('  : ', fp:initialisers($tc)),
         '{',
         fp:indent(2, fp:constructor-body($tc)),
         '}',
         '',
-        $cls || '::~' || $cls || '()',
+        concat($cls, '::~', $cls, '()'),
         '{',
         '}',
         if ($wrapper) then fp:wrapper-hooks($tc) else (),
         '',
-        '}  // namespace ' || $tc/@namespace))"/>
+        concat('}  // namespace ', $tc/@namespace)))"/>
   </xsl:function>
 
   <xsl:function name="fp:wrapper-hooks" as="xs:string*">
@@ -182,35 +182,35 @@
     <xsl:for-each select="$tc/o:hook">
       <xsl:variable name="h" as="element(o:hook)" select="."/>
       <xsl:variable name="bool" as="xs:boolean" select="@name = ('configure', 'start')"/>
-      <xsl:sequence select="'', (if ($bool) then 'bool ' else 'void ') || $cls || '::' || @name || 'Hook()', '{'"/>
+      <xsl:sequence select="'', concat((if ($bool) then 'bool ' else 'void '), $cls, '::', @name, 'Hook()'), '{'"/>
       <xsl:if test="@name eq 'update'">
         <xsl:for-each select="$tc/o:port[@direction eq 'in']">
-          <xsl:variable name="v" as="xs:string" select="@name || '_sample'"/>
-          <xsl:sequence select="'  ' || @cpp-type || ' ' || $v || ' = ' || @sample || ';',
+          <xsl:variable name="v" as="xs:string" select="concat(@name, '_sample')"/>
+          <xsl:sequence select="concat('  ', @cpp-type, ' ', $v, ' = ', @sample, ';'),
               if (xs:boolean(@accessor-declared))
-              then ('  if (' || @member || '.read(' || $v || ') == RTT::NewData) {',
-                    '    ' || $rc || '::' || @accessor || '(' || $v || ');',
+              then (concat('  if (', @member, '.read(', $v, ') == RTT::NewData) {'),
+                    concat('    ', $rc, '::', @accessor, '(', $v, ');'),
                     '  }')
-              else ('  ' || @member || '.read(' || $v || ');  // ' || $tc/o:realizing-class/@name
-                    || ' declares no ' || @accessor || '(): the sample is not passed on')"/>
+              else (concat('  ', @member, '.read(', $v, ');  // ', $tc/o:realizing-class/@name,
+                     ' declares no ', @accessor, '(): the sample is not passed on'))"/>
         </xsl:for-each>
       </xsl:if>
       <xsl:choose>
         <xsl:when test="@call and $bool and xs:boolean(@returns-bool)">
-          <xsl:sequence select="'  return ' || $rc || '::' || @call || '();'"/>
+          <xsl:sequence select="concat('  return ', $rc, '::', @call, '();')"/>
         </xsl:when>
         <xsl:when test="@call">
-          <xsl:sequence select="'  ' || $rc || '::' || @call || '();'"/>
+          <xsl:sequence select="concat('  ', $rc, '::', @call, '();')"/>
         </xsl:when>
         <xsl:otherwise>
-          <xsl:sequence select="'  // ' || $tc/o:realizing-class/@name || ' declares no ' || @name || '()'"/>
+          <xsl:sequence select="concat('  // ', $tc/o:realizing-class/@name, ' declares no ', @name, '()')"/>
         </xsl:otherwise>
       </xsl:choose>
       <xsl:if test="@name eq 'update'">
         <xsl:for-each select="$tc/o:port[@direction eq 'out']">
           <xsl:sequence select="if (xs:boolean(@accessor-declared))
-              then '  ' || @member || '.write(' || $rc || '::' || @accessor || '());'
-              else '  // ' || $tc/o:realizing-class/@name || ' declares no ' || @accessor || '(): ' || @member || ' is not written'"/>
+              then concat('  ', @member, '.write(', $rc, '::', @accessor, '());')
+              else concat('  // ', $tc/o:realizing-class/@name, ' declares no ', @accessor, '(): ', @member, ' is not written')"/>
         </xsl:for-each>
       </xsl:if>
       <xsl:if test="$bool and not(@call and xs:boolean(@returns-bool))">
@@ -227,17 +227,17 @@
     <xsl:variable name="guard" as="xs:string" select="fp:guard($tc, $cls)"/>
     <xsl:sequence select="fp:lines((
         fp:banner('// ', $fp:cpp-xsl, fp:what($tc), true()),
-        '#ifndef ' || $guard,
-        '#define ' || $guard,
+        concat('#ifndef ', $guard),
+        concat('#define ', $guard),
         '',
-        '#include &lt;' || $tc/@namespace || '/' || $tc/@generated-class || '.hpp&gt;',
+        concat('#include &lt;', $tc/@namespace, '/', $tc/@generated-class, '.hpp&gt;'),
         '',
-        'namespace ' || $tc/@namespace || ' {',
+        concat('namespace ', $tc/@namespace, ' {'),
         '',
-        'class ' || $cls || ' : public ' || $tc/@generated-class,
+        concat('class ', $cls, ' : public ', $tc/@generated-class),
         '{',
         'public:',
-        '  explicit ' || $cls || '(const std::string&amp; name);',
+        concat('  explicit ', $cls, '(const std::string&amp; name);'),
         '',
         '  bool configureHook() override;',
         '  bool startHook() override;',
@@ -247,13 +247,13 @@
         if ($tc/o:operation) then (
           '',
           'protected:',
-          $tc/o:operation ! ('  ' || @return-type || ' ' || @name || fp:signature(., true()) || ' override;'))
+          $tc/o:operation ! (concat('  ', @return-type, ' ', @name, fp:signature(., true()), ' override;')))
         else (),
         '};',
         '',
-        '}  // namespace ' || $tc/@namespace,
+        concat('}  // namespace ', $tc/@namespace),
         '',
-        '#endif  // ' || $guard))"/>
+        concat('#endif  // ', $guard)))"/>
   </xsl:function>
 
   <xsl:function name="fp:user-source" as="xs:string">
@@ -261,59 +261,59 @@
     <xsl:variable name="cls" as="xs:string" select="$tc/@class"/>
     <xsl:sequence select="fp:lines((
         fp:banner('// ', $fp:cpp-xsl, fp:what($tc), true()),
-        '#include &lt;' || $tc/@namespace || '/' || $cls || '.hpp&gt;',
+        concat('#include &lt;', $tc/@namespace, '/', $cls, '.hpp&gt;'),
         '',
-        'namespace ' || $tc/@namespace || ' {',
+        concat('namespace ', $tc/@namespace, ' {'),
         '',
-        $cls || '::' || $cls || '(const std::string&amp; name)',
-        '  : ' || $tc/@generated-class || '(name)',
+        concat($cls, '::', $cls, '(const std::string&amp; name)'),
+        concat('  : ', $tc/@generated-class, '(name)'),
         '{',
         '}',
         '',
-        'bool ' || $cls || '::configureHook()',
-        '{',
-        '  return true;',
-        '}',
-        '',
-        'bool ' || $cls || '::startHook()',
+        concat('bool ', $cls, '::configureHook()'),
         '{',
         '  return true;',
         '}',
         '',
-        'void ' || $cls || '::updateHook()',
+        concat('bool ', $cls, '::startHook()'),
+        '{',
+        '  return true;',
+        '}',
+        '',
+        concat('void ', $cls, '::updateHook()'),
         '{',
         if ($tc/o:port[@direction eq 'in'])
-        then '  // read: ' || string-join($tc/o:port[@direction eq 'in'] ! (@member || '.read(sample)'), ', ') else (),
+        then concat('  // read: ', string-join($tc/o:port[@direction eq 'in'] ! (concat(@member, '.read(sample)')), ', ')) else (),
         if ($tc/o:port[@direction eq 'out'])
-        then '  // write: ' || string-join($tc/o:port[@direction eq 'out'] ! (@member || '.write(value)'), ', ') else (),
+        then concat('  // write: ', string-join($tc/o:port[@direction eq 'out'] ! (concat(@member, '.write(value)')), ', ')) else (),
         '}',
         '',
-        'void ' || $cls || '::stopHook()',
+        concat('void ', $cls, '::stopHook()'),
         '{',
         '}',
         '',
-        'void ' || $cls || '::cleanupHook()',
+        concat('void ', $cls, '::cleanupHook()'),
         '{',
         '}',
         $tc/o:operation ! (
           '',
-          @return-type || ' ' || $cls || '::' || @name || fp:signature(., false()),
+          concat(@return-type, ' ', $cls, '::', @name, fp:signature(., false())),
           '{',
-          if (@return-type ne 'void') then '  return ' || @return-sample || ';' else (),
+          if (@return-type ne 'void') then concat('  return ', @return-sample, ';') else (),
           '}'),
         '',
-        '}  // namespace ' || $tc/@namespace))"/>
+        concat('}  // namespace ', $tc/@namespace)))"/>
   </xsl:function>
 
   <!-- ============================================== component library -->
   <xsl:function name="fp:components-cpp" as="xs:string">
     <xsl:param name="d" as="element(o:deployment)"/>
     <xsl:sequence select="fp:lines((
-        fp:banner('// ', $fp:cpp-xsl, 'the component library of model ''' || $d/@model-name || '''', false()),
+        fp:banner('// ', $fp:cpp-xsl, concat('the component library of model ''', $d/@model-name, ''''), false()),
         '#include &lt;rtt/Component.hpp&gt;',
-        $d/o:task-context ! ('#include &lt;' || @namespace || '/' || @class || '.hpp&gt;'),
+        $d/o:task-context ! (concat('#include &lt;', @namespace, '/', @class, '.hpp&gt;')),
         '',
         'ORO_CREATE_COMPONENT_LIBRARY()',
-        $d/o:task-context ! ('ORO_LIST_COMPONENT_TYPE(' || @type-name || ')')))"/>
+        $d/o:task-context ! (concat('ORO_LIST_COMPONENT_TYPE(', @type-name, ')'))))"/>
   </xsl:function>
 </xsl:stylesheet>

@@ -42,7 +42,7 @@
 
   <xsl:function name="fp:period" as="xs:string">
     <xsl:param name="p" as="xs:string"/>
-    <xsl:sequence select="if (matches($p, '[.eE]')) then $p else $p || '.0'"/>
+    <xsl:sequence select="if (matches($p, '[.eE]')) then $p else concat($p, '.0')"/>
   </xsl:function>
 
   <!-- the one-bit masks 2^0 ... 2^63, computed once -->
@@ -69,7 +69,7 @@
   <xsl:function name="fp:ends" as="xs:string*">
     <xsl:param name="k" as="element(o:connection)"/>
     <xsl:sequence select="for $w in $k/o:writer, $r in $k/o:reader
-                          return ($w/@instance || '.' || $w/@port, $r/@instance || '.' || $r/@port)"/>
+                          return (concat($w/@instance, '.', $w/@port), concat($r/@instance, '.', $r/@port))"/>
   </xsl:function>
 
   <!-- "controller after arm, vision; ..." for the instances with
@@ -78,7 +78,7 @@
     <xsl:param name="d" as="element(o:deployment)"/>
     <xsl:variable name="constrained" as="element(o:instance)*" select="$d/o:instance[o:start-after]"/>
     <xsl:sequence select="if (empty($constrained)) then ()
-        else string-join($constrained ! (@name || ' after ' || string-join(distinct-values(o:start-after/@instance), ', ')), '; ')"/>
+        else string-join($constrained ! (concat(@name, ' after ', string-join(distinct-values(o:start-after/@instance), ', '))), '; ')"/>
   </xsl:function>
 
   <!-- ======================================================= XML -->
@@ -87,26 +87,26 @@
     <xsl:sequence select="fp:lines((
         '&lt;?xml version=&quot;1.0&quot; encoding=&quot;UTF-8&quot;?&gt;',
         '&lt;!--',
-        fp:indent(2, fp:banner('', $fp:deploy-xsl, 'the deployment of model ''' || fp:xml-text($d/@model-name) || '''', false())),
-        '  Run: deployer -s ' || $d/@deploy-name || '.xml (add the check option to load, connect and configure only)',
+        fp:indent(2, fp:banner('', $fp:deploy-xsl, concat('the deployment of model ''', fp:xml-text($d/@model-name), ''''), false())),
+        concat('  Run: deployer -s ', $d/@deploy-name, '.xml (add the check option to load, connect and configure only)'),
         '--&gt;',
         '&lt;!DOCTYPE properties SYSTEM &quot;cpf.dtd&quot;&gt;',
         '&lt;properties&gt;',
-        '  &lt;!-- the component package (CMake project ' || $d/@package || ') --&gt;',
-        '  ' || fp:simple('Import', 'string', $d/@package),
+        concat('  &lt;!-- the component package (CMake project ', $d/@package, ') --&gt;'),
+        concat('  ', fp:simple('Import', 'string', $d/@package)),
         $d/o:connection ! (
           '',
-          '  &lt;!-- connection point ' || @name || ': ' || string-join(o:writer ! (@instance || '.' || @port), ', ')
-            || ' -&gt; ' || string-join(o:reader ! (@instance || '.' || @port), ', ') || ' --&gt;',
-          '  &lt;struct name=&quot;' || @name || '&quot; type=&quot;ConnPolicy&quot;&gt;',
-          '    ' || fp:simple('type', 'short', @type-code) || '  &lt;!-- ' || @type || ' --&gt;',
-          '    ' || fp:simple('size', 'short', @size),
-          '    ' || fp:simple('lock_policy', 'short', @lock-policy-code) || '  &lt;!-- ' || @lock-policy || ' --&gt;',
-          '    ' || fp:simple('init', 'boolean', if (xs:boolean(@init)) then '1' else '0'),
-          '    ' || fp:simple('pull', 'boolean', if (xs:boolean(@pull)) then '1' else '0'),
+          concat('  &lt;!-- connection point ', @name, ': ', string-join(o:writer ! (concat(@instance, '.', @port)), ', '),
+             ' -&gt; ', string-join(o:reader ! (concat(@instance, '.', @port)), ', '), ' --&gt;'),
+          concat('  &lt;struct name=&quot;', @name, '&quot; type=&quot;ConnPolicy&quot;&gt;'),
+          concat('    ', fp:simple('type', 'short', @type-code), '  &lt;!-- ', @type, ' --&gt;'),
+          concat('    ', fp:simple('size', 'short', @size)),
+          concat('    ', fp:simple('lock_policy', 'short', @lock-policy-code), '  &lt;!-- ', @lock-policy, ' --&gt;'),
+          concat('    ', fp:simple('init', 'boolean', if (xs:boolean(@init)) then '1' else '0')),
+          concat('    ', fp:simple('pull', 'boolean', if (xs:boolean(@pull)) then '1' else '0')),
           '  &lt;/struct&gt;'),
         for $note in fp:sequence-note($d)
-        return ('', '  &lt;!-- deployment sequence: ' || $note || '. The deployer loads, configures and starts',
+        return ('', concat('  &lt;!-- deployment sequence: ', $note, '. The deployer loads, configures and starts'),
                 '       the components in the order of this file. --&gt;'),
         $d/o:instance ! fp:xml-instance(.),
         '&lt;/properties&gt;'))"/>
@@ -117,26 +117,26 @@
     <xsl:variable name="a" as="element(o:activity)" select="$i/o:activity"/>
     <xsl:sequence select="
         '',
-        '  &lt;struct name=&quot;' || $i/@name || '&quot; type=&quot;' || $i/@type-name || '&quot;&gt;',
-        '    &lt;struct name=&quot;Activity&quot; type=&quot;' || $a/@type || '&quot;&gt;',
-        '      ' || fp:simple('Period', 'double', fp:period($a/@period)),
-        '      ' || fp:simple('Priority', 'short', $a/@priority),
-        '      ' || fp:simple('Scheduler', 'string', $a/@scheduler),
-        if (xs:integer($a/@cpu-affinity) ne 0) then '      ' || fp:simple('CpuAffinity', 'ulong', $a/@cpu-affinity) else (),
+        concat('  &lt;struct name=&quot;', $i/@name, '&quot; type=&quot;', $i/@type-name, '&quot;&gt;'),
+        concat('    &lt;struct name=&quot;Activity&quot; type=&quot;', $a/@type, '&quot;&gt;'),
+        concat('      ', fp:simple('Period', 'double', fp:period($a/@period))),
+        concat('      ', fp:simple('Priority', 'short', $a/@priority)),
+        concat('      ', fp:simple('Scheduler', 'string', $a/@scheduler)),
+        if (xs:integer($a/@cpu-affinity) ne 0) then concat('      ', fp:simple('CpuAffinity', 'ulong', $a/@cpu-affinity)) else (),
         '    &lt;/struct&gt;',
-        '    ' || fp:simple('AutoConf', 'boolean', '1'),
-        '    ' || fp:simple('AutoStart', 'boolean', '1'),
+        concat('    ', fp:simple('AutoConf', 'boolean', '1')),
+        concat('    ', fp:simple('AutoStart', 'boolean', '1')),
         if ($i/o:peer) then (
           '    &lt;struct name=&quot;Peers&quot; type=&quot;PropertyBag&quot;&gt;',
-          $i/o:peer ! ('      ' || fp:simple((), 'string', @instance)),
+          $i/o:peer ! (concat('      ', fp:simple((), 'string', @instance))),
           '    &lt;/struct&gt;') else (),
         if ($i/o:port-connection) then (
           '    &lt;struct name=&quot;Ports&quot; type=&quot;PropertyBag&quot;&gt;',
-          $i/o:port-connection ! ('      ' || fp:simple(@port, 'string', @connection)),
+          $i/o:port-connection ! (concat('      ', fp:simple(@port, 'string', @connection))),
           '    &lt;/struct&gt;') else (),
         if ($i/o:property-value) then (
           '    &lt;struct name=&quot;Properties&quot; type=&quot;PropertyBag&quot;&gt;',
-          $i/o:property-value ! ('      ' || fp:simple(@name, @xml-type, @value)),
+          $i/o:property-value ! (concat('      ', fp:simple(@name, @xml-type, @value))),
           '    &lt;/struct&gt;') else (),
         '  &lt;/struct&gt;'"/>
   </xsl:function>
@@ -145,35 +145,35 @@
   <xsl:function name="fp:deploy-ops" as="xs:string">
     <xsl:param name="d" as="element(o:deployment)"/>
     <xsl:sequence select="fp:lines((
-        fp:banner('// ', $fp:deploy-xsl, 'the deployment of model ''' || $d/@model-name || '''', false()),
-        '// Run: deployer -s ' || $d/@deploy-name || '.ops',
-        'import(' || fp:cpp-string($d/@package) || ')',
+        fp:banner('// ', $fp:deploy-xsl, concat('the deployment of model ''', $d/@model-name, ''''), false()),
+        concat('// Run: deployer -s ', $d/@deploy-name, '.ops'),
+        concat('import(', fp:cpp-string($d/@package), ')'),
         '',
-        $d/o:instance ! ('loadComponent(' || fp:cpp-string(@name) || ', ' || fp:cpp-string(@type-name) || ')'),
+        $d/o:instance ! (concat('loadComponent(', fp:cpp-string(@name), ', ', fp:cpp-string(@type-name), ')')),
         '',
         '// activities (R5): setActivity(component, period [s], priority, scheduler)',
         $d/o:instance ! fp:ops-activity(.),
         if ($d/o:instance/o:peer) then ('', '// peers', $d/o:instance ! (for $p in o:peer return
-            'addPeer(' || fp:cpp-string(@name) || ', ' || fp:cpp-string($p/@instance) || ')')) else (),
+            concat('addPeer(', fp:cpp-string(@name), ', ', fp:cpp-string($p/@instance), ')'))) else (),
         if ($d/o:instance/o:property-value) then ('', '// properties (R4)',
-            $d/o:instance ! (for $p in o:property-value return @name || '.' || $p/@name || ' = ' || $p/@script-value)) else (),
+            $d/o:instance ! (for $p in o:property-value return concat(@name, '.', $p/@name, ' = ', $p/@script-value))) else (),
         $d/o:connection ! (
           '',
-          '// connection point ' || @name,
-          'var ConnPolicy cp_' || @name,
-          'cp_' || @name || '.type = ' || @type,
-          'cp_' || @name || '.size = ' || @size,
-          'cp_' || @name || '.lock_policy = ' || @lock-policy,
-          'cp_' || @name || '.init = ' || @init,
-          'cp_' || @name || '.pull = ' || @pull,
+          concat('// connection point ', @name),
+          concat('var ConnPolicy cp_', @name),
+          concat('cp_', @name, '.type = ', @type),
+          concat('cp_', @name, '.size = ', @size),
+          concat('cp_', @name, '.lock_policy = ', @lock-policy),
+          concat('cp_', @name, '.init = ', @init),
+          concat('cp_', @name, '.pull = ', @pull),
           let $k := ., $e := fp:ends(.)
           return for $j in 1 to count($e) idiv 2
-                 return 'connect(' || fp:cpp-string($e[2 * $j - 1]) || ', ' || fp:cpp-string($e[2 * $j]) || ', cp_' || $k/@name || ')'),
+                 return concat('connect(', fp:cpp-string($e[2 * $j - 1]), ', ', fp:cpp-string($e[2 * $j]), ', cp_', $k/@name, ')')),
         '',
         '// lifecycle',
-        fp:sequence-note($d) ! ('// in start order (deployment sequence: ' || . || ')'),
-        $d/o:instance ! (@name || '.configure()'),
-        $d/o:instance ! (@name || '.start()')))"/>
+        fp:sequence-note($d) ! (concat('// in start order (deployment sequence: ', ., ')')),
+        $d/o:instance ! (concat(@name, '.configure()')),
+        $d/o:instance ! (concat(@name, '.start()'))))"/>
   </xsl:function>
 
   <xsl:function name="fp:ops-activity" as="xs:string">
@@ -182,11 +182,11 @@
     <xsl:variable name="mask" as="xs:integer" select="xs:integer($a/@cpu-affinity)"/>
     <xsl:variable name="cpu" as="xs:integer?" select="fp:cpu-number($mask)"/>
     <xsl:variable name="args" as="xs:string"
-        select="fp:cpp-string($i/@name) || ', ' || fp:period($a/@period) || ', ' || $a/@priority || ', ' || $a/@scheduler"/>
+        select="concat(fp:cpp-string($i/@name), ', ', fp:period($a/@period), ', ', $a/@priority, ', ', $a/@scheduler)"/>
     <xsl:sequence select="
-        if ($mask eq 0) then 'setActivity(' || $args || ')'
-        else if (exists($cpu)) then 'setActivityOnCPU(' || $args || ', ' || $cpu || ')  // CpuAffinity mask ' || $mask
-        else 'setActivity(' || $args || ')  // CpuAffinity mask ' || $mask || ' (several CPUs): only the XML deployment sets it'"/>
+        if ($mask eq 0) then concat('setActivity(', $args, ')')
+        else if (exists($cpu)) then concat('setActivityOnCPU(', $args, ', ', $cpu, ')  // CpuAffinity mask ', $mask)
+        else concat('setActivity(', $args, ')  // CpuAffinity mask ', $mask, ' (several CPUs): only the XML deployment sets it')"/>
   </xsl:function>
 
   <!-- ======================================================= Lua -->
@@ -196,12 +196,12 @@
     <xsl:variable name="mask" as="xs:integer" select="xs:integer($a/@cpu-affinity)"/>
     <xsl:variable name="cpu" as="xs:integer?" select="fp:cpu-number($mask)"/>
     <xsl:variable name="args" as="xs:string"
-        select="fp:cpp-string($i/@name) || ', ' || fp:period($a/@period) || ', ' || $a/@priority || ', rtt.globals.' || $a/@scheduler"/>
+        select="concat(fp:cpp-string($i/@name), ', ', fp:period($a/@period), ', ', $a/@priority, ', rtt.globals.', $a/@scheduler)"/>
     <xsl:sequence select="
         if ($mask ne 0 and exists($cpu))
-        then '  check(depl:setActivityOnCPU(' || $args || ', ' || $cpu || '), &quot;setActivityOnCPU ' || $i/@name || '&quot;)  -- CpuAffinity mask ' || $mask
-        else '  check(depl:setActivity(' || $args || '), &quot;setActivity ' || $i/@name || '&quot;)'
-             || (if ($mask ne 0) then '  -- CpuAffinity mask ' || $mask || ' (several CPUs): only the XML deployment sets it' else '')"/>
+        then concat('  check(depl:setActivityOnCPU(', $args, ', ', $cpu, '), &quot;setActivityOnCPU ', $i/@name, '&quot;)  -- CpuAffinity mask ', $mask)
+        else concat('  check(depl:setActivity(', $args, '), &quot;setActivity ', $i/@name, '&quot;)',
+              (if ($mask ne 0) then concat('  -- CpuAffinity mask ', $mask, ' (several CPUs): only the XML deployment sets it') else ''))"/>
   </xsl:function>
 
   <xsl:function name="fp:lua-value" as="xs:string">
@@ -213,8 +213,8 @@
     <xsl:param name="d" as="element(o:deployment)"/>
     <xsl:variable name="names" as="xs:string*" select="$d/o:instance/@name"/>
     <xsl:sequence select="fp:lines((
-        fp:banner('-- ', $fp:deploy-xsl, 'the deployment of model ''' || $d/@model-name || '''', false()),
-        '-- Run: rttlua ' || $d/@deploy-name || '.lua   (or deployer -s ' || $d/@deploy-name || '.lua)',
+        fp:banner('-- ', $fp:deploy-xsl, concat('the deployment of model ''', $d/@model-name, ''''), false()),
+        concat('-- Run: rttlua ', $d/@deploy-name, '.lua   (or deployer -s ', $d/@deploy-name, '.lua)'),
         'require(&quot;rttlib&quot;)',
         'rttlib.color = false',
         '',
@@ -231,12 +231,12 @@
         'local tc = rtt.getTC()',
         'local depl',
         'if tc:getName() == &quot;Deployer&quot; then depl = tc else depl = tc:getPeer(&quot;Deployer&quot;) end',
-        'local names = {' || string-join($names ! fp:cpp-string(.), ', ') || '}',
+        concat('local names = {', string-join($names ! fp:cpp-string(.), ', '), '}'),
         'local comps = {}',
         '',
-        'check(depl:import(' || fp:cpp-string($d/@package) || '), &quot;import ' || $d/@package || '&quot;)',
-        $d/o:instance ! ('check(depl:loadComponent(' || fp:cpp-string(@name) || ', ' || fp:cpp-string(@type-name)
-                         || '), &quot;loadComponent ' || @name || '&quot;)'),
+        concat('check(depl:import(', fp:cpp-string($d/@package), '), &quot;import ', $d/@package, '&quot;)'),
+        $d/o:instance ! (concat('check(depl:loadComponent(', fp:cpp-string(@name), ', ', fp:cpp-string(@type-name),
+                          '), &quot;loadComponent ', @name, '&quot;)')),
         '',
         'if ok then',
         '  for _, n in ipairs(names) do comps[n] = depl:getPeer(n) end',
@@ -244,30 +244,30 @@
         '  -- activities (R5): setActivity(name, period [s], priority, scheduler)',
         $d/o:instance ! fp:lua-activity(.),
         if ($d/o:instance/o:peer) then ('', '  -- peers', $d/o:instance ! (for $p in o:peer return
-            '  check(depl:addPeer(' || fp:cpp-string(@name) || ', ' || fp:cpp-string($p/@instance)
-            || '), &quot;addPeer ' || @name || ' -&gt; ' || $p/@instance || '&quot;)')) else (),
+            concat('  check(depl:addPeer(', fp:cpp-string(@name), ', ', fp:cpp-string($p/@instance),
+             '), &quot;addPeer ', @name, ' -&gt; ', $p/@instance, '&quot;)'))) else (),
         if ($d/o:instance/o:property-value) then ('', '  -- properties (R4)',
             $d/o:instance ! (for $p in o:property-value return
-              '  check(pcall(function() comps[' || fp:cpp-string(@name) || ']:getProperty(' || fp:cpp-string($p/@name)
-              || '):set(' || fp:lua-value($p) || ') end), &quot;property ' || @name || '.' || $p/@name || '&quot;)')) else (),
+              concat('  check(pcall(function() comps[', fp:cpp-string(@name), ']:getProperty(', fp:cpp-string($p/@name),
+               '):set(', fp:lua-value($p), ') end), &quot;property ', @name, '.', $p/@name, '&quot;)'))) else (),
         $d/o:connection ! (
           '',
-          '  -- connection point ' || @name,
+          concat('  -- connection point ', @name),
           '  do',
           '    local cp = rtt.Variable(&quot;ConnPolicy&quot;)',
-          '    cp.type = rtt.globals.' || @type,
-          '    cp.size = ' || @size,
-          '    cp.lock_policy = rtt.globals.' || @lock-policy,
-          '    cp.init = ' || @init,
-          '    cp.pull = ' || @pull,
+          concat('    cp.type = rtt.globals.', @type),
+          concat('    cp.size = ', @size),
+          concat('    cp.lock_policy = rtt.globals.', @lock-policy),
+          concat('    cp.init = ', @init),
+          concat('    cp.pull = ', @pull),
           let $e := fp:ends(.)
           return for $j in 1 to count($e) idiv 2
-                 return '    check(depl:connect(' || fp:cpp-string($e[2 * $j - 1]) || ', ' || fp:cpp-string($e[2 * $j])
-                        || ', cp), &quot;connect ' || $e[2 * $j - 1] || ' -&gt; ' || $e[2 * $j] || '&quot;)',
+                 return concat('    check(depl:connect(', fp:cpp-string($e[2 * $j - 1]), ', ', fp:cpp-string($e[2 * $j]),
+                         ', cp), &quot;connect ', $e[2 * $j - 1], ' -&gt; ', $e[2 * $j], '&quot;)'),
           '  end'),
         '',
         '  -- lifecycle: configure all, then start all',
-        fp:sequence-note($d) ! ('  -- in start order (deployment sequence: ' || . || ')'),
+        fp:sequence-note($d) ! (concat('  -- in start order (deployment sequence: ', ., ')')),
         '  for _, n in ipairs(names) do check(comps[n]:configure(), &quot;configure &quot; .. n) end',
         '  for _, n in ipairs(names) do check(comps[n]:start(), &quot;start &quot; .. n) end',
         '',

@@ -52,22 +52,22 @@
     <xsl:variable name="p" as="element(r:package)" select="."/>
     <fs:files target="ros1">
       <xsl:for-each select="r:node">
-        <xsl:sequence select="fp:file('include/' || $pkg || '/' || @class || '.hpp', 'generated', $fp:cpp-xsl, fp:ros1-header(.))"/>
-        <xsl:sequence select="fp:file('src/' || @class || '.cpp', 'generated', $fp:cpp-xsl, fp:ros1-source(.))"/>
-        <xsl:sequence select="fp:file('src/' || @executable || '.cpp', 'generated', $fp:cpp-xsl, fp:ros1-main(.))"/>
+        <xsl:sequence select="fp:file(concat('include/', $pkg, '/', @class, '.hpp'), 'generated', $fp:cpp-xsl, fp:ros1-header(.))"/>
+        <xsl:sequence select="fp:file(concat('src/', @class, '.cpp'), 'generated', $fp:cpp-xsl, fp:ros1-source(.))"/>
+        <xsl:sequence select="fp:file(concat('src/', @executable, '.cpp'), 'generated', $fp:cpp-xsl, fp:ros1-main(.))"/>
       </xsl:for-each>
       <xsl:for-each select="r:message-file">
-        <xsl:sequence select="fp:file('msg/' || @name || '.msg', 'generated', $fp:build-xsl, fp:msg-file(., $fp:build-xsl))"/>
+        <xsl:sequence select="fp:file(concat('msg/', @name, '.msg'), 'generated', $fp:build-xsl, fp:msg-file(., $fp:build-xsl))"/>
       </xsl:for-each>
       <xsl:sequence select="fp:file('CMakeLists.txt', 'generated', $fp:build-xsl, fp:ros1-cmakelists(.))"/>
       <xsl:sequence select="fp:file('package.xml', 'generated', $fp:build-xsl, fp:ros1-package-xml(.))"/>
-      <xsl:sequence select="fp:file('launch/' || @deploy-name || '.launch', 'generated', $fp:launch-xsl, fp:ros1-top-launch(.))"/>
+      <xsl:sequence select="fp:file(concat('launch/', @deploy-name, '.launch'), 'generated', $fp:launch-xsl, fp:ros1-top-launch(.))"/>
       <xsl:for-each select="r:host">
-        <xsl:sequence select="fp:file('launch/' || $p/@deploy-name || '_' || @launch || '.launch', 'generated', $fp:launch-xsl,
+        <xsl:sequence select="fp:file(concat('launch/', $p/@deploy-name, '_', @launch, '.launch'), 'generated', $fp:launch-xsl,
                                       fp:ros1-host-launch($p, .))"/>
       </xsl:for-each>
       <xsl:for-each select="r:instance">
-        <xsl:sequence select="fp:file('config/' || @name || '.yaml', 'generated', $fp:launch-xsl, fp:params-yaml(., $fp:launch-xsl))"/>
+        <xsl:sequence select="fp:file(concat('config/', @name, '.yaml'), 'generated', $fp:launch-xsl, fp:params-yaml(., $fp:launch-xsl))"/>
       </xsl:for-each>
     </fs:files>
   </xsl:template>

@@ -30,16 +30,16 @@
     <xsl:param name="type" as="xs:string"/>
     <xsl:param name="pkg" as="xs:string"/>
     <xsl:variable name="p" as="xs:string+" select="fp:msg-parts($type, $pkg)"/>
-    <xsl:sequence select="$p[1] || '/' || $p[2] || '.h', $p[1] || '::' || $p[2]"/>
+    <xsl:sequence select="concat($p[1], '/', $p[2], '.h'), concat($p[1], '::', $p[2])"/>
   </xsl:function>
 
   <xsl:function name="fp:ros1-includes" as="xs:string*">
     <xsl:param name="n" as="element(r:node)"/>
     <xsl:variable name="pkg" as="xs:string" select="$n/@namespace"/>
     <xsl:sequence select="'#include &lt;ros/ros.h&gt;',
-        distinct-values(($n/r:port/r:message/@msg, $n/r:service/@srv) ! ('#include &lt;' || fp:ros1-type(., $pkg)[1] || '&gt;')),
+        distinct-values(($n/r:port/r:message/@msg, $n/r:service/@srv) ! (concat('#include &lt;', fp:ros1-type(., $pkg)[1], '&gt;'))),
         '#include &lt;string&gt;',
-        '#include &lt;' || $n/r:realizing-class/@header || '&gt;'"/>
+        concat('#include &lt;', $n/r:realizing-class/@header, '&gt;')"/>
   </xsl:function>
 
   <xsl:function name="fp:ros1-header" as="xs:string">
@@ -49,22 +49,22 @@
     <xsl:variable name="guard" as="xs:string" select="fp:guard($pkg, $cls)"/>
     <xsl:sequence select="fp:lines((
         fp:banner('// ', $fp:cpp-xsl, fp:what($n), false()),
-        '#ifndef ' || $guard,
-        '#define ' || $guard,
+        concat('#ifndef ', $guard),
+        concat('#define ', $guard),
         '',
         fp:ros1-includes($n),
         '',
-        'namespace ' || $pkg || ' {',
+        concat('namespace ', $pkg, ' {'),
         '',
         '/**',
-        ' * ' || fp:doc-of($n, 'ROS 1 node of component ' || $n/@name || '.'),
-        ' * Wraps the atomic code ' || $n/r:realizing-class/@cpp-name || ' (seed 000, R1).',
+        concat(' * ', fp:doc-of($n, concat('ROS 1 node of component ', $n/@name, '.'))),
+        concat(' * Wraps the atomic code ', $n/r:realizing-class/@cpp-name, ' (seed 000, R1).'),
         ' */',
-        'class ' || $cls || ' : public ' || $n/r:realizing-class/@cpp-name,
+        concat('class ', $cls, ' : public ', $n/r:realizing-class/@cpp-name),
         '{',
         'public:',
-        '  ' || $cls || '(const ros::NodeHandle&amp; nh, const ros::NodeHandle&amp; private_nh);',
-        '  virtual ~' || $cls || '();',
+        concat('  ', $cls, '(const ros::NodeHandle&amp; nh, const ros::NodeHandle&amp; private_nh);'),
+        concat('  virtual ~', $cls, '();'),
         '',
         '  /// Reads the parameters, calls configure() and start(), opens the ports,',
         '  /// services and timer. False when configure() or start() fails.',
@@ -75,23 +75,23 @@
         'private:',
         '  void step();',
         '  void onTimer(const ros::TimerEvent&amp; event);',
-        $n/r:port[@direction eq 'in'] ! ('  void on_' || @name || '(const ' || fp:ros1-type(r:message/@msg, $pkg)[2] || '::ConstPtr&amp; msg);'),
-        $n/r:service ! ('  bool on_' || @name || '(' || fp:ros1-type(@srv, $pkg)[2] || '::Request&amp; request, '
-                        || fp:ros1-type(@srv, $pkg)[2] || '::Response&amp; response);'),
+        $n/r:port[@direction eq 'in'] ! (concat('  void on_', @name, '(const ', fp:ros1-type(r:message/@msg, $pkg)[2], '::ConstPtr&amp; msg);')),
+        $n/r:service ! (concat('  bool on_', @name, '(', fp:ros1-type(@srv, $pkg)[2], '::Request&amp; request, ',
+                         fp:ros1-type(@srv, $pkg)[2], '::Response&amp; response);')),
         '',
         '  ros::NodeHandle nh_;',
         '  ros::NodeHandle private_nh_;',
-        $n/r:port[@direction eq 'out'] ! ('  ros::Publisher ' || @member || ';'),
-        $n/r:port[@direction eq 'in'] ! ('  ros::Subscriber ' || @member || ';'),
-        $n/r:service ! ('  ros::ServiceServer ' || @member || ';'),
+        $n/r:port[@direction eq 'out'] ! (concat('  ros::Publisher ', @member, ';')),
+        $n/r:port[@direction eq 'in'] ! (concat('  ros::Subscriber ', @member, ';')),
+        $n/r:service ! (concat('  ros::ServiceServer ', @member, ';')),
         '  ros::Timer timer_;',
         '  double period_;',
         '  bool running_;',
         '};',
         '',
-        '}  // namespace ' || $pkg,
+        concat('}  // namespace ', $pkg),
         '',
-        '#endif  // ' || $guard))"/>
+        concat('#endif  // ', $guard)))"/>
   </xsl:function>
 
   <xsl:function name="fp:ros1-source" as="xs:string">
@@ -101,103 +101,103 @@
     <xsl:variable name="rc" as="xs:string" select="$n/r:realizing-class/@cpp-name"/>
     <xsl:sequence select="fp:lines((
         fp:banner('// ', $fp:cpp-xsl, fp:what($n), false()),
-        '#include &lt;' || $pkg || '/' || $cls || '.hpp&gt;',
+        concat('#include &lt;', $pkg, '/', $cls, '.hpp&gt;'),
         '',
-        'namespace ' || $pkg || ' {',
+        concat('namespace ', $pkg, ' {'),
         '',
-        $cls || '::' || $cls || '(const ros::NodeHandle&amp; nh, const ros::NodeHandle&amp; private_nh)',
-        '  : nh_(nh), private_nh_(private_nh), period_(' || fp:double-literal($n/@period) || '), running_(false)',
+        concat($cls, '::', $cls, '(const ros::NodeHandle&amp; nh, const ros::NodeHandle&amp; private_nh)'),
+        concat('  : nh_(nh), private_nh_(private_nh), period_(', fp:double-literal($n/@period), '), running_(false)'),
         '{',
         '}',
         '',
-        $cls || '::~' || $cls || '()',
+        concat($cls, '::~', $cls, '()'),
         '{',
         '  tearDown();',
         '}',
         '',
-        'bool ' || $cls || '::setUp()',
+        concat('bool ', $cls, '::setUp()'),
         '{',
         '  // parameters (R4), private: ~name',
         for $p in $n/r:parameter return (
           '  {',
-          '    ' || $p/@param1 || ' value;',
-          '    private_nh_.param&lt;' || $p/@param1 || '&gt;(' || fp:cpp-string($p/@name) || ', value, '
-              || (if ($p/@param1 eq 'std::string') then 'std::string(' || $p/@cpp-default || ')' else $p/@cpp-default) || ');',
-          '    ' || $rc || '::' || $p/@member || ' = ' || (if ($p/@param1 eq $p/@cpp-type) then 'value' else 'static_cast&lt;' || $p/@cpp-type || '&gt;(value)') || ';',
+          concat('    ', $p/@param1, ' value;'),
+          concat('    private_nh_.param&lt;', $p/@param1, '&gt;(', fp:cpp-string($p/@name), ', value, ',
+               (if ($p/@param1 eq 'std::string') then concat('std::string(', $p/@cpp-default, ')') else $p/@cpp-default), ');'),
+          concat('    ', $rc, '::', $p/@member, ' = ', (if ($p/@param1 eq $p/@cpp-type) then 'value' else concat('static_cast&lt;', $p/@cpp-type, '&gt;(value)')), ';'),
           '  }'),
         '  private_nh_.param&lt;double&gt;(&quot;update_period&quot;, period_, period_);',
         for $h in $n/r:hook[@name = ('configure', 'start')][@call] return
           if (xs:boolean($h/@returns-bool))
-          then ('  if (!' || $rc || '::' || $h/@call || '()) {',
-                '    ROS_ERROR(&quot;' || $cls || ': ' || $h/@call || '() failed&quot;);',
+          then (concat('  if (!', $rc, '::', $h/@call, '()) {'),
+                concat('    ROS_ERROR(&quot;', $cls, ': ', $h/@call, '() failed&quot;);'),
                 '    return false;',
                 '  }')
-          else '  ' || $rc || '::' || $h/@call || '();',
-        $n/r:port[@direction eq 'out'] ! ('  ' || @member || ' = nh_.advertise&lt;' || fp:ros1-type(r:message/@msg, $pkg)[2] || '&gt;('
-            || fp:cpp-string(@topic) || ', ' || r:qos/@depth || ', ' || r:qos/@latch || ');'),
-        $n/r:port[@direction eq 'in'] ! ('  ' || @member || ' = nh_.subscribe(' || fp:cpp-string(@topic) || ', ' || r:qos/@depth
-            || ', &amp;' || $cls || '::on_' || @name || ', this);'),
-        $n/r:service ! ('  ' || @member || ' = private_nh_.advertiseService(' || fp:cpp-string(@name) || ', &amp;' || $cls || '::on_' || @name || ', this);'),
+          else concat('  ', $rc, '::', $h/@call, '();'),
+        $n/r:port[@direction eq 'out'] ! (concat('  ', @member, ' = nh_.advertise&lt;', fp:ros1-type(r:message/@msg, $pkg)[2], '&gt;(',
+             fp:cpp-string(@topic), ', ', r:qos/@depth, ', ', r:qos/@latch, ');')),
+        $n/r:port[@direction eq 'in'] ! (concat('  ', @member, ' = nh_.subscribe(', fp:cpp-string(@topic), ', ', r:qos/@depth,
+             ', &amp;', $cls, '::on_', @name, ', this);')),
+        $n/r:service ! (concat('  ', @member, ' = private_nh_.advertiseService(', fp:cpp-string(@name), ', &amp;', $cls, '::on_', @name, ', this);')),
         '  if (period_ &gt; 0.0) {',
-        '    timer_ = nh_.createTimer(ros::Duration(period_), &amp;' || $cls || '::onTimer, this);',
+        concat('    timer_ = nh_.createTimer(ros::Duration(period_), &amp;', $cls, '::onTimer, this);'),
         '  }',
         '  running_ = true;',
         '  return true;',
         '}',
         '',
-        'void ' || $cls || '::tearDown()',
+        concat('void ', $cls, '::tearDown()'),
         '{',
         '  if (!running_) {',
         '    return;',
         '  }',
         '  running_ = false;',
         '  timer_.stop();',
-        $n/r:hook[@name = ('stop', 'cleanup')][@call] ! ('  ' || $rc || '::' || @call || '();'),
+        $n/r:hook[@name = ('stop', 'cleanup')][@call] ! (concat('  ', $rc, '::', @call, '();')),
         '}',
         '',
-        'void ' || $cls || '::step()',
+        concat('void ', $cls, '::step()'),
         '{',
         '  if (!running_) {',
         '    return;',
         '  }',
-        $n/r:hook[@name eq 'update'][@call] ! ('  ' || $rc || '::update();'),
+        $n/r:hook[@name eq 'update'][@call] ! (concat('  ', $rc, '::update();')),
         for $p in $n/r:port[@direction eq 'out'] return
           if (xs:boolean($p/@accessor-declared)) then (
             '  {',
-            '    ' || fp:ros1-type($p/r:message/@msg, $pkg)[2] || ' msg;',
-            fp:indent(4, fp:to-msg($p/r:message, 'msg', $rc || '::' || $p/@accessor || '()')),
-            '    ' || $p/@member || '.publish(msg);',
+            concat('    ', fp:ros1-type($p/r:message/@msg, $pkg)[2], ' msg;'),
+            fp:indent(4, fp:to-msg($p/r:message, 'msg', concat($rc, '::', $p/@accessor, '()'))),
+            concat('    ', $p/@member, '.publish(msg);'),
             '  }')
-          else '  // ' || $n/r:realizing-class/@name || ' declares no ' || $p/@accessor || '(): ' || $p/@name || ' is not published',
+          else concat('  // ', $n/r:realizing-class/@name, ' declares no ', $p/@accessor, '(): ', $p/@name, ' is not published'),
         '}',
         '',
-        'void ' || $cls || '::onTimer(const ros::TimerEvent&amp; /*event*/)',
+        concat('void ', $cls, '::onTimer(const ros::TimerEvent&amp; /*event*/)'),
         '{',
         '  step();',
         '}',
         for $p in $n/r:port[@direction eq 'in'] return (
           '',
-          'void ' || $cls || '::on_' || $p/@name || '(const ' || fp:ros1-type($p/r:message/@msg, $pkg)[2] || '::ConstPtr&amp; msg)',
+          concat('void ', $cls, '::on_', $p/@name, '(const ', fp:ros1-type($p/r:message/@msg, $pkg)[2], '::ConstPtr&amp; msg)'),
           '{',
           if (xs:boolean($p/@accessor-declared))
-          then '  ' || $rc || '::' || $p/@accessor || '(' || fp:from-msg($p/r:message, '(*msg)') || ');'
-          else '  (void)msg;  // ' || $n/r:realizing-class/@name || ' declares no ' || $p/@accessor || '()',
+          then concat('  ', $rc, '::', $p/@accessor, '(', fp:from-msg($p/r:message, '(*msg)'), ');')
+          else concat('  (void)msg;  // ', $n/r:realizing-class/@name, ' declares no ', $p/@accessor, '()'),
           '  if (period_ &lt;= 0.0) {',
           '    step();  // data-driven (period 0)',
           '  }',
           '}'),
         for $s in $n/r:service return (
           '',
-          'bool ' || $cls || '::on_' || $s/@name || '(' || fp:ros1-type($s/@srv, $pkg)[2] || '::Request&amp; '
-              || (if ($s/@srv eq 'std_srvs/SetBool') then 'request' else '/*request*/') || ', '
-              || fp:ros1-type($s/@srv, $pkg)[2] || '::Response&amp; '
-              || (if ($s/@srv eq 'std_srvs/Empty') then '/*response*/' else 'response') || ')',
+          concat('bool ', $cls, '::on_', $s/@name, '(', fp:ros1-type($s/@srv, $pkg)[2], '::Request&amp; ',
+               (if ($s/@srv eq 'std_srvs/SetBool') then 'request' else '/*request*/'), ', ',
+               fp:ros1-type($s/@srv, $pkg)[2], '::Response&amp; ',
+               (if ($s/@srv eq 'std_srvs/Empty') then '/*response*/' else 'response'), ')'),
           '{',
           fp:service-body($s, $rc, '.'),
           '  return true;',
           '}'),
         '',
-        '}  // namespace ' || $pkg))"/>
+        concat('}  // namespace ', $pkg)))"/>
   </xsl:function>
 
   <xsl:function name="fp:ros1-main" as="xs:string">
@@ -205,14 +205,14 @@
     <xsl:variable name="pkg" as="xs:string" select="$n/@namespace"/>
     <xsl:sequence select="fp:lines((
         fp:banner('// ', $fp:cpp-xsl, fp:what($n), false()),
-        '#include &lt;' || $pkg || '/' || $n/@class || '.hpp&gt;',
+        concat('#include &lt;', $pkg, '/', $n/@class, '.hpp&gt;'),
         '',
         'int main(int argc, char** argv)',
         '{',
-        '  ros::init(argc, argv, ' || fp:cpp-string($n/@default-name) || ');',
+        concat('  ros::init(argc, argv, ', fp:cpp-string($n/@default-name), ');'),
         '  ros::NodeHandle nh;',
         '  ros::NodeHandle private_nh(&quot;~&quot;);',
-        '  ' || $pkg || '::' || $n/@class || ' node(nh, private_nh);',
+        concat('  ', $pkg, '::', $n/@class, ' node(nh, private_nh);'),
         '  if (!node.setUp()) {',
         '    return 1;',
         '  }',

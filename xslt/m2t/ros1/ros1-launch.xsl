@@ -29,18 +29,18 @@
     <xsl:sequence select="fp:lines((
         '&lt;?xml version=&quot;1.0&quot;?&gt;',
         '&lt;!--',
-        fp:indent(2, fp:banner('', $fp:launch-xsl, 'host ''' || fp:xml-text($h/@name) || ''' of model ''' || fp:xml-text($p/@model-name) || '''', false())),
+        fp:indent(2, fp:banner('', $fp:launch-xsl, concat('host ''', fp:xml-text($h/@name), ''' of model ''', fp:xml-text($p/@model-name), ''''), false())),
         '  Component set of this host (seed 002): roslaunch starts the nodes in no',
         '  guaranteed order. For a remote machine add env-loader=&quot;...&quot; to &lt;machine&gt;.',
         '--&gt;',
         '&lt;launch&gt;',
-        '  &lt;machine name=&quot;' || fp:xml-text($h/@machine) || '&quot; address=&quot;' || fp:xml-text($h/@address) || '&quot;/&gt;',
+        concat('  &lt;machine name=&quot;', fp:xml-text($h/@machine), '&quot; address=&quot;', fp:xml-text($h/@address), '&quot;/&gt;'),
         for $i in $p/r:instance[@host eq $h/@name] return (
           '',
-          '  &lt;node pkg=&quot;' || $p/@name || '&quot; type=&quot;' || $i/@executable || '&quot; name=&quot;' || $i/@name
-              || '&quot; machine=&quot;' || fp:xml-text($h/@machine) || '&quot; output=&quot;screen&quot;&gt;',
-          '    &lt;rosparam command=&quot;load&quot; file=&quot;$(find ' || $p/@name || ')/config/' || $i/@name || '.yaml&quot;/&gt;',
-          $i/r:remap ! ('    &lt;remap from=&quot;' || @from || '&quot; to=&quot;' || @to || '&quot;/&gt;'),
+          concat('  &lt;node pkg=&quot;', $p/@name, '&quot; type=&quot;', $i/@executable, '&quot; name=&quot;', $i/@name,
+               '&quot; machine=&quot;', fp:xml-text($h/@machine), '&quot; output=&quot;screen&quot;&gt;'),
+          concat('    &lt;rosparam command=&quot;load&quot; file=&quot;$(find ', $p/@name, ')/config/', $i/@name, '.yaml&quot;/&gt;'),
+          $i/r:remap ! (concat('    &lt;remap from=&quot;', @from, '&quot; to=&quot;', @to, '&quot;/&gt;')),
           '  &lt;/node&gt;'),
         '&lt;/launch&gt;'))"/>
   </xsl:function>
@@ -50,11 +50,11 @@
     <xsl:sequence select="fp:lines((
         '&lt;?xml version=&quot;1.0&quot;?&gt;',
         '&lt;!--',
-        fp:indent(2, fp:banner('', $fp:launch-xsl, 'model ''' || fp:xml-text($p/@model-name) || '''', false())),
+        fp:indent(2, fp:banner('', $fp:launch-xsl, concat('model ''', fp:xml-text($p/@model-name), ''''), false())),
         '  The whole deployment: one included launch file per host.',
         '--&gt;',
         '&lt;launch&gt;',
-        $p/r:host ! ('  &lt;include file=&quot;$(find ' || $p/@name || ')/launch/' || $p/@deploy-name || '_' || @launch || '.launch&quot;/&gt;'),
+        $p/r:host ! (concat('  &lt;include file=&quot;$(find ', $p/@name, ')/launch/', $p/@deploy-name, '_', @launch, '.launch&quot;/&gt;')),
         '&lt;/launch&gt;'))"/>
   </xsl:function>
 
@@ -62,7 +62,7 @@
     <xsl:param name="i" as="element(r:instance)"/>
     <xsl:param name="stylesheet" as="xs:string"/>
     <xsl:sequence select="fp:lines((
-        fp:banner('# ', $stylesheet, 'instance ''' || $i/@name || ''' of model ''' || $i/../@model-name || '''', false()),
-        $i/r:parameter-value ! (@name || ': ' || @yaml)))"/>
+        fp:banner('# ', $stylesheet, concat('instance ''', $i/@name, ''' of model ''', $i/../@model-name, ''''), false()),
+        $i/r:parameter-value ! (concat(@name, ': ', @yaml))))"/>
   </xsl:function>
 </xsl:stylesheet>

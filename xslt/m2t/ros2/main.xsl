@@ -52,18 +52,18 @@
     <xsl:variable name="p" as="element(r:package)" select="."/>
     <fs:files target="ros2">
       <xsl:for-each select="r:node">
-        <xsl:sequence select="fp:file('include/' || $pkg || '/' || @class || '.hpp', 'generated', $fp:cpp-xsl, fp:ros2-header(.))"/>
-        <xsl:sequence select="fp:file('src/' || @class || '.cpp', 'generated', $fp:cpp-xsl, fp:ros2-source(.))"/>
-        <xsl:sequence select="fp:file('src/' || @executable || '.cpp', 'generated', $fp:cpp-xsl, fp:ros2-main(.))"/>
+        <xsl:sequence select="fp:file(concat('include/', $pkg, '/', @class, '.hpp'), 'generated', $fp:cpp-xsl, fp:ros2-header(.))"/>
+        <xsl:sequence select="fp:file(concat('src/', @class, '.cpp'), 'generated', $fp:cpp-xsl, fp:ros2-source(.))"/>
+        <xsl:sequence select="fp:file(concat('src/', @executable, '.cpp'), 'generated', $fp:cpp-xsl, fp:ros2-main(.))"/>
       </xsl:for-each>
       <xsl:for-each select="r:message-file">
-        <xsl:sequence select="fp:file('msg/' || @name || '.msg', 'generated', $fp:build-xsl, fp:msg-file(., $fp:build-xsl))"/>
+        <xsl:sequence select="fp:file(concat('msg/', @name, '.msg'), 'generated', $fp:build-xsl, fp:msg-file(., $fp:build-xsl))"/>
       </xsl:for-each>
       <xsl:sequence select="fp:file('CMakeLists.txt', 'generated', $fp:build-xsl, fp:ros2-cmakelists(.))"/>
       <xsl:sequence select="fp:file('package.xml', 'generated', $fp:build-xsl, fp:ros2-package-xml(.))"/>
-      <xsl:sequence select="fp:file('launch/' || @deploy-name || '.launch.xml', 'generated', $fp:launch-xsl, fp:ros2-top-launch(.))"/>
+      <xsl:sequence select="fp:file(concat('launch/', @deploy-name, '.launch.xml'), 'generated', $fp:launch-xsl, fp:ros2-top-launch(.))"/>
       <xsl:for-each select="r:host">
-        <xsl:sequence select="fp:file('launch/' || $p/@deploy-name || '_' || @launch || '.launch.xml', 'generated', $fp:launch-xsl,
+        <xsl:sequence select="fp:file(concat('launch/', $p/@deploy-name, '_', @launch, '.launch.xml'), 'generated', $fp:launch-xsl,
                                       fp:ros2-host-launch($p, .))"/>
       </xsl:for-each>
       <xsl:sequence select="fp:file('config/params.yaml', 'generated', $fp:launch-xsl, fp:ros2-params-yaml(.))"/>

@@ -29,14 +29,14 @@
     <xsl:param name="pkg" as="xs:string"/>
     <xsl:param name="kind" as="xs:string"/>
     <xsl:variable name="p" as="xs:string+" select="fp:msg-parts($type, $pkg)"/>
-    <xsl:sequence select="$p[1] || '/' || $kind || '/' || fp:ros-snake($p[2]) || '.hpp', $p[1] || '::' || $kind || '::' || $p[2]"/>
+    <xsl:sequence select="concat($p[1], '/', $kind, '/', fp:ros-snake($p[2]), '.hpp'), concat($p[1], '::', $kind, '::', $p[2])"/>
   </xsl:function>
 
   <xsl:function name="fp:ros2-qos" as="xs:string">
     <xsl:param name="q" as="element(r:qos)"/>
-    <xsl:sequence select="'rclcpp::QoS(rclcpp::KeepLast(' || $q/@depth || '))'
-        || (if ($q/@reliability eq 'reliable') then '.reliable()' else '.best_effort()')
-        || (if ($q/@durability eq 'transient_local') then '.transient_local()' else '.durability_volatile()')"/>
+    <xsl:sequence select="concat('rclcpp::QoS(rclcpp::KeepLast(', $q/@depth, '))',
+         (if ($q/@reliability eq 'reliable') then '.reliable()' else '.best_effort()'),
+         (if ($q/@durability eq 'transient_local') then '.transient_local()' else '.durability_volatile()'))"/>
   </xsl:function>
 
   <xsl:function name="fp:ros2-header" as="xs:string">
@@ -46,46 +46,46 @@
     <xsl:variable name="guard" as="xs:string" select="fp:guard($pkg, $cls)"/>
     <xsl:sequence select="fp:lines((
         fp:banner('// ', $fp:cpp-xsl, fp:what($n), false()),
-        '#ifndef ' || $guard,
-        '#define ' || $guard,
+        concat('#ifndef ', $guard),
+        concat('#define ', $guard),
         '',
         '#include &lt;rclcpp/rclcpp.hpp&gt;',
-        distinct-values(($n/r:port/r:message/@msg ! ('#include &lt;' || fp:ros2-type(., $pkg, 'msg')[1] || '&gt;'),
-                         $n/r:service/@srv ! ('#include &lt;' || fp:ros2-type(., $pkg, 'srv')[1] || '&gt;'))),
+        distinct-values(($n/r:port/r:message/@msg ! (concat('#include &lt;', fp:ros2-type(., $pkg, 'msg')[1], '&gt;')),
+                         $n/r:service/@srv ! (concat('#include &lt;', fp:ros2-type(., $pkg, 'srv')[1], '&gt;')))),
         '#include &lt;memory&gt;',
         '#include &lt;string&gt;',
-        '#include &lt;' || $n/r:realizing-class/@header || '&gt;',
+        concat('#include &lt;', $n/r:realizing-class/@header, '&gt;'),
         '',
-        'namespace ' || $pkg || ' {',
+        concat('namespace ', $pkg, ' {'),
         '',
         '/**',
-        ' * ' || fp:doc-of($n, 'ROS 2 node of component ' || $n/@name || '.'),
-        ' * Wraps the atomic code ' || $n/r:realizing-class/@cpp-name || ' (seed 000, R1); a component',
-        ' * (rclcpp_components) named ' || $n/@type-name || '.',
+        concat(' * ', fp:doc-of($n, concat('ROS 2 node of component ', $n/@name, '.'))),
+        concat(' * Wraps the atomic code ', $n/r:realizing-class/@cpp-name, ' (seed 000, R1); a component'),
+        concat(' * (rclcpp_components) named ', $n/@type-name, '.'),
         ' */',
-        'class ' || $cls || ' : public rclcpp::Node, public ' || $n/r:realizing-class/@cpp-name,
+        concat('class ', $cls, ' : public rclcpp::Node, public ', $n/r:realizing-class/@cpp-name),
         '{',
         'public:',
-        '  explicit ' || $cls || '(const rclcpp::NodeOptions&amp; options = rclcpp::NodeOptions());',
-        '  ~' || $cls || '() override;',
+        concat('  explicit ', $cls, '(const rclcpp::NodeOptions&amp; options = rclcpp::NodeOptions());'),
+        concat('  ~', $cls, '() override;'),
         '',
         'private:',
         '  void step();',
-        $n/r:port[@direction eq 'in'] ! ('  void on_' || @name || '(const ' || fp:ros2-type(r:message/@msg, $pkg, 'msg')[2] || '::SharedPtr msg);'),
-        $n/r:service ! ('  void on_' || @name || '(const std::shared_ptr&lt;' || fp:ros2-type(@srv, $pkg, 'srv')[2] || '::Request&gt; request,',
-                        '    std::shared_ptr&lt;' || fp:ros2-type(@srv, $pkg, 'srv')[2] || '::Response&gt; response);'),
+        $n/r:port[@direction eq 'in'] ! (concat('  void on_', @name, '(const ', fp:ros2-type(r:message/@msg, $pkg, 'msg')[2], '::SharedPtr msg);')),
+        $n/r:service ! (concat('  void on_', @name, '(const std::shared_ptr&lt;', fp:ros2-type(@srv, $pkg, 'srv')[2], '::Request&gt; request,'),
+                        concat('    std::shared_ptr&lt;', fp:ros2-type(@srv, $pkg, 'srv')[2], '::Response&gt; response);')),
         '',
-        $n/r:port[@direction eq 'out'] ! ('  rclcpp::Publisher&lt;' || fp:ros2-type(r:message/@msg, $pkg, 'msg')[2] || '&gt;::SharedPtr ' || @member || ';'),
-        $n/r:port[@direction eq 'in'] ! ('  rclcpp::Subscription&lt;' || fp:ros2-type(r:message/@msg, $pkg, 'msg')[2] || '&gt;::SharedPtr ' || @member || ';'),
-        $n/r:service ! ('  rclcpp::Service&lt;' || fp:ros2-type(@srv, $pkg, 'srv')[2] || '&gt;::SharedPtr ' || @member || ';'),
+        $n/r:port[@direction eq 'out'] ! (concat('  rclcpp::Publisher&lt;', fp:ros2-type(r:message/@msg, $pkg, 'msg')[2], '&gt;::SharedPtr ', @member, ';')),
+        $n/r:port[@direction eq 'in'] ! (concat('  rclcpp::Subscription&lt;', fp:ros2-type(r:message/@msg, $pkg, 'msg')[2], '&gt;::SharedPtr ', @member, ';')),
+        $n/r:service ! (concat('  rclcpp::Service&lt;', fp:ros2-type(@srv, $pkg, 'srv')[2], '&gt;::SharedPtr ', @member, ';')),
         '  rclcpp::TimerBase::SharedPtr timer_;',
         '  double period_;',
         '  bool running_;',
         '};',
         '',
-        '}  // namespace ' || $pkg,
+        concat('}  // namespace ', $pkg),
         '',
-        '#endif  // ' || $guard))"/>
+        concat('#endif  // ', $guard)))"/>
   </xsl:function>
 
   <xsl:function name="fp:ros2-source" as="xs:string">
@@ -95,7 +95,7 @@
     <xsl:variable name="rc" as="xs:string" select="$n/r:realizing-class/@cpp-name"/>
     <xsl:sequence select="fp:lines((
         fp:banner('// ', $fp:cpp-xsl, fp:what($n), false()),
-        '#include &lt;' || $pkg || '/' || $cls || '.hpp&gt;',
+        concat('#include &lt;', $pkg, '/', $cls, '.hpp&gt;'),
         '',
         '#include &lt;chrono&gt;',
         '#include &lt;cstdint&gt;',
@@ -103,101 +103,101 @@
         '#include &lt;stdexcept&gt;',
         '#include &lt;rclcpp_components/register_node_macro.hpp&gt;',
         '',
-        'namespace ' || $pkg || ' {',
+        concat('namespace ', $pkg, ' {'),
         '',
-        $cls || '::' || $cls || '(const rclcpp::NodeOptions&amp; options)',
-        '  : rclcpp::Node(' || fp:cpp-string($n/@default-name) || ', options), period_(' || fp:double-literal($n/@period) || '), running_(false)',
+        concat($cls, '::', $cls, '(const rclcpp::NodeOptions&amp; options)'),
+        concat('  : rclcpp::Node(', fp:cpp-string($n/@default-name), ', options), period_(', fp:double-literal($n/@period), '), running_(false)'),
         '{',
         '  // parameters (R4), declared with their type and the model default',
-        $n/r:parameter ! ('  ' || $rc || '::' || @member || ' = '
-            || (if (@param2 eq @cpp-type) then '' else 'static_cast&lt;' || @cpp-type || '&gt;(')
-            || 'this->declare_parameter&lt;' || @param2 || '&gt;(' || fp:cpp-string(@name) || ', '
-            || (if (@param2 eq 'std::string') then 'std::string(' || @cpp-default || ')' else @cpp-default) || ')'
-            || (if (@param2 eq @cpp-type) then '' else ')') || ';'),
+        $n/r:parameter ! (concat('  ', $rc, '::', @member, ' = ',
+             (if (@param2 eq @cpp-type) then '' else concat('static_cast&lt;', @cpp-type, '&gt;(')),
+             'this->declare_parameter&lt;', @param2, '&gt;(', fp:cpp-string(@name), ', ',
+             (if (@param2 eq 'std::string') then concat('std::string(', @cpp-default, ')') else @cpp-default), ')',
+             (if (@param2 eq @cpp-type) then '' else ')'), ';')),
         '  period_ = this->declare_parameter&lt;double&gt;(&quot;update_period&quot;, period_);',
         for $h in $n/r:hook[@name = ('configure', 'start')][@call] return
           if (xs:boolean($h/@returns-bool))
-          then ('  if (!' || $rc || '::' || $h/@call || '()) {',
-                '    throw std::runtime_error(&quot;' || $cls || ': ' || $h/@call || '() failed&quot;);',
+          then (concat('  if (!', $rc, '::', $h/@call, '()) {'),
+                concat('    throw std::runtime_error(&quot;', $cls, ': ', $h/@call, '() failed&quot;);'),
                 '  }')
-          else '  ' || $rc || '::' || $h/@call || '();',
-        $n/r:port[@direction eq 'out'] ! ('  ' || @member || ' = this->create_publisher&lt;' || fp:ros2-type(r:message/@msg, $pkg, 'msg')[2] || '&gt;(',
-            '    ' || fp:cpp-string(@topic) || ', ' || fp:ros2-qos(r:qos) || ');'),
-        $n/r:port[@direction eq 'in'] ! ('  ' || @member || ' = this->create_subscription&lt;' || fp:ros2-type(r:message/@msg, $pkg, 'msg')[2] || '&gt;(',
-            '    ' || fp:cpp-string(@topic) || ', ' || fp:ros2-qos(r:qos) || ',',
-            '    std::bind(&amp;' || $cls || '::on_' || @name || ', this, std::placeholders::_1));'),
-        $n/r:service ! ('  ' || @member || ' = this->create_service&lt;' || fp:ros2-type(@srv, $pkg, 'srv')[2] || '&gt;(',
-            '    ' || fp:cpp-string('~/' || @name) || ', std::bind(&amp;' || $cls || '::on_' || @name || ', this, std::placeholders::_1, std::placeholders::_2));'),
+          else concat('  ', $rc, '::', $h/@call, '();'),
+        $n/r:port[@direction eq 'out'] ! (concat('  ', @member, ' = this->create_publisher&lt;', fp:ros2-type(r:message/@msg, $pkg, 'msg')[2], '&gt;('),
+            concat('    ', fp:cpp-string(@topic), ', ', fp:ros2-qos(r:qos), ');')),
+        $n/r:port[@direction eq 'in'] ! (concat('  ', @member, ' = this->create_subscription&lt;', fp:ros2-type(r:message/@msg, $pkg, 'msg')[2], '&gt;('),
+            concat('    ', fp:cpp-string(@topic), ', ', fp:ros2-qos(r:qos), ','),
+            concat('    std::bind(&amp;', $cls, '::on_', @name, ', this, std::placeholders::_1));')),
+        $n/r:service ! (concat('  ', @member, ' = this->create_service&lt;', fp:ros2-type(@srv, $pkg, 'srv')[2], '&gt;('),
+            concat('    ', fp:cpp-string(concat('~/', @name)), ', std::bind(&amp;', $cls, '::on_', @name, ', this, std::placeholders::_1, std::placeholders::_2));')),
         '  if (period_ &gt; 0.0) {',
-        '    timer_ = this->create_wall_timer(std::chrono::duration&lt;double&gt;(period_), std::bind(&amp;' || $cls || '::step, this));',
+        concat('    timer_ = this->create_wall_timer(std::chrono::duration&lt;double&gt;(period_), std::bind(&amp;', $cls, '::step, this));'),
         '  }',
         '  running_ = true;',
         '}',
         '',
-        $cls || '::~' || $cls || '()',
+        concat($cls, '::~', $cls, '()'),
         '{',
         '  if (running_) {',
         '    running_ = false;',
         '    if (timer_) {',
         '      timer_-&gt;cancel();',
         '    }',
-        $n/r:hook[@name = ('stop', 'cleanup')][@call] ! ('    ' || $rc || '::' || @call || '();'),
+        $n/r:hook[@name = ('stop', 'cleanup')][@call] ! (concat('    ', $rc, '::', @call, '();')),
         '  }',
         '}',
         '',
-        'void ' || $cls || '::step()',
+        concat('void ', $cls, '::step()'),
         '{',
         '  if (!running_) {',
         '    return;',
         '  }',
-        $n/r:hook[@name eq 'update'][@call] ! ('  ' || $rc || '::update();'),
+        $n/r:hook[@name eq 'update'][@call] ! (concat('  ', $rc, '::update();')),
         for $p in $n/r:port[@direction eq 'out'] return
           if (xs:boolean($p/@accessor-declared)) then (
             '  {',
-            '    ' || fp:ros2-type($p/r:message/@msg, $pkg, 'msg')[2] || ' msg;',
-            fp:indent(4, fp:to-msg($p/r:message, 'msg', $rc || '::' || $p/@accessor || '()')),
-            '    ' || $p/@member || '-&gt;publish(msg);',
+            concat('    ', fp:ros2-type($p/r:message/@msg, $pkg, 'msg')[2], ' msg;'),
+            fp:indent(4, fp:to-msg($p/r:message, 'msg', concat($rc, '::', $p/@accessor, '()'))),
+            concat('    ', $p/@member, '-&gt;publish(msg);'),
             '  }')
-          else '  // ' || $n/r:realizing-class/@name || ' declares no ' || $p/@accessor || '(): ' || $p/@name || ' is not published',
+          else concat('  // ', $n/r:realizing-class/@name, ' declares no ', $p/@accessor, '(): ', $p/@name, ' is not published'),
         '}',
         for $p in $n/r:port[@direction eq 'in'] return (
           '',
-          'void ' || $cls || '::on_' || $p/@name || '(const ' || fp:ros2-type($p/r:message/@msg, $pkg, 'msg')[2] || '::SharedPtr msg)',
+          concat('void ', $cls, '::on_', $p/@name, '(const ', fp:ros2-type($p/r:message/@msg, $pkg, 'msg')[2], '::SharedPtr msg)'),
           '{',
           if (xs:boolean($p/@accessor-declared))
-          then '  ' || $rc || '::' || $p/@accessor || '(' || fp:from-msg($p/r:message, '(*msg)') || ');'
-          else '  (void)msg;  // ' || $n/r:realizing-class/@name || ' declares no ' || $p/@accessor || '()',
+          then concat('  ', $rc, '::', $p/@accessor, '(', fp:from-msg($p/r:message, '(*msg)'), ');')
+          else concat('  (void)msg;  // ', $n/r:realizing-class/@name, ' declares no ', $p/@accessor, '()'),
           '  if (period_ &lt;= 0.0) {',
           '    step();  // data-driven (period 0)',
           '  }',
           '}'),
         for $s in $n/r:service return (
           '',
-          'void ' || $cls || '::on_' || $s/@name || '(const std::shared_ptr&lt;' || fp:ros2-type($s/@srv, $pkg, 'srv')[2] || '::Request&gt; '
-              || (if ($s/@srv eq 'std_srvs/SetBool') then 'request' else '/*request*/') || ',',
-          '  std::shared_ptr&lt;' || fp:ros2-type($s/@srv, $pkg, 'srv')[2] || '::Response&gt; '
-              || (if ($s/@srv eq 'std_srvs/Empty') then '/*response*/' else 'response') || ')',
+          concat('void ', $cls, '::on_', $s/@name, '(const std::shared_ptr&lt;', fp:ros2-type($s/@srv, $pkg, 'srv')[2], '::Request&gt; ',
+               (if ($s/@srv eq 'std_srvs/SetBool') then 'request' else '/*request*/'), ','),
+          concat('  std::shared_ptr&lt;', fp:ros2-type($s/@srv, $pkg, 'srv')[2], '::Response&gt; ',
+               (if ($s/@srv eq 'std_srvs/Empty') then '/*response*/' else 'response'), ')'),
           '{',
           fp:service-body($s, $rc, '-&gt;'),
           '}'),
         '',
-        '}  // namespace ' || $pkg,
+        concat('}  // namespace ', $pkg),
         '',
-        'RCLCPP_COMPONENTS_REGISTER_NODE(' || $n/@type-name || ')'))"/>
+        concat('RCLCPP_COMPONENTS_REGISTER_NODE(', $n/@type-name, ')')))"/>
   </xsl:function>
 
   <xsl:function name="fp:ros2-main" as="xs:string">
     <xsl:param name="n" as="element(r:node)"/>
     <xsl:sequence select="fp:lines((
         fp:banner('// ', $fp:cpp-xsl, fp:what($n), false()),
-        '#include &lt;' || $n/@namespace || '/' || $n/@class || '.hpp&gt;',
+        concat('#include &lt;', $n/@namespace, '/', $n/@class, '.hpp&gt;'),
         '',
         '#include &lt;memory&gt;',
         '',
         'int main(int argc, char** argv)',
         '{',
         '  rclcpp::init(argc, argv);',
-        '  rclcpp::spin(std::make_shared&lt;' || $n/@type-name || '&gt;());',
+        concat('  rclcpp::spin(std::make_shared&lt;', $n/@type-name, '&gt;());'),
         '  rclcpp::shutdown();',
         '  return 0;',
         '}'))"/>
