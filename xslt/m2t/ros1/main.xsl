@@ -10,6 +10,8 @@
              CMakeLists.txt, package.xml
              launch/<model>.launch, launch/<model>_<host>.launch
              config/<instance>.yaml
+           One fs:file a line, as f:indent (common/indent.xsl) would indent
+           the file set, written so directly (no copy of all the text).
   Params:  model-dir-from-output (xslt/m2t/ros-common/ros-text.xsl).
   Errors:  none (the PSM is complete and valid).
   Modules: ../ros-common/ros-text.xsl, ros1-cpp.xsl, ros1-build.xsl, ros1-launch.xsl.
@@ -24,7 +26,6 @@
     xmlns:m="urn:robomda:xslt:mode"
     exclude-result-prefixes="#all">
 
-  <xsl:include href="../../common/indent.xsl"/>
   <xsl:include href="../../common/naming.xsl"/>
   <xsl:include href="../ros-common/ros-text.xsl"/>
   <xsl:include href="ros1-cpp.xsl"/>
@@ -38,19 +39,19 @@
   <xsl:variable name="fp:build-xsl" as="xs:string" select="'m2t/ros1/ros1-build.xsl'"/>
   <xsl:variable name="fp:launch-xsl" as="xs:string" select="'m2t/ros1/ros1-launch.xsl'"/>
 
+  <!-- the file set comes out as f:indent (common/indent.xsl) would indent
+       it (one fs:file a line; their text as it is), written so directly:
+       f:indent would copy all the text once more -->
   <xsl:template match="/" as="document-node()">
-    <xsl:variable name="result" as="document-node()">
-      <xsl:document>
-        <xsl:apply-templates select="r:package" mode="m:emit-files"/>
-      </xsl:document>
-    </xsl:variable>
-    <xsl:sequence select="f:indent($result)"/>
+    <xsl:document>
+      <xsl:apply-templates select="r:package" mode="m:emit-files"/>
+    </xsl:document>
   </xsl:template>
 
   <xsl:template match="r:package" mode="m:emit-files" as="element(fs:files)">
     <xsl:variable name="pkg" as="xs:string" select="@name"/>
     <xsl:variable name="p" as="element(r:package)" select="."/>
-    <fs:files target="ros1">
+    <xsl:variable name="files" as="element(fs:file)*">
       <xsl:for-each select="r:node">
         <xsl:sequence select="fp:file(concat('include/', $pkg, '/', @class, '.hpp'), 'generated', $fp:cpp-xsl, fp:ros1-header(.))"/>
         <xsl:sequence select="fp:file(concat('src/', @class, '.cpp'), 'generated', $fp:cpp-xsl, fp:ros1-source(.))"/>
@@ -69,6 +70,15 @@
       <xsl:for-each select="r:instance">
         <xsl:sequence select="fp:file(concat('config/', @name, '.yaml'), 'generated', $fp:launch-xsl, fp:params-yaml(., $fp:launch-xsl))"/>
       </xsl:for-each>
+    </xsl:variable>
+    <fs:files target="ros1">
+      <xsl:for-each select="$files">
+        <xsl:text>&#10;  </xsl:text>
+        <xsl:sequence select="."/>
+      </xsl:for-each>
+      <xsl:if test="exists($files)">
+        <xsl:text>&#10;</xsl:text>
+      </xsl:if>
     </fs:files>
   </xsl:template>
 </xsl:stylesheet>
