@@ -62,6 +62,7 @@
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
     xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:map="http://www.w3.org/2005/xpath-functions/map"
     xmlns:pim="urn:robomda:pim:1"
     xmlns:r="urn:robomda:psm-ros:1"
     xmlns:ty="urn:robomda:ros-types:1"
@@ -144,8 +145,11 @@
           || string-join($other/@name, ''', ''') || ''' on ' || string-join(distinct-values($other/@middleware), ', ')
           || ', not ' || $fp:target-middleware || ': generated for ROS ' || $ros-version || ' anyway')"/>
     </xsl:if>
+    <!-- fp:host-key of each host the instances name, made once per host -->
+    <xsl:variable name="host-keys" as="map(xs:string, xs:string)"
+        select="map:merge(distinct-values($b/pim:instance ! string(@host)) ! map:entry(., fp:host-key(., root($b))))"/>
     <xsl:variable name="hosts" as="element(r:host)*">
-      <xsl:for-each-group select="$b/pim:instance" group-by="fp:host-key(.)">
+      <xsl:for-each-group select="$b/pim:instance" group-by="$host-keys(string(@host))">
         <xsl:variable name="h" as="element(pim:host)?" select="key('fp:host', string(current-group()[1]/@host))"/>
         <r:host xmi-id="{($h/@xmi-id, current-group()[1]/@execution-environment)[1]}"
                 name="{current-grouping-key()}" machine="{current-grouping-key()}"
@@ -194,14 +198,15 @@
         </r:topic>
       </xsl:for-each>
       <xsl:for-each select="$b/pim:instance">
-        <xsl:sequence select="fp:instance(., $nodes)"/>
+        <xsl:sequence select="fp:instance(., $nodes, $host-keys)"/>
       </xsl:for-each>
     </r:package>
   </xsl:template>
 
   <xsl:function name="fp:host-key" as="xs:string">
-    <xsl:param name="i" as="element(pim:instance)"/>
-    <xsl:variable name="h" as="element(pim:host)?" select="key('fp:host', string($i/@host), root($i))"/>
+    <xsl:param name="host" as="xs:string"/>
+    <xsl:param name="root" as="document-node()"/>
+    <xsl:variable name="h" as="element(pim:host)?" select="key('fp:host', $host, $root)"/>
     <xsl:sequence select="if ($h) then f:snake-case($h/@name) else 'local'"/>
   </xsl:function>
 
@@ -436,10 +441,11 @@
   <xsl:function name="fp:instance" as="element(r:instance)">
     <xsl:param name="i" as="element(pim:instance)"/>
     <xsl:param name="nodes" as="document-node()"/>
+    <xsl:param name="host-keys" as="map(xs:string, xs:string)"/>
     <xsl:variable name="n" as="element(r:node)" select="key('fp:node', $i/@component, $nodes)"/>
     <xsl:variable name="a" as="element(pim:activity)" select="$i/pim:activity"/>
     <r:instance xmi-id="{$i/@xmi-id}" name="{$i/@name}" node="{$n/@class}" executable="{$n/@executable}"
-                host="{fp:host-key($i)}" middleware="{$i/@middleware}"
+                host="{$host-keys(string($i/@host))}" middleware="{$i/@middleware}"
                 period="{$a/@period}" periodic="{number($a/@period) ne 0}">
       <xsl:for-each select="$n/r:port">
         <xsl:variable name="p" as="element(r:port)" select="."/>
