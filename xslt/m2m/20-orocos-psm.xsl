@@ -3,7 +3,9 @@
   xslt/m2m/20-orocos-psm.xsl - bound PIM -> Orocos RTT 2.x PSM (seed 000 R1-R5).
 
   Reads:   a bound PIM, urn:robomda:pim:1 with pim:binding (xslt/m2m/10-bind.xsl).
-  Writes:  urn:robomda:psm-orocos:1 (schemas/psm-orocos/1/psm-orocos.xsd).
+  Writes:  urn:robomda:psm-orocos:1 (schemas/psm-orocos/1/psm-orocos.xsd),
+           indented as f:indent (common/indent.xsl) indents it, through its
+           rules (mode mp:indent) in the same pass.
   Data:    xslt/m2m/orocos-types.xml (primitive kind -> C++ / cpf XML type, sample).
   Params:  package-name (see below).
 
@@ -66,6 +68,7 @@
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
     xmlns:m="urn:robomda:xslt:mode"
+    xmlns:mp="urn:robomda:xslt:mode:private"
     exclude-result-prefixes="#all">
 
   <xsl:include href="../common/errors.xsl"/>
@@ -99,13 +102,14 @@
   <xsl:variable name="fp:convention-names" as="xs:string+" select="('sample', 'priority', 'scheduler', 'cpuAffinity')"/>
 
   <!-- ================================================================ entry -->
+  <!-- the result is indented as f:indent (common/indent.xsl) would indent
+       it, in one pass: o:deployment puts each child through f:indent's
+       rules (mode mp:indent), so the task contexts, made once in a tree of
+       their own, are not copied into an unindented result first -->
   <xsl:template match="/" as="document-node()">
-    <xsl:variable name="result" as="document-node()">
-      <xsl:document>
-        <xsl:apply-templates select="pim:model" mode="m:to-psm"/>
-      </xsl:document>
-    </xsl:variable>
-    <xsl:sequence select="f:indent($result)"/>
+    <xsl:document>
+      <xsl:apply-templates select="pim:model" mode="m:to-psm"/>
+    </xsl:document>
   </xsl:template>
 
   <xsl:template match="pim:model[empty(pim:binding)]" mode="m:to-psm" as="empty-sequence()">
@@ -156,39 +160,50 @@
     </xsl:variable>
     <o:deployment xmi-id="{@id}" model-name="{@name}" deploy-name="{f:snake-case(@name)}"
                   package="{$pkg}" namespace="{$pkg}" source="{@source}">
-      <xsl:for-each select="$b/pim:library">
-        <o:library xmi-id="{@xmi-id}" name="{@name}" path="{@path}" absolute="{@absolute}"
-                   target="{@target}" include-dir="{@include-dir}"
-                   cmake-var="{upper-case($pkg) || '_' || upper-case(f:snake-case(@name)) || '_DIR'}"
-                   build-dir="{f:snake-case(@name) || '-build'}"/>
-      </xsl:for-each>
-      <xsl:sequence select="$task-contexts/o:task-context"/>
-      <xsl:for-each select="$b/pim:host">
-        <o:host xmi-id="{@xmi-id}" name="{@name}" hostname="{@hostname}" address="{@address}"/>
-      </xsl:for-each>
-      <xsl:for-each select="$connections">
-        <o:connection xmi-id="{@xmi-id}" name="{@name}" type="{pim:policy/@type}"
-                      type-code="{index-of(('DATA', 'BUFFER', 'CIRCULAR_BUFFER'), pim:policy/@type) - 1}"
-                      size="{pim:policy/@size}" lock-policy="{pim:policy/@lock-policy}"
-                      lock-policy-code="{index-of(('UNSYNC', 'LOCKED', 'LOCK_FREE'), pim:policy/@lock-policy) - 1}"
-                      init="{pim:policy/@init}" pull="{pim:policy/@pull}" topic="{pim:policy/@topic}">
-          <xsl:for-each select="pim:writer[@instance ! map:contains($targets, string(.))]">
-            <o:writer instance="{@instance}" port="{@data-port}" xmi-id="{@port}"/>
-          </xsl:for-each>
-          <xsl:for-each select="pim:reader[@instance ! map:contains($targets, string(.))]">
-            <o:reader instance="{@instance}" port="{@data-port}" xmi-id="{@port}"/>
-          </xsl:for-each>
-        </o:connection>
-      </xsl:for-each>
-      <xsl:variable name="in-start-order" as="element(pim:instance)*">
-        <xsl:perform-sort select="$instances">
-          <xsl:sort select="empty(@start-order)"/>
-          <xsl:sort select="xs:integer((@start-order, 0)[1])"/>
-        </xsl:perform-sort>
+      <xsl:variable name="children" as="element()*">
+        <xsl:for-each select="$b/pim:library">
+          <o:library xmi-id="{@xmi-id}" name="{@name}" path="{@path}" absolute="{@absolute}"
+                     target="{@target}" include-dir="{@include-dir}"
+                     cmake-var="{upper-case($pkg) || '_' || upper-case(f:snake-case(@name)) || '_DIR'}"
+                     build-dir="{f:snake-case(@name) || '-build'}"/>
+        </xsl:for-each>
+        <xsl:sequence select="$task-contexts/o:task-context"/>
+        <xsl:for-each select="$b/pim:host">
+          <o:host xmi-id="{@xmi-id}" name="{@name}" hostname="{@hostname}" address="{@address}"/>
+        </xsl:for-each>
+        <xsl:for-each select="$connections">
+          <o:connection xmi-id="{@xmi-id}" name="{@name}" type="{pim:policy/@type}"
+                        type-code="{index-of(('DATA', 'BUFFER', 'CIRCULAR_BUFFER'), pim:policy/@type) - 1}"
+                        size="{pim:policy/@size}" lock-policy="{pim:policy/@lock-policy}"
+                        lock-policy-code="{index-of(('UNSYNC', 'LOCKED', 'LOCK_FREE'), pim:policy/@lock-policy) - 1}"
+                        init="{pim:policy/@init}" pull="{pim:policy/@pull}" topic="{pim:policy/@topic}">
+            <xsl:for-each select="pim:writer[@instance ! map:contains($targets, string(.))]">
+              <o:writer instance="{@instance}" port="{@data-port}" xmi-id="{@port}"/>
+            </xsl:for-each>
+            <xsl:for-each select="pim:reader[@instance ! map:contains($targets, string(.))]">
+              <o:reader instance="{@instance}" port="{@data-port}" xmi-id="{@port}"/>
+            </xsl:for-each>
+          </o:connection>
+        </xsl:for-each>
+        <xsl:variable name="in-start-order" as="element(pim:instance)*">
+          <xsl:perform-sort select="$instances">
+            <xsl:sort select="empty(@start-order)"/>
+            <xsl:sort select="xs:integer((@start-order, 0)[1])"/>
+          </xsl:perform-sort>
+        </xsl:variable>
+        <xsl:for-each select="$in-start-order">
+          <xsl:sequence select="fp:instance(., $pkg, $b, $task-contexts, $targets)"/>
+        </xsl:for-each>
       </xsl:variable>
-      <xsl:for-each select="$in-start-order">
-        <xsl:sequence select="fp:instance(., $pkg, $b, $task-contexts, $targets)"/>
+      <xsl:for-each select="$children">
+        <xsl:text>&#10;  </xsl:text>
+        <xsl:apply-templates select="." mode="mp:indent">
+          <xsl:with-param name="margin" select="'&#10;  '"/>
+        </xsl:apply-templates>
       </xsl:for-each>
+      <xsl:if test="exists($children)">
+        <xsl:text>&#10;</xsl:text>
+      </xsl:if>
     </o:deployment>
   </xsl:template>
 
