@@ -3,7 +3,9 @@
   xslt/m2m/30-ros-psm.xsl - bound PIM -> ROS PSM (ROS 1 roscpp / ROS 2 rclcpp).
 
   Reads:   a bound PIM, urn:robomda:pim:1 with pim:binding (xslt/m2m/10-bind.xsl).
-  Writes:  urn:robomda:psm-ros:1 (schemas/psm-ros/1/psm-ros.xsd).
+  Writes:  urn:robomda:psm-ros:1 (schemas/psm-ros/1/psm-ros.xsd),
+           indented as f:indent (common/indent.xsl) indents it, through its
+           rules (mode mp:indent) in the same pass.
   Data:    xslt/m2m/ros-types.xml (type -> C++ type, message, parameter type),
            overridden entry by entry by the map the type-map parameter names.
   Params:  ros-version ('1' or '2'), package-name, type-map (see below).
@@ -69,6 +71,7 @@
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
     xmlns:m="urn:robomda:xslt:mode"
+    xmlns:mp="urn:robomda:xslt:mode:private"
     exclude-result-prefixes="#all">
 
   <xsl:include href="../common/errors.xsl"/>
@@ -111,12 +114,13 @@
     <xsl:if test="not($ros-version = ('1', '2'))">
       <xsl:sequence select="f:fail('ROS006', '', 'parameter ros-version is ''' || $ros-version || ''': use ''1'' or ''2''')"/>
     </xsl:if>
-    <xsl:variable name="result" as="document-node()">
-      <xsl:document>
-        <xsl:apply-templates select="pim:model" mode="m:to-psm"/>
-      </xsl:document>
-    </xsl:variable>
-    <xsl:sequence select="f:indent($result)"/>
+    <!-- indented as f:indent (common/indent.xsl) would indent it, in one
+         pass: r:package puts each child through f:indent's rules (mode
+         mp:indent), so the nodes, made once in a tree of their own, are
+         not copied into an unindented result first -->
+    <xsl:document>
+      <xsl:apply-templates select="pim:model" mode="m:to-psm"/>
+    </xsl:document>
   </xsl:template>
 
   <xsl:template match="pim:model[empty(pim:binding)]" mode="m:to-psm" as="empty-sequence()">
@@ -168,38 +172,49 @@
     </xsl:variable>
     <r:package xmi-id="{@id}" model-name="{@name}" name="{$pkg}" namespace="{$pkg}" ros-version="{$ros-version}"
                deploy-name="{f:snake-case(@name)}" source="{@source}">
-      <xsl:for-each select="$b/pim:library">
-        <r:library xmi-id="{@xmi-id}" name="{@name}" path="{@path}" absolute="{@absolute}"
-                   target="{@target}" include-dir="{@include-dir}"
-                   cmake-var="{upper-case($pkg) || '_' || upper-case(f:snake-case(@name)) || '_DIR'}"
-                   build-dir="{f:snake-case(@name) || '-build'}"/>
+      <xsl:variable name="children" as="element()*">
+        <xsl:for-each select="$b/pim:library">
+          <r:library xmi-id="{@xmi-id}" name="{@name}" path="{@path}" absolute="{@absolute}"
+                     target="{@target}" include-dir="{@include-dir}"
+                     cmake-var="{upper-case($pkg) || '_' || upper-case(f:snake-case(@name)) || '_DIR'}"
+                     build-dir="{f:snake-case(@name) || '-build'}"/>
+        </xsl:for-each>
+        <xsl:for-each-group select="$nodes//r:message[@generated eq 'true']" group-by="@msg">
+          <r:message-file name="{current-grouping-key()}" xmi-id="{@type}">
+            <xsl:sequence select="r:field"/>
+          </r:message-file>
+        </xsl:for-each-group>
+        <xsl:sequence select="$nodes/r:node"/>
+        <xsl:sequence select="$hosts"/>
+        <xsl:for-each select="$b/pim:connection">
+          <xsl:variable name="topic" as="xs:string" select="(pim:policy/@topic[normalize-space(.)], @name)[1]"/>
+          <xsl:if test="not(matches($topic, '^[~/]?[A-Za-z][A-Za-z0-9_]*(/[A-Za-z][A-Za-z0-9_]*)*$'))">
+            <xsl:sequence select="f:fail('ROS005', (pim:policy/@source-element, @xmi-id)[1],
+                'topic ''' || $topic || ''' of connection ''' || @name || ''' is not a valid ROS graph name')"/>
+          </xsl:if>
+          <r:topic xmi-id="{@xmi-id}" connection="{@name}" name="{$topic}">
+            <xsl:sequence select="fp:qos(pim:policy)"/>
+            <xsl:for-each select="pim:writer">
+              <r:writer instance="{@instance}" port="{@data-port}" xmi-id="{@port}"/>
+            </xsl:for-each>
+            <xsl:for-each select="pim:reader">
+              <r:reader instance="{@instance}" port="{@data-port}" xmi-id="{@port}"/>
+            </xsl:for-each>
+          </r:topic>
+        </xsl:for-each>
+        <xsl:for-each select="$b/pim:instance">
+          <xsl:sequence select="fp:instance(., $nodes, $host-keys)"/>
+        </xsl:for-each>
+      </xsl:variable>
+      <xsl:for-each select="$children">
+        <xsl:text>&#10;  </xsl:text>
+        <xsl:apply-templates select="." mode="mp:indent">
+          <xsl:with-param name="margin" select="'&#10;  '"/>
+        </xsl:apply-templates>
       </xsl:for-each>
-      <xsl:for-each-group select="$nodes//r:message[@generated eq 'true']" group-by="@msg">
-        <r:message-file name="{current-grouping-key()}" xmi-id="{@type}">
-          <xsl:sequence select="r:field"/>
-        </r:message-file>
-      </xsl:for-each-group>
-      <xsl:sequence select="$nodes/r:node"/>
-      <xsl:sequence select="$hosts"/>
-      <xsl:for-each select="$b/pim:connection">
-        <xsl:variable name="topic" as="xs:string" select="(pim:policy/@topic[normalize-space(.)], @name)[1]"/>
-        <xsl:if test="not(matches($topic, '^[~/]?[A-Za-z][A-Za-z0-9_]*(/[A-Za-z][A-Za-z0-9_]*)*$'))">
-          <xsl:sequence select="f:fail('ROS005', (pim:policy/@source-element, @xmi-id)[1],
-              'topic ''' || $topic || ''' of connection ''' || @name || ''' is not a valid ROS graph name')"/>
-        </xsl:if>
-        <r:topic xmi-id="{@xmi-id}" connection="{@name}" name="{$topic}">
-          <xsl:sequence select="fp:qos(pim:policy)"/>
-          <xsl:for-each select="pim:writer">
-            <r:writer instance="{@instance}" port="{@data-port}" xmi-id="{@port}"/>
-          </xsl:for-each>
-          <xsl:for-each select="pim:reader">
-            <r:reader instance="{@instance}" port="{@data-port}" xmi-id="{@port}"/>
-          </xsl:for-each>
-        </r:topic>
-      </xsl:for-each>
-      <xsl:for-each select="$b/pim:instance">
-        <xsl:sequence select="fp:instance(., $nodes, $host-keys)"/>
-      </xsl:for-each>
+      <xsl:if test="exists($children)">
+        <xsl:text>&#10;</xsl:text>
+      </xsl:if>
     </r:package>
   </xsl:template>
 
