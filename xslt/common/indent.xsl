@@ -8,22 +8,28 @@
            per level before each child and before the end tag. Elements
            with text content (mixed or simple) are copied unchanged.
   Params:  none.
+  Public:  f:indent($doc) indents a document; mode m:indent (template
+           parameter margin: a newline and the indentation of the node's
+           own line) indents one node at that margin, for a stage that
+           writes its result indented in one pass instead of building it
+           and then copying it through f:indent.
   Errors:  none.
 
   Why: serializers indent differently (Saxon 10+ wraps long attribute
   lists, SaxonJS does not), so a stage that relied on indent="yes" would
   give different bytes on different engines. Every stage serializes with
-  indent="no" and puts its result through f:indent, so SaxonC-HE, SaxonJS
-  and Saxon-HE Java write the same bytes.
+  indent="no" and indents its result with these rules (through f:indent,
+  or mode m:indent as it writes it), so SaxonC-HE, SaxonJS and Saxon-HE
+  Java write the same bytes.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
     xmlns:xs="http://www.w3.org/2001/XMLSchema"
     xmlns:f="urn:robomda:xslt:function"
-    xmlns:mp="urn:robomda:xslt:mode:private"
+    xmlns:m="urn:robomda:xslt:mode"
     exclude-result-prefixes="#all">
 
-  <xsl:mode name="mp:indent" on-no-match="shallow-copy"/>
+  <xsl:mode name="m:indent" on-no-match="shallow-copy"/>
 
   <!-- $doc indented as described above -->
   <xsl:function name="f:indent" as="document-node()">
@@ -33,7 +39,7 @@
         <xsl:if test="position() gt 1">
           <xsl:text>&#10;</xsl:text>
         </xsl:if>
-        <xsl:apply-templates select="." mode="mp:indent">
+        <xsl:apply-templates select="." mode="m:indent">
           <xsl:with-param name="margin" select="'&#10;'"/>
         </xsl:apply-templates>
       </xsl:for-each>
@@ -41,14 +47,14 @@
   </xsl:function>
 
   <!-- element-only content: one child per line -->
-  <xsl:template match="*[*][not(text()[normalize-space()])]" mode="mp:indent" as="element()">
+  <xsl:template match="*[*][not(text()[normalize-space()])]" mode="m:indent" as="element()">
     <xsl:param name="margin" as="xs:string"/>
     <xsl:variable name="inner" as="xs:string" select="$margin || '  '"/>
     <xsl:copy>
       <xsl:copy-of select="@*"/>
       <xsl:for-each select="* | comment() | processing-instruction()">
         <xsl:value-of select="$inner"/>
-        <xsl:apply-templates select="." mode="mp:indent">
+        <xsl:apply-templates select="." mode="m:indent">
           <xsl:with-param name="margin" select="$inner"/>
         </xsl:apply-templates>
       </xsl:for-each>
@@ -57,7 +63,7 @@
   </xsl:template>
 
   <!-- anything else (empty, text-only or mixed content): as it is -->
-  <xsl:template match="*" mode="mp:indent" as="element()">
+  <xsl:template match="*" mode="m:indent" as="element()">
     <xsl:param name="margin" as="xs:string"/>
     <xsl:copy-of select="."/>
   </xsl:template>

@@ -7,7 +7,7 @@
   Writes:  the same PIM with pim:binding appended (schemas/pim/1/binding.xsd),
            indented as f:indent (common/indent.xsl) indents it; a model with
            element-only content is indented in the same pass, through
-           f:indent's own rules (mode mp:indent), with no copy of it first.
+           f:indent's own rules (mode m:indent), with no copy of it first.
   Params:  none.
 
   What it resolves (docs/profile.md: stereotypes of profile "robomda" first,
@@ -125,7 +125,7 @@
   <!-- ============================================================ entry -->
   <!-- The usual input (a pim:model with element-only content) is written
        in one pass: the model's children go straight through f:indent's
-       rules (mode mp:indent of common/indent.xsl), with the new binding
+       rules (mode m:indent of common/indent.xsl), with the new binding
        last, which gives the bytes f:indent of the bound copy would give
        without building that copy of the whole model first. Any other input
        takes the general way. -->
@@ -142,7 +142,7 @@
                 <xsl:apply-templates select="." mode="mp:bind-indented"/>
               </xsl:when>
               <xsl:otherwise>
-                <xsl:apply-templates select="." mode="mp:indent">
+                <xsl:apply-templates select="." mode="m:indent">
                   <xsl:with-param name="margin" select="'&#10;'"/>
                 </xsl:apply-templates>
               </xsl:otherwise>
@@ -174,7 +174,7 @@
       <xsl:copy-of select="@*"/>
       <xsl:for-each select="(* except pim:binding) | comment() | processing-instruction(), $binding/pim:binding">
         <xsl:text>&#10;  </xsl:text>
-        <xsl:apply-templates select="." mode="mp:indent">
+        <xsl:apply-templates select="." mode="m:indent">
           <xsl:with-param name="margin" select="'&#10;  '"/>
         </xsl:apply-templates>
       </xsl:for-each>

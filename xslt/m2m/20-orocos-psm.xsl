@@ -5,7 +5,7 @@
   Reads:   a bound PIM, urn:robomda:pim:1 with pim:binding (xslt/m2m/10-bind.xsl).
   Writes:  urn:robomda:psm-orocos:1 (schemas/psm-orocos/1/psm-orocos.xsd),
            indented as f:indent (common/indent.xsl) indents it, through its
-           rules (mode mp:indent) in the same pass.
+           rules (mode m:indent) in the same pass.
   Data:    xslt/m2m/orocos-types.xml (primitive kind -> C++ / cpf XML type, sample).
   Params:  package-name (see below).
 
@@ -104,7 +104,7 @@
   <!-- ================================================================ entry -->
   <!-- the result is indented as f:indent (common/indent.xsl) would indent
        it, in one pass: o:deployment puts each child through f:indent's
-       rules (mode mp:indent), so the task contexts, made once in a tree of
+       rules (mode m:indent), so the task contexts, made once in a tree of
        their own, are not copied into an unindented result first -->
   <xsl:template match="/" as="document-node()">
     <xsl:document>
@@ -197,7 +197,7 @@
       </xsl:variable>
       <xsl:for-each select="$children">
         <xsl:text>&#10;  </xsl:text>
-        <xsl:apply-templates select="." mode="mp:indent">
+        <xsl:apply-templates select="." mode="m:indent">
           <xsl:with-param name="margin" select="'&#10;  '"/>
         </xsl:apply-templates>
       </xsl:for-each>

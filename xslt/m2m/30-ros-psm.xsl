@@ -5,7 +5,7 @@
   Reads:   a bound PIM, urn:robomda:pim:1 with pim:binding (xslt/m2m/10-bind.xsl).
   Writes:  urn:robomda:psm-ros:1 (schemas/psm-ros/1/psm-ros.xsd),
            indented as f:indent (common/indent.xsl) indents it, through its
-           rules (mode mp:indent) in the same pass.
+           rules (mode m:indent) in the same pass.
   Data:    xslt/m2m/ros-types.xml (type -> C++ type, message, parameter type),
            overridden entry by entry by the map the type-map parameter names.
   Params:  ros-version ('1' or '2'), package-name, type-map (see below).
@@ -116,7 +116,7 @@
     </xsl:if>
     <!-- indented as f:indent (common/indent.xsl) would indent it, in one
          pass: r:package puts each child through f:indent's rules (mode
-         mp:indent), so the nodes, made once in a tree of their own, are
+         m:indent), so the nodes, made once in a tree of their own, are
          not copied into an unindented result first -->
     <xsl:document>
       <xsl:apply-templates select="pim:model" mode="m:to-psm"/>
@@ -208,7 +208,7 @@
       </xsl:variable>
       <xsl:for-each select="$children">
         <xsl:text>&#10;  </xsl:text>
-        <xsl:apply-templates select="." mode="mp:indent">
+        <xsl:apply-templates select="." mode="m:indent">
           <xsl:with-param name="margin" select="'&#10;  '"/>
         </xsl:apply-templates>
       </xsl:for-each>
