@@ -599,10 +599,7 @@
     <xsl:variable name="deployments" as="element(pim:deployment)*"
         select="key('fp:deployment-by-deployed', ($ids, $artifact-ids), $root)"/>
     <xsl:variable name="ee" as="element(pim:node)?"
-        select="(for $d in $deployments
-                 return if ($d/../@kind eq 'execution-environment') then $d/..
-                        else ($d/..//pim:node[@kind eq 'execution-environment'])[1],
-                 if (count($ees) eq 1) then $ees else ())[1]"/>
+        select="($deployments ! fp:deployment-ee(.), if (count($ees) eq 1) then $ees else ())[1]"/>
     <xsl:variable name="inst-id" as="xs:string" select="string(($part/@id, $c/@id)[1])"/>
     <xsl:if test="empty($ee)">
       <xsl:sequence select="f:fail('BND006', $inst-id,
@@ -610,9 +607,7 @@
           || ' and the model has ' || count($ees) || ' of them')"/>
     </xsl:if>
     <xsl:variable name="host" as="element(pim:node)?"
-        select="($ee/ancestor::pim:node[. intersect $hosts][1],
-                 $deployments/..[. intersect $hosts],
-                 if (count($hosts) eq 1) then $hosts else ())[1]"/>
+        select="(fp:host-of($ee, $deployments/.., $hosts), if (count($hosts) eq 1) then $hosts else ())[1]"/>
     <pim:instance name="{f:cpp-identifier(($part/@name[normalize-space(.)], $c/@name)[1])}"
                   xmi-id="{$inst-id}" component="{$c/@id}">
       <xsl:if test="$top"><xsl:attribute name="composite" select="$top/@id"/></xsl:if>
@@ -628,17 +623,32 @@
       <!-- every deployment that reaches the instance, so the deployment
            rules (schemas/pim/1/pim.sch) can see one deployed twice -->
       <xsl:for-each select="$deployments">
-        <xsl:variable name="d-ee" as="element(pim:node)?"
-            select="if (../@kind eq 'execution-environment') then ..
-                    else (..//pim:node[@kind eq 'execution-environment'])[1]"/>
-        <xsl:variable name="d-host" as="element(pim:node)?"
-            select="($d-ee/ancestor::pim:node[. intersect $hosts][1], ..[. intersect $hosts])[1]"/>
+        <xsl:variable name="d-ee" as="element(pim:node)?" select="fp:deployment-ee(.)"/>
+        <xsl:variable name="d-host" as="element(pim:node)?" select="fp:host-of($d-ee, .., $hosts)"/>
         <pim:deployed-on deployment="{@id}">
           <xsl:if test="$d-ee"><xsl:attribute name="execution-environment" select="$d-ee/@id"/></xsl:if>
           <xsl:if test="$d-host"><xsl:attribute name="host" select="$d-host/@id"/></xsl:if>
         </pim:deployed-on>
       </xsl:for-each>
     </pim:instance>
+  </xsl:function>
+
+  <!-- the execution environment deployment $d reaches: its target, else
+       the first one nested in its target -->
+  <xsl:function name="fp:deployment-ee" as="element(pim:node)?">
+    <xsl:param name="d" as="element(pim:deployment)"/>
+    <xsl:sequence select="if ($d/../@kind eq 'execution-environment') then $d/..
+                          else ($d/..//pim:node[@kind eq 'execution-environment'])[1]"/>
+  </xsl:function>
+
+  <!-- the host of execution environment $ee (the nearest enclosing node
+       among $hosts), else the first of the deployment targets $targets that
+       is a host -->
+  <xsl:function name="fp:host-of" as="element(pim:node)?">
+    <xsl:param name="ee" as="element(pim:node)?"/>
+    <xsl:param name="targets" as="element()*"/>
+    <xsl:param name="hosts" as="element(pim:node)*"/>
+    <xsl:sequence select="($ee/ancestor::pim:node[. intersect $hosts][1], $targets[. intersect $hosts])[1]"/>
   </xsl:function>
 
   <!-- one activity value: (value, source) from stereotype tag, class
@@ -761,35 +771,34 @@
   </xsl:function>
 
   <!-- ==================================================== connections -->
+  <!-- the policy of a connection that no ConnectionPolicy stereotype
+       configures; its attributes are also the value of each tag a
+       stereotype leaves out -->
+  <xsl:variable name="fp:default-policy" as="element(pim:policy)">
+    <pim:policy type="DATA" size="1" lock-policy="LOCK_FREE" init="false" pull="false" topic="" source="default"/>
+  </xsl:variable>
+
   <xsl:function name="fp:policy" as="element(pim:policy)">
     <xsl:param name="candidates" as="element()*"/>
     <xsl:variable name="e" as="element()?" select="$candidates[exists(f:stereotype(., 'ConnectionPolicy'))][1]"/>
-    <xsl:choose>
-      <xsl:when test="empty($e)">
-        <!-- no ConnectionPolicy anywhere: the defaults, as the general case
-             below gives them -->
-        <pim:policy type="DATA" size="1" lock-policy="LOCK_FREE" init="false" pull="false" topic="" source="default"/>
-      </xsl:when>
-      <xsl:otherwise>
-        <xsl:sequence select="fp:policy-of($e)"/>
-      </xsl:otherwise>
-    </xsl:choose>
+    <xsl:sequence select="if (empty($e)) then $fp:default-policy else fp:policy-of($e)"/>
   </xsl:function>
 
   <!-- the policy given by the ConnectionPolicy stereotype of $e -->
   <xsl:function name="fp:policy-of" as="element(pim:policy)">
     <xsl:param name="e" as="element()"/>
     <xsl:variable name="id" as="xs:string?" select="$e/@id"/>
+    <xsl:variable name="default" as="element(pim:policy)" select="$fp:default-policy"/>
     <xsl:variable name="type" as="xs:string"
-        select="fp:enum((fp:tag($e, 'ConnectionPolicy', 'type')[normalize-space(.)], 'DATA')[1],
+        select="fp:enum((fp:tag($e, 'ConnectionPolicy', 'type')[normalize-space(.)], $default/@type)[1],
                         ('DATA', 'BUFFER', 'CIRCULAR_BUFFER'), 'connection type', $id)"/>
     <pim:policy type="{$type}"
         size="{let $s := fp:tag($e, 'ConnectionPolicy', 'size')[normalize-space(.)]
-               return if (exists($s)) then max((1, fp:integer($s, 'size', $id))) else 1}"
-        lock-policy="{fp:enum((fp:tag($e, 'ConnectionPolicy', 'lockPolicy')[normalize-space(.)], 'LOCK_FREE')[1],
+               return if (exists($s)) then max((1, fp:integer($s, 'size', $id))) else $default/@size}"
+        lock-policy="{fp:enum((fp:tag($e, 'ConnectionPolicy', 'lockPolicy')[normalize-space(.)], $default/@lock-policy)[1],
                              ('UNSYNC', 'LOCKED', 'LOCK_FREE'), 'lock policy', $id)}"
-        init="{fp:boolean((fp:tag($e, 'ConnectionPolicy', 'init')[normalize-space(.)], 'false')[1], 'init', $id)}"
-        pull="{fp:boolean((fp:tag($e, 'ConnectionPolicy', 'pull')[normalize-space(.)], 'false')[1], 'pull', $id)}"
+        init="{fp:boolean((fp:tag($e, 'ConnectionPolicy', 'init')[normalize-space(.)], $default/@init)[1], 'init', $id)}"
+        pull="{fp:boolean((fp:tag($e, 'ConnectionPolicy', 'pull')[normalize-space(.)], $default/@pull)[1], 'pull', $id)}"
         topic="{fp:tag($e, 'ConnectionPolicy', 'topic')}"
         source="{if ($e/self::pim:connector) then 'connector'
                  else if ($e/self::pim:port) then 'port' else 'interface'}"
