@@ -142,7 +142,7 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
         started = time.perf_counter()
         try:
             # every stage but the last keeps its tree for the next one
-            text, tree_ = engine.run(step.stylesheet, params, previous, keep_tree=index < len(chain) - 1)
+            text, handed = engine.run(step.stylesheet, params, previous, keep_tree=index < len(chain) - 1)
         except TransformError as exc:
             failure = _transform_failure(exc, step, locator)
             failure.diagnostics[:0] = result.warnings
@@ -169,7 +169,7 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
                                time.perf_counter() - validated))
         result.stages[step.name] = text
         result.tree = tree
-        previous = tree_ if tree_ is not None else text
+        previous = handed if handed is not None else text
     return result
 
 
