@@ -10,9 +10,12 @@
   Params:  none.
   Public:  f:indent($doc) indents a document; mode m:indent (template
            parameter margin: a newline and the indentation of the node's
-           own line) indents one node at that margin, for a stage that
-           writes its result indented in one pass instead of building it
-           and then copying it through f:indent.
+           own line) indents one node at that margin; template
+           t:indented-content (parameters children, margin) writes the
+           content of an element at that margin, its children indented
+           one level deeper. The last two are for a stage that writes its
+           result indented in one pass instead of building it and then
+           copying it through f:indent.
   Errors:  none.
 
   Why: serializers indent differently (Saxon 10+ wraps long attribute
@@ -27,6 +30,7 @@
     xmlns:xs="http://www.w3.org/2001/XMLSchema"
     xmlns:f="urn:robomda:xslt:function"
     xmlns:m="urn:robomda:xslt:mode"
+    xmlns:t="urn:robomda:xslt:template"
     exclude-result-prefixes="#all">
 
   <xsl:mode name="m:indent" on-no-match="shallow-copy"/>
@@ -49,17 +53,30 @@
   <!-- element-only content: one child per line -->
   <xsl:template match="*[*][not(text()[normalize-space()])]" mode="m:indent" as="element()">
     <xsl:param name="margin" as="xs:string"/>
-    <xsl:variable name="inner" as="xs:string" select="$margin || '  '"/>
     <xsl:copy>
       <xsl:copy-of select="@*"/>
-      <xsl:for-each select="* | comment() | processing-instruction()">
-        <xsl:value-of select="$inner"/>
-        <xsl:apply-templates select="." mode="m:indent">
-          <xsl:with-param name="margin" select="$inner"/>
-        </xsl:apply-templates>
-      </xsl:for-each>
-      <xsl:value-of select="$margin"/>
+      <xsl:call-template name="t:indented-content">
+        <xsl:with-param name="children" select="* | comment() | processing-instruction()"/>
+        <xsl:with-param name="margin" select="$margin"/>
+      </xsl:call-template>
     </xsl:copy>
+  </xsl:template>
+
+  <!-- the content of an element at $margin: each of $children on a line of
+       its own, indented one level deeper, then the line of the end tag -->
+  <xsl:template name="t:indented-content" as="node()*">
+    <xsl:param name="children" as="node()*"/>
+    <xsl:param name="margin" as="xs:string"/>
+    <xsl:variable name="inner" as="xs:string" select="$margin || '  '"/>
+    <xsl:for-each select="$children">
+      <xsl:value-of select="$inner"/>
+      <xsl:apply-templates select="." mode="m:indent">
+        <xsl:with-param name="margin" select="$inner"/>
+      </xsl:apply-templates>
+    </xsl:for-each>
+    <xsl:if test="exists($children)">
+      <xsl:value-of select="$margin"/>
+    </xsl:if>
   </xsl:template>
 
   <!-- anything else (empty, text-only or mixed content): as it is -->

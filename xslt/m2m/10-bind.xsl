@@ -91,6 +91,7 @@
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
     xmlns:m="urn:robomda:xslt:mode"
+    xmlns:t="urn:robomda:xslt:template"
     xmlns:mp="urn:robomda:xslt:mode:private"
     exclude-result-prefixes="#all">
 
@@ -172,13 +173,10 @@
     </xsl:variable>
     <xsl:copy>
       <xsl:copy-of select="@*"/>
-      <xsl:for-each select="(* except pim:binding) | comment() | processing-instruction(), $binding/pim:binding">
-        <xsl:text>&#10;  </xsl:text>
-        <xsl:apply-templates select="." mode="m:indent">
-          <xsl:with-param name="margin" select="'&#10;  '"/>
-        </xsl:apply-templates>
-      </xsl:for-each>
-      <xsl:text>&#10;</xsl:text>
+      <xsl:call-template name="t:indented-content">
+        <xsl:with-param name="children" select="(* except pim:binding) | comment() | processing-instruction(), $binding/pim:binding"/>
+        <xsl:with-param name="margin" select="'&#10;'"/>
+      </xsl:call-template>
     </xsl:copy>
   </xsl:template>
 

@@ -71,6 +71,7 @@
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
     xmlns:m="urn:robomda:xslt:mode"
+    xmlns:t="urn:robomda:xslt:template"
     xmlns:mp="urn:robomda:xslt:mode:private"
     exclude-result-prefixes="#all">
 
@@ -206,15 +207,10 @@
           <xsl:sequence select="fp:instance(., $nodes, $host-keys)"/>
         </xsl:for-each>
       </xsl:variable>
-      <xsl:for-each select="$children">
-        <xsl:text>&#10;  </xsl:text>
-        <xsl:apply-templates select="." mode="m:indent">
-          <xsl:with-param name="margin" select="'&#10;  '"/>
-        </xsl:apply-templates>
-      </xsl:for-each>
-      <xsl:if test="exists($children)">
-        <xsl:text>&#10;</xsl:text>
-      </xsl:if>
+      <xsl:call-template name="t:indented-content">
+        <xsl:with-param name="children" select="$children"/>
+        <xsl:with-param name="margin" select="'&#10;'"/>
+      </xsl:call-template>
     </r:package>
   </xsl:template>
 

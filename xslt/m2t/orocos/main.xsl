@@ -12,7 +12,8 @@
              src/components.cpp, CMakeLists.txt, package.xml
              deploy/<model>.xml, deploy/<model>.ops, deploy/<model>.lua
            One fs:file a line, as f:indent (common/indent.xsl) would indent
-           the file set, written so directly (no copy of all the text).
+           the file set, written so directly (t:indented-content: no copy of
+           all the text).
   Params:  model-dir-from-output (xslt/m2t/orocos/params.xsl).
   Errors:  none (the PSM is complete and valid).
   Modules: orocos-text.xsl (text helpers), orocos-cpp.xsl, orocos-build.xsl,
@@ -26,8 +27,10 @@
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
     xmlns:m="urn:robomda:xslt:mode"
+    xmlns:t="urn:robomda:xslt:template"
     exclude-result-prefixes="#all">
 
+  <xsl:include href="../../common/indent.xsl"/>
   <xsl:include href="params.xsl"/>
   <xsl:include href="orocos-text.xsl"/>
   <xsl:include href="orocos-cpp.xsl"/>
@@ -38,8 +41,8 @@
   <xsl:mode name="m:emit-files" on-no-match="fail"/>
 
   <!-- the file set comes out as f:indent (common/indent.xsl) would indent
-       it (one fs:file a line; their text as it is), written so directly:
-       f:indent would copy all the text once more -->
+       it (one fs:file a line; their text as it is), written so directly with
+       t:indented-content: f:indent would copy all the text once more -->
   <xsl:template match="/" as="document-node()">
     <xsl:document>
       <xsl:apply-templates select="o:deployment" mode="m:emit-files"/>
@@ -65,13 +68,10 @@
       <xsl:sequence select="fp:file(concat('deploy/', @deploy-name, '.lua'), 'generated', $fp:deploy-xsl, fp:deploy-lua(.))"/>
     </xsl:variable>
     <fs:files target="orocos">
-      <xsl:for-each select="$files">
-        <xsl:text>&#10;  </xsl:text>
-        <xsl:sequence select="."/>
-      </xsl:for-each>
-      <xsl:if test="exists($files)">
-        <xsl:text>&#10;</xsl:text>
-      </xsl:if>
+      <xsl:call-template name="t:indented-content">
+        <xsl:with-param name="children" select="$files"/>
+        <xsl:with-param name="margin" select="'&#10;'"/>
+      </xsl:call-template>
     </fs:files>
   </xsl:template>
 

@@ -11,7 +11,8 @@
              launch/<model>.launch, launch/<model>_<host>.launch
              config/<instance>.yaml
            One fs:file a line, as f:indent (common/indent.xsl) would indent
-           the file set, written so directly (no copy of all the text).
+           the file set, written so directly (t:indented-content: no copy of
+           all the text).
   Params:  model-dir-from-output (xslt/m2t/ros-common/ros-text.xsl).
   Errors:  none (the PSM is complete and valid).
   Modules: ../ros-common/ros-text.xsl, ros1-cpp.xsl, ros1-build.xsl, ros1-launch.xsl.
@@ -24,8 +25,10 @@
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
     xmlns:m="urn:robomda:xslt:mode"
+    xmlns:t="urn:robomda:xslt:template"
     exclude-result-prefixes="#all">
 
+  <xsl:include href="../../common/indent.xsl"/>
   <xsl:include href="../../common/naming.xsl"/>
   <xsl:include href="../ros-common/ros-text.xsl"/>
   <xsl:include href="ros1-cpp.xsl"/>
@@ -40,8 +43,8 @@
   <xsl:variable name="fp:launch-xsl" as="xs:string" select="'m2t/ros1/ros1-launch.xsl'"/>
 
   <!-- the file set comes out as f:indent (common/indent.xsl) would indent
-       it (one fs:file a line; their text as it is), written so directly:
-       f:indent would copy all the text once more -->
+       it (one fs:file a line; their text as it is), written so directly with
+       t:indented-content: f:indent would copy all the text once more -->
   <xsl:template match="/" as="document-node()">
     <xsl:document>
       <xsl:apply-templates select="r:package" mode="m:emit-files"/>
@@ -72,13 +75,10 @@
       </xsl:for-each>
     </xsl:variable>
     <fs:files target="ros1">
-      <xsl:for-each select="$files">
-        <xsl:text>&#10;  </xsl:text>
-        <xsl:sequence select="."/>
-      </xsl:for-each>
-      <xsl:if test="exists($files)">
-        <xsl:text>&#10;</xsl:text>
-      </xsl:if>
+      <xsl:call-template name="t:indented-content">
+        <xsl:with-param name="children" select="$files"/>
+        <xsl:with-param name="margin" select="'&#10;'"/>
+      </xsl:call-template>
     </fs:files>
   </xsl:template>
 </xsl:stylesheet>
