@@ -72,7 +72,6 @@
     xmlns:fp="urn:robomda:xslt:function:private"
     xmlns:m="urn:robomda:xslt:mode"
     xmlns:t="urn:robomda:xslt:template"
-    xmlns:mp="urn:robomda:xslt:mode:private"
     exclude-result-prefixes="#all">
 
   <xsl:include href="../common/errors.xsl"/>
