@@ -3,11 +3,14 @@
   xslt/common/profile.xsl - reading the robomda profile's stereotypes in a PIM.
 
   Reads:   pim:stereotype elements of urn:robomda:pim:1 (schemas/pim/1).
-  Writes:  nothing (a function module for the model-to-model stages).
+  Writes:  nothing (a function module for the model-to-model stages; the
+           import uses f:is-robomda-profile on the XMI's stereotype
+           applications).
   Params:  none.  Errors: none.
 
   The robomda profile (docs/profile.md) is recognised by its short name
-  (the XML prefix, whatever URI a tool gave it) or by its namespace URI.
+  (the XML prefix, whatever URI a tool gave it) or by its namespace URI
+  (f:is-robomda-profile, the one place that says so).
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -18,12 +21,19 @@
 
   <xsl:variable name="f:profile-uri" as="xs:string" select="'http://robomda.org/profile/robomda/1'"/>
 
+  <!-- true when a stereotype of the profile with XML prefix $prefix and
+       namespace URI $uri is a robomda stereotype -->
+  <xsl:function name="f:is-robomda-profile" as="xs:boolean">
+    <xsl:param name="prefix" as="xs:string"/>
+    <xsl:param name="uri" as="xs:string"/>
+    <xsl:sequence select="lower-case($prefix) eq 'robomda' or $uri eq $f:profile-uri"/>
+  </xsl:function>
+
   <!-- the robomda stereotype $name applied to $e (the first, if applied twice) -->
   <xsl:function name="f:stereotype" as="element(pim:stereotype)?">
     <xsl:param name="e" as="element()?"/>
     <xsl:param name="name" as="xs:string"/>
-    <xsl:sequence select="$e/pim:stereotype[@name eq $name]
-        [lower-case(@profile) eq 'robomda' or @profile-uri eq $f:profile-uri][1]"/>
+    <xsl:sequence select="$e/pim:stereotype[@name eq $name][f:is-robomda-profile(@profile, @profile-uri)][1]"/>
   </xsl:function>
 
   <!-- a default value as written in a model, without one pair of enclosing

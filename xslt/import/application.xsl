@@ -271,8 +271,7 @@
         and (lower-case(normalize-space($d/@name)) eq 'startafter'
              or exists(key('fp:stereotype-by-base', fp:id($d), root($d))
                        [local-name() eq 'StartAfter']
-                       [lower-case(string(prefix-from-QName(node-name(.)))) eq 'robomda'
-                        or namespace-uri() eq $f:profile-uri]))"/>
+                       [f:is-robomda-profile(string(prefix-from-QName(node-name(.))), namespace-uri())]))"/>
   </xsl:function>
 
   <xsl:template match="*[@x:type eq 'Dependency']" mode="mp:packageable"
@@ -364,15 +363,15 @@
       <xsl:for-each select="ownedParameter">
         <xsl:variable name="typed" as="attribute()*" select="fp:typed(., $href-types)"/>
         <xsl:if test="not(@direction = 'return' and $typed[name() eq 'primitive'] = 'void')">
-        <pim:parameter id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
-          <xsl:sequence select="$typed"/>
-          <xsl:attribute name="direction"
-              select="if (@direction = ('in', 'out', 'inout', 'return')) then string(@direction) else 'in'"/>
-          <xsl:for-each select="fp:default(.)">
-            <xsl:attribute name="default" select="."/>
-          </xsl:for-each>
-          <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
-        </pim:parameter>
+          <pim:parameter id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
+            <xsl:sequence select="$typed"/>
+            <xsl:attribute name="direction"
+                select="if (@direction = ('in', 'out', 'inout', 'return')) then string(@direction) else 'in'"/>
+            <xsl:for-each select="fp:default(.)">
+              <xsl:attribute name="default" select="."/>
+            </xsl:for-each>
+            <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
+          </pim:parameter>
         </xsl:if>
       </xsl:for-each>
     </pim:operation>
