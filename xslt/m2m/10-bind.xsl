@@ -7,7 +7,7 @@
   Writes:  the same PIM with pim:binding appended (schemas/pim/1/binding.xsd),
            indented as f:indent (common/indent.xsl) indents it; a model with
            element-only content is indented in the same pass, through
-           f:indent's own rules (mode m:indent), with no copy of it first.
+           f:indent's own rules (t:indented-content), with no copy of it first.
   Params:  none.
 
   What it resolves (docs/profile.md: stereotypes of profile "robomda" first,
@@ -126,7 +126,7 @@
   <!-- ============================================================ entry -->
   <!-- The usual input (a pim:model with element-only content) is written
        in one pass: the model's children go straight through f:indent's
-       rules (mode m:indent of common/indent.xsl), with the new binding
+       rules (t:indented-content of common/indent.xsl), with the new binding
        last, which gives the bytes f:indent of the bound copy would give
        without building that copy of the whole model first. Any other input
        takes the general way. -->

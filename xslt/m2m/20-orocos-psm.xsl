@@ -5,7 +5,7 @@
   Reads:   a bound PIM, urn:robomda:pim:1 with pim:binding (xslt/m2m/10-bind.xsl).
   Writes:  urn:robomda:psm-orocos:1 (schemas/psm-orocos/1/psm-orocos.xsd),
            indented as f:indent (common/indent.xsl) indents it, through its
-           rules (mode m:indent) in the same pass.
+           rules (t:indented-content) in the same pass.
   Data:    xslt/m2m/orocos-types.xml (primitive kind -> C++ / cpf XML type, sample).
   Params:  package-name (see below).
 
@@ -103,8 +103,8 @@
 
   <!-- ================================================================ entry -->
   <!-- the result is indented as f:indent (common/indent.xsl) would indent
-       it, in one pass: o:deployment puts each child through f:indent's
-       rules (mode m:indent), so the task contexts, made once in a tree of
+       it, in one pass: o:deployment puts its children through f:indent's
+       rules (t:indented-content), so the task contexts, made once in a tree of
        their own, are not copied into an unindented result first -->
   <xsl:template match="/" as="document-node()">
     <xsl:document>

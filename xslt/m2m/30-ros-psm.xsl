@@ -5,7 +5,7 @@
   Reads:   a bound PIM, urn:robomda:pim:1 with pim:binding (xslt/m2m/10-bind.xsl).
   Writes:  urn:robomda:psm-ros:1 (schemas/psm-ros/1/psm-ros.xsd),
            indented as f:indent (common/indent.xsl) indents it, through its
-           rules (mode m:indent) in the same pass.
+           rules (t:indented-content) in the same pass.
   Data:    xslt/m2m/ros-types.xml (type -> C++ type, message, parameter type),
            overridden entry by entry by the map the type-map parameter names.
   Params:  ros-version ('1' or '2'), package-name, type-map (see below).
@@ -115,8 +115,8 @@
       <xsl:sequence select="f:fail('ROS006', '', 'parameter ros-version is ''' || $ros-version || ''': use ''1'' or ''2''')"/>
     </xsl:if>
     <!-- indented as f:indent (common/indent.xsl) would indent it, in one
-         pass: r:package puts each child through f:indent's rules (mode
-         m:indent), so the nodes, made once in a tree of their own, are
+         pass: r:package puts its children through f:indent's rules
+         (t:indented-content), so the nodes, made once in a tree of their own, are
          not copied into an unindented result first -->
     <xsl:document>
       <xsl:apply-templates select="pim:model" mode="m:to-psm"/>
