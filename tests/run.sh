@@ -32,13 +32,16 @@ python3 -c 'import venv, ensurepip' >/dev/null 2>&1 || need+=(python3-venv)
 if [ "${#need[@]}" -gt 0 ]; then
   if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
     echo "tests/run.sh: installing Debian packages: ${need[*]}"
-    apt-get update -qq
-    if ! DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${need[@]}" >/dev/null; then
+    # another apt/dpkg run (an unattended upgrade, a toolchain build) holds the
+    # lock for a while: wait for it instead of skipping the real-tool tests
+    apt=(apt-get -o DPkg::Lock::Timeout=600)
+    "${apt[@]}" update -qq
+    if ! DEBIAN_FRONTEND=noninteractive "${apt[@]}" install -y -qq "${need[@]}" >/dev/null; then
       # one package that cannot be installed (e.g. npm beside a nodejs that
       # bundles it) must not keep the others out; what is still missing makes
       # its tests skip, or fail under CI, naming it
       for pkg in "${need[@]}"; do
-        DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "$pkg" >/dev/null \
+        DEBIAN_FRONTEND=noninteractive "${apt[@]}" install -y -qq "$pkg" >/dev/null \
           || echo "tests/run.sh: could not install $pkg"
       done
     fi
