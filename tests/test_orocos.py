@@ -215,7 +215,11 @@ def test_text_common(name):
     text, root = _deploy_xml(files, psm.get("deploy-name"))
     declared = {t.get("type-name"): {p.get("name") for p in t.iter(O + "property")} for t in psm.iter(O + "task-context")}
     conn_names = [s.get("name") for s in root.findall("struct") if s.get("type") == "ConnPolicy"]
-    assert root.find("simple[@name='Import']/value").text == pkg
+    # LoadLibrary, not Import: RTT's import("pkg") takes a folder named pkg in the working
+    # directory instead of RTT_COMPONENT_PATH (issue 17)
+    assert root.find("simple[@name='Import']") is None
+    assert root.find("simple[@name='LoadLibrary']/value").text == f"{pkg}/{pkg}"
+    assert 'type="short"' not in text  # RTT 2.10 logs two deprecation warnings per short
     port_uses: dict[str, int] = {}
     for comp in root.findall("struct"):
         if comp.get("type") == "ConnPolicy":
@@ -244,17 +248,46 @@ def test_text_common(name):
         assert f"ORO_LIST_COMPONENT_TYPE({t.get('type-name')})" in comps
     pkgxml = ET.fromstring(files["package.xml"].text.encode())
     assert pkgxml.get("format") == "3" and pkgxml.find("name").text == pkg
-    ops = files[f"deploy/{psm.get('deploy-name')}.ops"].text
-    assert f'import("{pkg}")' in ops and "var ConnPolicy" in ops and ".start()" in ops
-    lua = files[f"deploy/{psm.get('deploy-name')}.lua"].text
-    assert "os.exit(ok and 0 or 1)" in lua and '"Running"' in lua
+    name = psm.get("deploy-name")
+    ops = files[f"deploy/{name}.ops"].text
+    assert f'loadLibrary("{pkg}/{pkg}")' in ops and "import(" not in ops and "var ConnPolicy" in ops
+    _assert_ops_comments_alone(ops)
+    _assert_ops_lifecycle_checked(ops, [i.get("name") for i in psm.iter(O + "instance")])
+    lua = files[f"deploy/{name}.lua"].text
+    # a deployment: it keeps running (no stop, no unload, no exit) and fails loudly
+    assert f'depl:loadLibrary("{pkg}/{pkg}")' in lua
+    assert "os.exit" not in lua and ":stop()" not in lua and "unloadComponent" not in lua and "rtt.sleep" not in lua
+    assert 'rtt.logl("Error"' in lua and "error(" in lua
+    check = files[f"deploy/{name}-check.lua"].text
+    assert f'dofile, here .. "/{name}.lua"' in check
+    assert "os.exit(ok and 0 or 1)" in check and '"Running"' in check and "getPeriod()" in check
+
+
+def _assert_ops_comments_alone(ops: str) -> None:
+    """In Orocos scripting a comment after a statement swallows its line end: comments stand alone."""
+    for line in ops.splitlines():
+        code = re.sub(r'"(\\.|[^"\\])*"', '""', line)
+        if not code.lstrip().startswith("//"):
+            assert "//" not in code, line
+
+
+def _assert_ops_lifecycle_checked(ops: str, names: list[str]) -> None:
+    """Every configure() / start() of the .ops is tested and logs an [ ERROR ] line when it fails."""
+    assert 'require("print")' in ops
+    for n in names:
+        assert f"if ( !{n}.configure() ) then {{" in ops
+        assert f"if ( !{n}.start() ) then print.log(Error, " in ops
+    bare = [l for l in ops.splitlines()
+            if re.search(r"\.(configure|start)\(\)", re.sub(r'"[^"]*"', '""', l)) and "if ( !" not in l]
+    assert not bare, bare
 
 
 def test_text_wrapper_cpp():
     _, _, files = case("composite")
     hpp = files["include/headlamp_assembly/Camera.hpp"].text
     assert "class Camera : public RTT::TaskContext, public ::atomic::GuppyF080C" in hpp
-    assert "#include <guppy/GuppyF080C.hpp>" in hpp and "RTT::OutputPort<int> port_image;" in hpp
+    # quotes: the installed header finds the atomic header installed beside it
+    assert '#include "guppy/GuppyF080C.hpp"' in hpp and "RTT::OutputPort<int> port_image;" in hpp
     cpp = files["src/Camera.cpp"].text
     assert 'this->ports()->addPort(port_image).doc("Vision value");' in cpp
     assert "port_image.setDataSample(0);" in cpp
@@ -293,7 +326,12 @@ def test_text_deploy_values():
     assert vis.find("struct[@name='Properties']/simple[@name='debug']/value").text == "1"
     ops = files["deploy/headlamp_assembly.ops"].text
     assert 'setActivity("guppy", 0.003, 50, ORO_SCHED_RT)' in ops
-    assert 'setActivityOnCPU("vision", 0.0, 20, ORO_SCHED_RT, 1)' in ops
+    assert ('setActivity("vision", 0.0, 20, ORO_SCHED_RT)\n// CpuAffinity mask 2 (CPU 1)\n'
+            'if ( !vision.setCpuAffinity(2) ) then print.log(Error, ') in ops
+    lua = files["deploy/headlamp_assembly.lua"].text
+    assert 'check(comps["vision"]:setCpuAffinity(2), "vision.setCpuAffinity(2)")' in lua
+    check = files["deploy/headlamp_assembly-check.lua"].text
+    assert 'comps["vision"]:getCpuAffinity() == 2' in check
     assert 'connect("guppy.image", "controller.vision", cp_IVisionValueConn)' in ops
     assert 'guppy.ip = "192.168.0.10"' in ops
 
@@ -332,3 +370,30 @@ def test_fixture_chain(case_name):
     # every instance is periodic: input ports must not also trigger updateHook
     sources = "".join(node.text for path, node in files.items() if path.endswith(".cpp"))
     assert "addEventPort" not in sources and "this->ports()->addPort(port_" in sources
+
+
+def test_text_multi_cpu_affinity_reaches_every_file():
+    """A mask of several CPUs is set in XML, .ops and Lua alike (issue 17: it was XML only)."""
+    bound = run("m2m/10-bind.xsl", (DATA / "composite.pim.xml").read_text())
+    psm = run("m2m/20-orocos-psm.xsl", bound, **{"package-name": ""})
+    psm = psm.replace('cpu-affinity="2"', 'cpu-affinity="6"')
+    assert 'cpu-affinity="6"' in psm
+    files = {f.get("path"): f.text for f in ET.fromstring(run("m2t/orocos/main.xsl", psm, **{"model-dir-from-output": "."})).iter(FS + "file")}
+    root = ET.fromstring(files["deploy/headlamp_assembly.xml"].encode())
+    assert root.find("struct[@name='vision']/struct[@name='Activity']/simple[@name='CpuAffinity']/value").text == "6"
+    ops = files["deploy/headlamp_assembly.ops"]
+    assert "// CpuAffinity mask 6 (CPUs 1, 2)\nif ( !vision.setCpuAffinity(6) ) then print.log(Error, " in ops
+    _assert_ops_comments_alone(ops)
+    assert 'check(comps["vision"]:setCpuAffinity(6), "vision.setCpuAffinity(6)")' in files["deploy/headlamp_assembly.lua"]
+    assert 'comps["vision"]:getCpuAffinity() == 6' in files["deploy/headlamp_assembly-check.lua"]
+
+
+def test_text_build_defaults_and_relocation():
+    """Release unless a build type is set; a moved package names the -D option; headers usable downstream."""
+    _, psm, files = case("composite")
+    cmake = files["CMakeLists.txt"].text
+    assert "set(CMAKE_BUILD_TYPE Release CACHE STRING" in cmake
+    for lib in psm.iter(O + "library"):
+        var = lib.get("cmake-var")
+        assert f"give its place with -D{var}=DIR" in cmake and "message(WARNING" not in cmake
+        assert f'install(DIRECTORY "${{{var}}}/{lib.get("include-dir")}/" DESTINATION include/orocos/{psm.get("package")}' in cmake

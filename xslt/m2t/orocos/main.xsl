@@ -10,7 +10,8 @@
              include/<pkg>/<Class>.hpp, src/<Class>.cpp (mode user) when the
              component has no realizing class
              src/components.cpp, CMakeLists.txt, package.xml
-             deploy/<model>.xml, deploy/<model>.ops, deploy/<model>.lua
+             deploy/<model>.xml, deploy/<model>.ops, deploy/<model>.lua,
+             deploy/<model>-check.lua
            One fs:file a line, as f:indent (common/indent.xsl) would indent
            the file set, written so directly (t:indented-content: no copy of
            all the text).
@@ -66,6 +67,7 @@
       <xsl:sequence select="fp:file(concat('deploy/', @deploy-name, '.xml'), 'generated', $fp:deploy-xsl, fp:deploy-xml(.))"/>
       <xsl:sequence select="fp:file(concat('deploy/', @deploy-name, '.ops'), 'generated', $fp:deploy-xsl, fp:deploy-ops(.))"/>
       <xsl:sequence select="fp:file(concat('deploy/', @deploy-name, '.lua'), 'generated', $fp:deploy-xsl, fp:deploy-lua(.))"/>
+      <xsl:sequence select="fp:file(concat('deploy/', @deploy-name, '-check.lua'), 'generated', $fp:deploy-xsl, fp:deploy-check-lua(.))"/>
     </xsl:variable>
     <fs:files target="orocos">
       <xsl:call-template name="t:indented-content">

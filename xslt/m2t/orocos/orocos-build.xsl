@@ -12,7 +12,14 @@
   When that directory has a CMakeLists.txt it is added with
   add_subdirectory(DIR <lib>-build) and its target linked; otherwise a
   prebuilt library named after the target is searched in DIR, DIR/lib and
-  DIR/build. Its include dir and DIR itself are include directories.
+  DIR/build. Its include dir and DIR itself are include directories. A
+  package moved away from the model (a workspace, a release) stops at
+  configure time with a FATAL_ERROR that names the -D option to set,
+  never with an unexplained NOTFOUND.
+  The headers of the library's include dir are installed beside the
+  generated headers (include/orocos/<pkg>/), which include them with
+  quotes, so a downstream package that uses the installed headers builds.
+  Without a build type the package builds as Release.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -48,6 +55,11 @@
         'cmake_minimum_required(VERSION 3.5)',
         concat('project(', $pkg, ')'),
         '',
+        '# Components run in real time: build optimised unless a build type is given.',
+        'if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)',
+        '  set(CMAKE_BUILD_TYPE Release CACHE STRING &quot;Build type (Release unless set)&quot; FORCE)',
+        'endif()',
+        '',
         '# RTT 2.10 headers do not compile as C++20: pin the standard.',
         'set(CMAKE_CXX_STANDARD 14)',
         'set(CMAKE_CXX_STANDARD_REQUIRED ON)',
@@ -67,6 +79,7 @@
         $d/o:library ! fp:library-link(., $pkg),
         '',
         concat('orocos_install_headers(', string-join($headers, ' '), ')'),
+        $d/o:library ! fp:library-install-headers(., $pkg),
         'orocos_generate_package()'))"/>
   </xsl:function>
 
@@ -78,6 +91,10 @@
         concat('# atomic-code library ''', $lib/@name, ''' (artifact path ''', $lib/@path, ''', CMake target ', $lib/@target, ')'),
         concat('set(', $lib/@cmake-var, ' &quot;', fp:library-dir($lib), '&quot; CACHE PATH'),
         concat('    &quot;Directory of the atomic-code library ', $lib/@name, '&quot;)'),
+        concat('if(NOT IS_DIRECTORY &quot;', $v, '&quot;)'),
+        concat('  message(FATAL_ERROR &quot;atomic-code library ', $lib/@name, ': no directory ', $v,
+               '; give its place with -D', $lib/@cmake-var, '=DIR&quot;)'),
+        'endif()',
         concat('if(EXISTS &quot;', $v, '/CMakeLists.txt&quot; AND NOT TARGET ', $lib/@target, ')'),
         concat('  add_subdirectory(&quot;', $v, '&quot; ', $lib/@build-dir, ')'),
         'endif()',
@@ -98,9 +115,18 @@
         concat('  if(', $found, ')'),
         concat('    target_link_libraries(', $pkg, ' ${', $found, '})'),
         '  else()',
-        concat('    message(WARNING &quot;atomic-code library ', $lib/@name, ' (target ', $lib/@target, ') not found in ', $v, '&quot;)'),
+        concat('    message(FATAL_ERROR &quot;atomic-code library ', $lib/@name, ': neither a CMakeLists.txt nor a built library ',
+               $lib/@target, ' in ', $v, '; give its place with -D', $lib/@cmake-var, '=DIR&quot;)'),
         '  endif()',
         'endif()'"/>
+  </xsl:function>
+
+  <!-- the atomic headers the installed generated headers include -->
+  <xsl:function name="fp:library-install-headers" as="xs:string">
+    <xsl:param name="lib" as="element(o:library)"/>
+    <xsl:param name="pkg" as="xs:string"/>
+    <xsl:sequence select="concat('install(DIRECTORY &quot;${', $lib/@cmake-var, '}/', $lib/@include-dir, '/&quot; DESTINATION include/orocos/', $pkg,
+        ' FILES_MATCHING PATTERN &quot;*.h&quot; PATTERN &quot;*.hh&quot; PATTERN &quot;*.hpp&quot; PATTERN &quot;*.hxx&quot;)')"/>
   </xsl:function>
 
   <xsl:function name="fp:package-xml" as="xs:string">

@@ -112,7 +112,7 @@
         concat('#define ', $guard),
         '',
         fp:includes($tc),
-        if ($wrapper) then concat('#include &lt;', $tc/o:realizing-class/@header, '&gt;') else (),
+        if ($wrapper) then concat('#include &quot;', $tc/o:realizing-class/@header, '&quot;') else (),
         '',
         concat('namespace ', $tc/@namespace, ' {'),
         '',

@@ -4,19 +4,37 @@
 
   Reads:   o:deployment of urn:robomda:psm-orocos:1.
   Writes:  strings (file contents), wrapped into fs:file by main.xsl:
-           deploy/<model>.xml  OCL deployer XML (cpf), format of
-                               /work/shared/orocos-reference/deploy/deploy.xml
-           deploy/<model>.ops  Orocos Program Script for `deployer -s`
-           deploy/<model>.lua  rttlua script that checks every step and
-                               exits 0 / 1 with a verdict
+           deploy/<model>.xml        OCL deployer XML (cpf), format of
+                                     ../shared/orocos-reference/deploy/deploy.xml
+           deploy/<model>.ops        Orocos Program Script for `deployer -s`
+           deploy/<model>.lua        the same deployment for `deployer -s` or
+                                     `rttlua -i`: it keeps running
+           deploy/<model>-check.lua  runs <model>.lua for a second, reads the
+                                     modelled values back, stops everything
+                                     and exits 0 / 1 with a verdict
   Params:  none.  Errors: none.
 
   Choices
+  - The component library is loaded with LoadLibrary / loadLibrary
+    ("<pkg>/<pkg>"), which RTT looks up in RTT_COMPONENT_PATH only
+    (<dir>/<target>/<pkg>/lib<pkg>-<target>.so). Import / import("<pkg>")
+    would take a folder named <pkg> in the working directory instead of the
+    component path (ComponentLoader::importInstalledPackage), so running
+    next to the generated package's own folder failed.
   - Activity type "Activity" for every component (Period 0 = non-periodic),
     with Period, Priority and Scheduler always written (the deployer default
-    scheduler is ORO_SCHED_RT); CpuAffinity (a CPU mask) only when non-zero.
-    In .ops / Lua a single-CPU mask uses setActivityOnCPU (which takes a CPU
-    number); a multi-CPU mask can only be expressed in the XML (comment).
+    scheduler is ORO_SCHED_RT); CpuAffinity (a CPU mask) only when non-zero:
+    the XML's CpuAffinity, and in .ops / Lua setActivity followed by the
+    component's setCpuAffinity(mask) (RTT 2.10), whatever CPUs the mask has.
+  - Integers (ConnPolicy fields, Priority) are written as "long": RTT 2.10
+    logs two deprecation warnings for every "short".
+  - Every lifecycle call is checked: .ops logs an [ ERROR ] line through
+    OCL's print service for each configure() / start() / setCpuAffinity()
+    that returns false and starts nothing when a configure failed; Lua logs
+    the same and raises an error at the end (the deployer then exits
+    non-zero, as it does for a failing XML file).
+  - Comments in .ops stand on their own line: after a statement, a comment
+    swallows its line end (a syntax error for the whole script).
   - One ConnPolicy struct per connection point; Ports map each port to it.
     The PSM keeps only connection points with a writer and a reader, so no
     name is used by a single port. In .ops / Lua each writer is connected
@@ -45,17 +63,26 @@
     <xsl:sequence select="if (matches($p, '[.eE]')) then $p else concat($p, '.0')"/>
   </xsl:function>
 
-  <!-- the one-bit masks 2^0 ... 2^63, computed once -->
+  <!-- the one-bit masks 2^0 ... 2^63, computed once: bit n of a mask is ($mask idiv $fp:one-bit-masks[n + 1]) mod 2 -->
   <xsl:variable name="fp:one-bit-masks" as="xs:integer+" select="(0 to 63) ! fp:pow2(.)"/>
 
-  <!-- the CPU number of a one-bit mask, else () -->
-  <xsl:function name="fp:cpu-number" as="xs:integer?">
-    <xsl:param name="mask" as="xs:integer"/>
-    <xsl:sequence select="if ($mask le 0) then () else index-of($fp:one-bit-masks, $mask)[1] - 1"/>
-  </xsl:function>
   <xsl:function name="fp:pow2" as="xs:integer">
     <xsl:param name="n" as="xs:integer"/>
     <xsl:sequence select="if ($n eq 0) then 1 else 2 * fp:pow2($n - 1)"/>
+  </xsl:function>
+
+  <!-- what LoadLibrary / loadLibrary takes: "<pkg>/<pkg>" -->
+  <xsl:function name="fp:library" as="xs:string">
+    <xsl:param name="d" as="element(o:deployment)"/>
+    <xsl:sequence select="concat($d/@package, '/', $d/@package)"/>
+  </xsl:function>
+
+  <!-- "CpuAffinity mask 6 (CPUs 1, 2)" -->
+  <xsl:function name="fp:affinity-note" as="xs:string">
+    <xsl:param name="mask" as="xs:integer"/>
+    <xsl:variable name="cpus" as="xs:integer*" select="for $n in 0 to 63 return $n[($mask idiv $fp:one-bit-masks[$n + 1]) mod 2 eq 1]"/>
+    <xsl:sequence select="concat('CpuAffinity mask ', $mask, ' (CPU', if (count($cpus) gt 1) then 's ' else ' ',
+                                 string-join($cpus ! string(.), ', '), ')')"/>
   </xsl:function>
 
   <xsl:function name="fp:simple" as="xs:string">
@@ -92,16 +119,16 @@
         '--&gt;',
         '&lt;!DOCTYPE properties SYSTEM &quot;cpf.dtd&quot;&gt;',
         '&lt;properties&gt;',
-        concat('  &lt;!-- the component package (CMake project ', $d/@package, ') --&gt;'),
-        concat('  ', fp:simple('Import', 'string', $d/@package)),
+        concat('  &lt;!-- the component library of package ', $d/@package, ', found through RTT_COMPONENT_PATH --&gt;'),
+        concat('  ', fp:simple('LoadLibrary', 'string', fp:library($d))),
         $d/o:connection ! (
           '',
           concat('  &lt;!-- connection point ', @name, ': ', string-join(o:writer ! (concat(@instance, '.', @port)), ', '),
              ' -&gt; ', string-join(o:reader ! (concat(@instance, '.', @port)), ', '), ' --&gt;'),
           concat('  &lt;struct name=&quot;', @name, '&quot; type=&quot;ConnPolicy&quot;&gt;'),
-          concat('    ', fp:simple('type', 'short', @type-code), '  &lt;!-- ', @type, ' --&gt;'),
-          concat('    ', fp:simple('size', 'short', @size)),
-          concat('    ', fp:simple('lock_policy', 'short', @lock-policy-code), '  &lt;!-- ', @lock-policy, ' --&gt;'),
+          concat('    ', fp:simple('type', 'long', @type-code), '  &lt;!-- ', @type, ' --&gt;'),
+          concat('    ', fp:simple('size', 'long', @size)),
+          concat('    ', fp:simple('lock_policy', 'long', @lock-policy-code), '  &lt;!-- ', @lock-policy, ' --&gt;'),
           concat('    ', fp:simple('init', 'boolean', if (xs:boolean(@init)) then '1' else '0')),
           concat('    ', fp:simple('pull', 'boolean', if (xs:boolean(@pull)) then '1' else '0')),
           '  &lt;/struct&gt;'),
@@ -120,7 +147,7 @@
         concat('  &lt;struct name=&quot;', $i/@name, '&quot; type=&quot;', $i/@type-name, '&quot;&gt;'),
         concat('    &lt;struct name=&quot;Activity&quot; type=&quot;', $a/@type, '&quot;&gt;'),
         concat('      ', fp:simple('Period', 'double', fp:period($a/@period))),
-        concat('      ', fp:simple('Priority', 'short', $a/@priority)),
+        concat('      ', fp:simple('Priority', 'long', $a/@priority)),
         concat('      ', fp:simple('Scheduler', 'string', $a/@scheduler)),
         if (xs:integer($a/@cpu-affinity) ne 0) then concat('      ', fp:simple('CpuAffinity', 'ulong', $a/@cpu-affinity)) else (),
         '    &lt;/struct&gt;',
@@ -144,15 +171,18 @@
   <!-- ======================================================= .ops -->
   <xsl:function name="fp:deploy-ops" as="xs:string">
     <xsl:param name="d" as="element(o:deployment)"/>
+    <xsl:variable name="file" as="xs:string" select="concat($d/@deploy-name, '.ops')"/>
     <xsl:sequence select="fp:lines((
         fp:banner('// ', $fp:deploy-xsl, concat('the deployment of model ''', $d/@model-name, ''''), false()),
-        concat('// Run: deployer -s ', $d/@deploy-name, '.ops'),
-        concat('import(', fp:cpp-string($d/@package), ')'),
+        concat('// Run: deployer -s ', $file, ' (from any folder; RTT_COMPONENT_PATH must hold the installed package)'),
+        '// A failing configure() or start() is logged as an [ ERROR ] line; nothing starts when a configure() failed.',
+        'require(&quot;print&quot;)',
+        concat('loadLibrary(', fp:cpp-string(fp:library($d)), ')'),
         '',
         $d/o:instance ! (concat('loadComponent(', fp:cpp-string(@name), ', ', fp:cpp-string(@type-name), ')')),
         '',
         '// activities (R5): setActivity(component, period [s], priority, scheduler)',
-        $d/o:instance ! fp:ops-activity(.),
+        $d/o:instance ! fp:ops-activity(., $file),
         if ($d/o:instance/o:peer) then ('', '// peers', $d/o:instance ! (for $p in o:peer return
             concat('addPeer(', fp:cpp-string(@name), ', ', fp:cpp-string($p/@instance), ')'))) else (),
         if ($d/o:instance/o:property-value) then ('', '// properties (R4)',
@@ -170,60 +200,67 @@
           return for $j in 1 to count($e) idiv 2
                  return concat('connect(', fp:cpp-string($e[2 * $j - 1]), ', ', fp:cpp-string($e[2 * $j]), ', cp_', $k/@name, ')')),
         '',
-        '// lifecycle',
+        '// lifecycle: configure all, then start all',
         fp:sequence-note($d) ! (concat('// in start order (deployment sequence: ', ., ')')),
-        $d/o:instance ! (concat(@name, '.configure()')),
-        $d/o:instance ! (concat(@name, '.start()'))))"/>
+        'var bool configured = true',
+        $d/o:instance ! (
+          concat('if ( !', @name, '.configure() ) then {'),
+          concat('  print.log(Error, ', fp:cpp-string(concat($file, ': ', @name, '.configure() failed')), ')'),
+          '  configured = false',
+          '}'),
+        'if ( configured ) then {',
+        $d/o:instance ! (concat('  if ( !', @name, '.start() ) then print.log(Error, ',
+                                 fp:cpp-string(concat($file, ': ', @name, '.start() failed')), ')')),
+        '} else {',
+        concat('  print.log(Error, ', fp:cpp-string(concat($file, ': not started, a component failed to configure')), ')'),
+        '}'))"/>
   </xsl:function>
 
-  <xsl:function name="fp:ops-activity" as="xs:string">
+  <xsl:function name="fp:ops-activity" as="xs:string+">
     <xsl:param name="i" as="element(o:instance)"/>
+    <xsl:param name="file" as="xs:string"/>
     <xsl:variable name="a" as="element(o:activity)" select="$i/o:activity"/>
     <xsl:variable name="mask" as="xs:integer" select="xs:integer($a/@cpu-affinity)"/>
-    <xsl:variable name="cpu" as="xs:integer?" select="fp:cpu-number($mask)"/>
-    <xsl:variable name="args" as="xs:string"
-        select="concat(fp:cpp-string($i/@name), ', ', fp:period($a/@period), ', ', $a/@priority, ', ', $a/@scheduler)"/>
     <xsl:sequence select="
-        if ($mask eq 0) then concat('setActivity(', $args, ')')
-        else if (exists($cpu)) then concat('setActivityOnCPU(', $args, ', ', $cpu, ')  // CpuAffinity mask ', $mask)
-        else concat('setActivity(', $args, ')  // CpuAffinity mask ', $mask, ' (several CPUs): only the XML deployment sets it')"/>
+        concat('setActivity(', fp:cpp-string($i/@name), ', ', fp:period($a/@period), ', ', $a/@priority, ', ', $a/@scheduler, ')'),
+        if ($mask eq 0) then () else (
+          concat('// ', fp:affinity-note($mask)),
+          concat('if ( !', $i/@name, '.setCpuAffinity(', $mask, ') ) then print.log(Error, ',
+                 fp:cpp-string(concat($file, ': ', $i/@name, '.setCpuAffinity(', $mask, ') failed')), ')'))"/>
   </xsl:function>
 
   <!-- ======================================================= Lua -->
-  <xsl:function name="fp:lua-activity" as="xs:string">
+  <xsl:function name="fp:lua-activity" as="xs:string+">
     <xsl:param name="i" as="element(o:instance)"/>
     <xsl:variable name="a" as="element(o:activity)" select="$i/o:activity"/>
     <xsl:variable name="mask" as="xs:integer" select="xs:integer($a/@cpu-affinity)"/>
-    <xsl:variable name="cpu" as="xs:integer?" select="fp:cpu-number($mask)"/>
-    <xsl:variable name="args" as="xs:string"
-        select="concat(fp:cpp-string($i/@name), ', ', fp:period($a/@period), ', ', $a/@priority, ', rtt.globals.', $a/@scheduler)"/>
     <xsl:sequence select="
-        if ($mask ne 0 and exists($cpu))
-        then concat('  check(depl:setActivityOnCPU(', $args, ', ', $cpu, '), &quot;setActivityOnCPU ', $i/@name, '&quot;)  -- CpuAffinity mask ', $mask)
-        else concat('  check(depl:setActivity(', $args, '), &quot;setActivity ', $i/@name, '&quot;)',
-              (if ($mask ne 0) then concat('  -- CpuAffinity mask ', $mask, ' (several CPUs): only the XML deployment sets it') else ''))"/>
-  </xsl:function>
-
-  <xsl:function name="fp:lua-value" as="xs:string">
-    <xsl:param name="p" as="element()"/>
-    <xsl:sequence select="$p/@script-value"/>
+        concat('  check(depl:setActivity(', fp:cpp-string($i/@name), ', ', fp:period($a/@period), ', ', $a/@priority,
+               ', rtt.globals.', $a/@scheduler, '), &quot;setActivity ', $i/@name, '&quot;)'),
+        if ($mask eq 0) then () else (
+          concat('  -- ', fp:affinity-note($mask)),
+          concat('  check(comps[', fp:cpp-string($i/@name), ']:setCpuAffinity(', $mask, '), &quot;', $i/@name,
+                 '.setCpuAffinity(', $mask, ')&quot;)'))"/>
   </xsl:function>
 
   <xsl:function name="fp:deploy-lua" as="xs:string">
     <xsl:param name="d" as="element(o:deployment)"/>
-    <xsl:variable name="names" as="xs:string*" select="$d/o:instance/@name"/>
+    <xsl:variable name="file" as="xs:string" select="concat($d/@deploy-name, '.lua')"/>
     <xsl:sequence select="fp:lines((
         fp:banner('-- ', $fp:deploy-xsl, concat('the deployment of model ''', $d/@model-name, ''''), false()),
-        concat('-- Run: rttlua ', $d/@deploy-name, '.lua   (or deployer -s ', $d/@deploy-name, '.lua)'),
+        concat('-- Run: deployer -s ', $file, '   or   rttlua -i ', $file),
+        '-- (from any folder; RTT_COMPONENT_PATH must hold the installed package). The components keep',
+        concat('-- running until the deployer is stopped (Ctrl-C). ', $d/@deploy-name, '-check.lua runs this deployment'),
+        '-- for a second, checks it and exits with a verdict. A failed step is logged as an [ ERROR ] line;',
+        '-- nothing starts when a step before the start failed, and the script ends with a Lua error.',
         'require(&quot;rttlib&quot;)',
         'rttlib.color = false',
         '',
-        'local ok = true',
-        'local function check(cond, msg)',
+        'local failures = {}',
+        'local function check(cond, what)',
         '  if not cond then',
-        '    rtt.logl(&quot;Error&quot;, &quot;DEPLOY-CHECK FAILED: &quot; .. msg)',
-        '    print(&quot;DEPLOY-CHECK FAILED: &quot; .. msg)',
-        '    ok = false',
+        concat('    rtt.logl(&quot;Error&quot;, ', fp:cpp-string(concat($file, ': ')), ' .. what .. &quot; failed&quot;)'),
+        '    failures[#failures + 1] = what',
         '  end',
         '  return cond',
         'end',
@@ -231,14 +268,14 @@
         'local tc = rtt.getTC()',
         'local depl',
         'if tc:getName() == &quot;Deployer&quot; then depl = tc else depl = tc:getPeer(&quot;Deployer&quot;) end',
-        concat('local names = {', string-join($names ! fp:cpp-string(.), ', '), '}'),
+        concat('local names = {', string-join($d/o:instance/@name ! fp:cpp-string(.), ', '), '}'),
         'local comps = {}',
         '',
-        concat('check(depl:import(', fp:cpp-string($d/@package), '), &quot;import ', $d/@package, '&quot;)'),
+        concat('check(depl:loadLibrary(', fp:cpp-string(fp:library($d)), '), &quot;loadLibrary ', fp:library($d), '&quot;)'),
         $d/o:instance ! (concat('check(depl:loadComponent(', fp:cpp-string(@name), ', ', fp:cpp-string(@type-name),
                           '), &quot;loadComponent ', @name, '&quot;)')),
         '',
-        'if ok then',
+        'if #failures == 0 then',
         '  for _, n in ipairs(names) do comps[n] = depl:getPeer(n) end',
         '',
         '  -- activities (R5): setActivity(name, period [s], priority, scheduler)',
@@ -249,7 +286,7 @@
         if ($d/o:instance/o:property-value) then ('', '  -- properties (R4)',
             $d/o:instance ! (for $p in o:property-value return
               concat('  check(pcall(function() comps[', fp:cpp-string(@name), ']:getProperty(', fp:cpp-string($p/@name),
-               '):set(', fp:lua-value($p), ') end), &quot;property ', @name, '.', $p/@name, '&quot;)'))) else (),
+               '):set(', $p/@script-value, ') end), &quot;property ', @name, '.', $p/@name, '&quot;)'))) else (),
         $d/o:connection ! (
           '',
           concat('  -- connection point ', @name),
@@ -268,15 +305,67 @@
         '',
         '  -- lifecycle: configure all, then start all',
         fp:sequence-note($d) ! (concat('  -- in start order (deployment sequence: ', ., ')')),
-        '  for _, n in ipairs(names) do check(comps[n]:configure(), &quot;configure &quot; .. n) end',
-        '  for _, n in ipairs(names) do check(comps[n]:start(), &quot;start &quot; .. n) end',
+        '  for _, n in ipairs(names) do check(comps[n]:configure(), n .. &quot;.configure()&quot;) end',
+        '  if #failures == 0 then',
+        '    for _, n in ipairs(names) do check(comps[n]:start(), n .. &quot;.start()&quot;) end',
+        '  end',
+        'end',
         '',
+        'if #failures &gt; 0 then',
+        concat('  error(', fp:cpp-string(concat($file, ': deployment failed: ')), ' .. table.concat(failures, &quot;, &quot;), 0)'),
+        'end',
+        '-- what the check script (or another script that runs this one with dofile) reads',
+        'return { deployer = depl, names = names, components = comps }'))"/>
+  </xsl:function>
+
+  <!-- the self-check: deploy with <model>.lua, read back what can be read
+       (state, period, CPU affinity, property values), stop, verdict -->
+  <xsl:function name="fp:deploy-check-lua" as="xs:string">
+    <xsl:param name="d" as="element(o:deployment)"/>
+    <xsl:variable name="file" as="xs:string" select="concat($d/@deploy-name, '-check.lua')"/>
+    <xsl:sequence select="fp:lines((
+        fp:banner('-- ', $fp:deploy-xsl, concat('the self-check of the deployment of model ''', $d/@model-name, ''''), false()),
+        concat('-- Run: rttlua ', $file, '   (or deployer -s ', $file, ')'),
+        concat('-- Runs ', $d/@deploy-name, '.lua (beside this file) for one second, checks that every component is Running'),
+        '-- with the modelled period, CPU affinity and property values, stops and unloads everything, and',
+        '-- exits 0 when all is as modelled, 1 otherwise.',
+        'require(&quot;rttlib&quot;)',
+        'rttlib.color = false',
+        '',
+        'local here = debug.getinfo(1, &quot;S&quot;).source:match(&quot;^@(.*)[/\\]&quot;) or &quot;.&quot;',
+        concat('local loaded, deployment = pcall(dofile, here .. ', fp:cpp-string(concat('/', $d/@deploy-name, '.lua')), ')'),
+        'local ok = loaded',
+        'local function check(cond, what)',
+        '  if not cond then',
+        '    rtt.logl(&quot;Error&quot;, &quot;DEPLOY-CHECK FAILED: &quot; .. what)',
+        '    print(&quot;DEPLOY-CHECK FAILED: &quot; .. what)',
+        '    ok = false',
+        '  end',
+        'end',
+        'if not loaded then print(&quot;DEPLOY-CHECK FAILED: &quot; .. tostring(deployment)) end',
+        '',
+        'if loaded then',
+        '  local depl, comps, names = deployment.deployer, deployment.components, deployment.names',
         '  rtt.sleep(1, 0)  -- let it run 1 s',
         '  for _, n in ipairs(names) do',
         '    local s = comps[n]:getState()',
         '    check(s == &quot;Running&quot;, n .. &quot; Running (is &quot; .. tostring(s) .. &quot;)&quot;)',
         '  end',
-        '',
+        '  -- numbers read back as doubles (a float property to about 7 digits)',
+        '  local function near(a, b) return math.abs(a - b) &lt;= 1e-6 * math.max(1, math.abs(b)) end',
+        $d/o:instance ! (
+          concat('  check(near(comps[', fp:cpp-string(@name), ']:getPeriod(), ', fp:period(o:activity/@period), '), &quot;',
+                 @name, ' period ', fp:period(o:activity/@period), ' (is &quot; .. tostring(comps[', fp:cpp-string(@name), ']:getPeriod()) .. &quot;)&quot;)'),
+          if (xs:integer(o:activity/@cpu-affinity) eq 0) then () else
+          concat('  check(comps[', fp:cpp-string(@name), ']:getCpuAffinity() == ', o:activity/@cpu-affinity, ', &quot;',
+                 @name, ' ', fp:affinity-note(xs:integer(o:activity/@cpu-affinity)), ' (is &quot; .. tostring(comps[',
+                 fp:cpp-string(@name), ']:getCpuAffinity()) .. &quot;)&quot;)'),
+          for $p in o:property-value return
+          let $get := concat('comps[', fp:cpp-string(@name), ']:getProperty(', fp:cpp-string($p/@name), '):get()')
+          return concat('  check(', if ($p/@xml-type = ('double', 'float')) then concat('near(', $get, ', ', $p/@script-value, ')')
+                                     else concat($get, ' == ', $p/@script-value),
+                        ', ', fp:cpp-string(concat('property ', @name, '.', $p/@name, ' = ', $p/@script-value, ' (is ')),
+                        ' .. tostring(', $get, ') .. &quot;)&quot;)')),
         '  for _, n in ipairs(names) do comps[n]:stop() end',
         '  for _, n in ipairs(names) do comps[n]:cleanup() end',
         '  for i = #names, 1, -1 do depl:unloadComponent(names[i]) end',
