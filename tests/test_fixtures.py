@@ -766,3 +766,13 @@ def test_smoke_program(case: str, tmp_path: Path):
     p = subprocess.run([str(build / "smoke")], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                        universal_newlines=True, timeout=60)
     assert p.returncode == 0, p.stdout
+
+
+def test_tuned_fixture_is_what_its_make_py_writes():
+    """fixtures/cases/tuned is headlamp with the listed edits only (rewrite with its make.py)."""
+    import importlib.util
+    spec = importlib.util.spec_from_file_location("tuned_make", CASES_DIR / "tuned" / "make.py")
+    make = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(make)
+    for path, text in make.texts().items():
+        assert path.read_text(encoding="utf-8") == text, f"{path} is stale: run python {CASES_DIR / 'tuned' / 'make.py'}"

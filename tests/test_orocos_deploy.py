@@ -1,0 +1,133 @@
+"""Build and deploy generated Orocos packages on a real RTT / OCL 2.10 toolchain.
+
+Not in CI (marker ``orocos_toolchain``, deselected there by conftest.py): the
+toolchain is built from fetched public sources with
+../shared/orocos-reference/toolchain/build.sh, which CI cannot do. Where the
+toolchain is installed (``$OROCOS_INSTALL``, default ``~/orocos/install``)
+these tests run every fixture through the helpers of that folder's env.sh:
+
+- build the package (``oro_build_pkg``, cmake + make + install);
+- deploy its XML, .ops and Lua files with ``oro_deploy_verify`` (every
+  component Running, no undeclared property, clean shutdown) under
+  ``oro_verdict`` (no ERROR line), run from a folder that holds a folder
+  named like the package (RTT's import() used to take that folder instead of
+  RTT_COMPONENT_PATH);
+- run the generated ``-check.lua`` (modelled periods, CPU affinity and
+  property values read back) and require no warning in the RTT log;
+- the broken variant (a configure() that fails on a property value) must
+  fail in all three formats with an ERROR line;
+- a downstream CMake package that uses the installed package's headers and
+  library must build.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from robomda.api import generate
+
+ROOT = Path(__file__).resolve().parents[1]
+SHARED = Path(os.environ.get("ROBOMDA_SHARED", ROOT.parent / "shared"))
+ENV_SH = SHARED / "orocos-reference" / "toolchain" / "env.sh"
+INSTALL = Path(os.environ.get("OROCOS_INSTALL", Path.home() / "orocos" / "install"))
+CASES = ROOT / "fixtures" / "cases"
+
+pytestmark = [
+    pytest.mark.orocos_toolchain,
+    pytest.mark.skipif(not ENV_SH.is_file(), reason=f"no {ENV_SH} (../shared beside the checkout)"),
+    pytest.mark.skipif(not (INSTALL / "bin" / "deployer").exists(),
+                       reason=f"no Orocos toolchain in {INSTALL} (build it with {ENV_SH.parent}/build.sh)"),
+]
+
+MODELS = ["headlamp/model.xmi", "headlamp/model.ea.xmi", "meka/model.xmi", "meka/model.ea.xmi",
+          "pid/model.xmi", "tuned/model.xmi"]
+
+
+def _bash(script: str, cwd: Path, timeout: int = 1200) -> subprocess.CompletedProcess[str]:
+    env = dict(os.environ, OROCOS_INSTALL=str(INSTALL))
+    return subprocess.run(["bash", "-c", f"source {ENV_SH} >/dev/null && {script}"], cwd=cwd, env=env,
+                          capture_output=True, text=True, timeout=timeout)
+
+
+_BUILT: dict[str, tuple[Path, str]] = {}
+
+
+def _built(model: str, tmp_root: Path) -> tuple[Path, str]:
+    """Generate ``model`` into TMP/<n>/<pkg>/ and build it; (package folder, package name)."""
+    if model in _BUILT:
+        return _BUILT[model]
+    work = tmp_root / str(len(_BUILT))
+    gen = generate(CASES / model, work / "pkg", "orocos", write=False)
+    pkg = gen.stages["psm"].split('package="', 1)[1].split('"', 1)[0]
+    out = work / pkg  # the output folder is named like the package, as in the README's example
+    generate(CASES / model, out, "orocos")
+    built = _bash(f"oro_build_pkg {out}", work)
+    assert built.returncode == 0, built.stdout[-3000:] + built.stderr[-3000:]
+    _BUILT[model] = (out, pkg)
+    return out, pkg
+
+
+@pytest.fixture(scope="module")
+def tmp_root(tmp_path_factory) -> Path:
+    return tmp_path_factory.mktemp("orocos")
+
+
+@pytest.mark.parametrize("model", MODELS)
+@pytest.mark.parametrize("fmt", ["xml", "ops", "lua"])
+def test_deploys_from_the_folder_above_the_package(model: str, fmt: str, tmp_root: Path) -> None:
+    out, pkg = _built(model, tmp_root)
+    deploy = next((out / "deploy").glob(f"*.{fmt}")) if fmt != "lua" else \
+        next(p for p in (out / "deploy").glob("*.lua") if not p.name.endswith("-check.lua"))
+    log = out.parent / f"{fmt}.log"
+    run = _bash(f"oro_add_prefix {out}/install && ORO_RUN_IN_CWD=1 ORO_LOGFILE={log} "
+                f"oro_verdict oro_deploy_verify {deploy} 2", out.parent)
+    assert run.returncode == 0 and "oro_verdict: OK" in run.stdout, run.stdout[-4000:]
+    assert (out.parent / pkg).is_dir()  # the folder RTT's import() would have taken
+    warnings = [l for l in log.read_text(errors="replace").splitlines() if "[ Warning]" in l and "Logging Activated" not in l]
+    assert not warnings, warnings[:10]
+
+
+@pytest.mark.parametrize("model", MODELS)
+def test_self_check_reads_back_the_modelled_values(model: str, tmp_root: Path) -> None:
+    out, _ = _built(model, tmp_root)
+    check = next((out / "deploy").glob("*-check.lua"))
+    run = _bash(f"oro_add_prefix {out}/install && timeout -s INT 120 rttlua {check} </dev/null", out.parent)
+    assert run.returncode == 0 and "DEPLOY-RESULT: OK" in run.stdout, run.stdout[-4000:] + run.stderr[-2000:]
+
+
+@pytest.mark.parametrize("fmt", ["xml", "ops", "lua"])
+def test_a_failing_configure_fails_every_format(fmt: str, tmp_root: Path) -> None:
+    out, _ = _built("tuned/broken/model.xmi", tmp_root)
+    deploy = next(p for p in (out / "deploy").glob(f"*.{fmt}") if not p.name.endswith("-check.lua"))
+    run = _bash(f"oro_add_prefix {out}/install && ORO_RUN_IN_CWD=1 oro_verdict oro_deploy_verify {deploy} 2", out.parent)
+    assert run.returncode != 0, run.stdout[-3000:]
+    assert "oro_verdict: FAILED" in run.stdout, run.stdout[-3000:]
+    # the deployment itself says what failed, as an RTT ERROR line
+    said = {"xml": "Component controller returns false in configure()",
+            "ops": "[ScriptingService] tuned_broken.ops: controller.configure() failed",
+            "lua": "tuned_broken.lua: controller.configure() failed"}[fmt]
+    assert any("[ ERROR  ]" in line and said in line for line in run.stdout.splitlines()), run.stdout[-3000:]
+
+
+def test_a_downstream_package_builds_against_the_installed_headers(tmp_root: Path) -> None:
+    out, pkg = _built("headlamp/model.xmi", tmp_root)
+    down = tmp_root / "downstream"
+    shutil.rmtree(down, ignore_errors=True)
+    (down / "src").mkdir(parents=True)
+    (down / "CMakeLists.txt").write_text(
+        "cmake_minimum_required(VERSION 3.5)\nproject(downstream)\nset(CMAKE_CXX_STANDARD 14)\n"
+        "find_package(OROCOS-RTT REQUIRED)\ninclude(${OROCOS-RTT_USE_FILE_PATH}/UseOROCOS-RTT.cmake)\n"
+        f"orocos_use_package({pkg})\norocos_component(downstream src/user.cpp)\n", encoding="utf-8")
+    (down / "src" / "user.cpp").write_text(
+        f"#include <{pkg}/Guppy80.hpp>\n#include <rtt/Component.hpp>\n"
+        "struct User : public RTT::TaskContext {\n"
+        f"  {pkg}::Guppy80 camera;\n"
+        "  User(const std::string& n) : RTT::TaskContext(n), camera(n + \"_camera\") {}\n};\n"
+        "ORO_CREATE_COMPONENT(User)\n", encoding="utf-8")
+    run = _bash(f"oro_add_prefix {out}/install && oro_build_pkg {down}", tmp_root)
+    assert run.returncode == 0, run.stdout[-4000:] + run.stderr[-4000:]
