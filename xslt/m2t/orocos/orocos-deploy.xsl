@@ -28,6 +28,9 @@
     component's setCpuAffinity(mask) (RTT 2.10), whatever CPUs the mask has.
   - Integers (ConnPolicy fields, Priority) are written as "long": RTT 2.10
     logs two deprecation warnings for every "short".
+  - Under ORO_SCHED_OTHER the priority written is 0, with a note: RTT has
+    no priorities there and would force it to 0 with a warning per thread
+    (the PSM keeps the modelled one, for rule ORO102).
   - Every lifecycle call is checked: .ops logs an [ ERROR ] line through
     OCL's print service for each configure() / start() / setCpuAffinity()
     that returns false and starts nothing when a configure failed; Lua logs
@@ -69,6 +72,21 @@
   <xsl:function name="fp:pow2" as="xs:integer">
     <xsl:param name="n" as="xs:integer"/>
     <xsl:sequence select="if ($n eq 0) then 1 else 2 * fp:pow2($n - 1)"/>
+  </xsl:function>
+
+  <!-- the priority RTT runs the activity at: the modelled one, except under
+       ORO_SCHED_OTHER, which has none (RTT would force it to 0 with a
+       warning; rule ORO102 tells the user at generation time) -->
+  <xsl:function name="fp:priority" as="xs:string">
+    <xsl:param name="a" as="element(o:activity)"/>
+    <xsl:sequence select="if ($a/@scheduler eq 'ORO_SCHED_OTHER') then '0' else string($a/@priority)"/>
+  </xsl:function>
+
+  <!-- a note where fp:priority is not the modelled priority, else () -->
+  <xsl:function name="fp:priority-note" as="xs:string?">
+    <xsl:param name="a" as="element(o:activity)"/>
+    <xsl:sequence select="if (fp:priority($a) eq string($a/@priority)) then ()
+        else concat('priority ', $a/@priority, ' of the model: ORO_SCHED_OTHER has no priorities, so 0 (warning ORO102)')"/>
   </xsl:function>
 
   <!-- what LoadLibrary / loadLibrary takes: "<pkg>/<pkg>" -->
@@ -147,7 +165,8 @@
         concat('  &lt;struct name=&quot;', $i/@name, '&quot; type=&quot;', $i/@type-name, '&quot;&gt;'),
         concat('    &lt;struct name=&quot;Activity&quot; type=&quot;', $a/@type, '&quot;&gt;'),
         concat('      ', fp:simple('Period', 'double', fp:period($a/@period))),
-        concat('      ', fp:simple('Priority', 'long', $a/@priority)),
+        fp:priority-note($a) ! concat('      &lt;!-- ', ., ' --&gt;'),
+        concat('      ', fp:simple('Priority', 'long', fp:priority($a))),
         concat('      ', fp:simple('Scheduler', 'string', $a/@scheduler)),
         if (xs:integer($a/@cpu-affinity) ne 0) then concat('      ', fp:simple('CpuAffinity', 'ulong', $a/@cpu-affinity)) else (),
         '    &lt;/struct&gt;',
@@ -222,7 +241,8 @@
     <xsl:variable name="a" as="element(o:activity)" select="$i/o:activity"/>
     <xsl:variable name="mask" as="xs:integer" select="xs:integer($a/@cpu-affinity)"/>
     <xsl:sequence select="
-        concat('setActivity(', fp:cpp-string($i/@name), ', ', fp:period($a/@period), ', ', $a/@priority, ', ', $a/@scheduler, ')'),
+        fp:priority-note($a) ! concat('// ', .),
+        concat('setActivity(', fp:cpp-string($i/@name), ', ', fp:period($a/@period), ', ', fp:priority($a), ', ', $a/@scheduler, ')'),
         if ($mask eq 0) then () else (
           concat('// ', fp:affinity-note($mask)),
           concat('if ( !', $i/@name, '.setCpuAffinity(', $mask, ') ) then print.log(Error, ',
@@ -235,7 +255,8 @@
     <xsl:variable name="a" as="element(o:activity)" select="$i/o:activity"/>
     <xsl:variable name="mask" as="xs:integer" select="xs:integer($a/@cpu-affinity)"/>
     <xsl:sequence select="
-        concat('  check(depl:setActivity(', fp:cpp-string($i/@name), ', ', fp:period($a/@period), ', ', $a/@priority,
+        fp:priority-note($a) ! concat('  -- ', .),
+        concat('  check(depl:setActivity(', fp:cpp-string($i/@name), ', ', fp:period($a/@period), ', ', fp:priority($a),
                ', rtt.globals.', $a/@scheduler, '), &quot;setActivity ', $i/@name, '&quot;)'),
         if ($mask eq 0) then () else (
           concat('  -- ', fp:affinity-note($mask)),
