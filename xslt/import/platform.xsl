@@ -67,7 +67,8 @@
         <xsl:with-param name="e" select="."/>
       </xsl:call-template>
       <xsl:apply-templates select="ownedAttribute[not(@x:type = 'Port')]" mode="mp:feature"/>
-      <xsl:for-each select="deployment | key('fp:dep-by-client', fp:id(.))[@x:type eq 'Deployment']">
+      <xsl:for-each select="deployment[@x:type eq 'Deployment']
+                            | key('fp:dep-by-client', fp:id(.))[@x:type eq 'Deployment']">
         <xsl:variable name="deployed" as="xs:string*"
             select="distinct-values((fp:targets(., 'deployedArtifact'), fp:targets(., 'supplier')) ! fp:id(.))"/>
         <xsl:if test="exists($deployed)">
