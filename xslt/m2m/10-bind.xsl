@@ -192,36 +192,44 @@
   </xsl:template>
 
   <!-- ============================================== reference checks -->
+  <!-- every dangling reference of the model (BND001, BND002: a port's
+       type, provided or required interface), all reported (f:fail-all);
+       a reference to any element of the PIM is not dangling, whatever its
+       kind (an element of the model the PIM holds no element for has no
+       reference at all: xslt/import, @type-metaclass) -->
   <xsl:function name="fp:check-references" as="empty-sequence()">
     <xsl:param name="model" as="element(pim:model)"/>
     <xsl:variable name="root" as="document-node()" select="root($model[1])"/>
-    <xsl:for-each select="$model//pim:port">
-      <xsl:variable name="port" as="element(pim:port)" select="."/>
-      <xsl:for-each select="@type[not(key('fp:id', ., $root))],
-                            (pim:provided, pim:required)/@interface[not(key('fp:id', ., $root)/self::pim:interface)]">
-        <xsl:sequence select="f:fail('BND002', $port/@id,
-            'port ''' || $port/@name || ''' refers to a missing interface ''' || . || '''')"/>
+    <xsl:variable name="problems" as="map(*)*">
+      <xsl:for-each select="$model//pim:port">
+        <xsl:variable name="port" as="element(pim:port)" select="."/>
+        <xsl:for-each select="@type[not(key('fp:id', ., $root))],
+                              (pim:provided, pim:required)/@interface[not(key('fp:id', ., $root)/self::pim:interface)]">
+          <xsl:sequence select="map { 'code': 'BND002', 'id': string($port/@id), 'message':
+              'port ''' || $port/@name || ''' refers to a missing interface ''' || . || '''' }"/>
+        </xsl:for-each>
       </xsl:for-each>
-    </xsl:for-each>
-    <xsl:for-each select="$model//pim:realization/@classifier, $model//pim:part/@type,
-                          $model//pim:generalization/@general,
-                          $model//pim:connector/pim:end/(@role | @part),
-                          $model//pim:manifestation/@element,
-                          $model//pim:communication-path/pim:end/@node,
-                          $model//(pim:provides | pim:requires)/@interface,
-                          $model//pim:attribute/@type, $model//pim:parameter/@type">
-      <xsl:if test="empty(key('fp:id', ., $root))">
-        <xsl:sequence select="f:fail('BND001', (../ancestor-or-self::*[@id])[last()]/@id,
-            'dangling reference ' || name(.) || '=''' || . || ''' on ' || local-name(..))"/>
-      </xsl:if>
-    </xsl:for-each>
-    <xsl:for-each select="$model//pim:deployment">
-      <xsl:variable name="d" as="element(pim:deployment)" select="."/>
-      <xsl:for-each select="tokenize(@deployed)[empty(key('fp:id', ., $root))]">
-        <xsl:sequence select="f:fail('BND001', $d/@id,
-            'dangling reference deployed=''' || . || ''' on deployment ''' || $d/@name || '''')"/>
+      <xsl:for-each select="$model//pim:realization/@classifier, $model//pim:part/@type,
+                            $model//pim:generalization/@general,
+                            $model//pim:connector/pim:end/(@role | @part),
+                            $model//pim:manifestation/@element,
+                            $model//pim:communication-path/pim:end/@node,
+                            $model//(pim:provides | pim:requires)/@interface,
+                            $model//pim:attribute/@type, $model//pim:parameter/@type">
+        <xsl:if test="empty(key('fp:id', ., $root))">
+          <xsl:sequence select="map { 'code': 'BND001', 'id': string((../ancestor-or-self::*[@id])[last()]/@id),
+              'message': 'dangling reference ' || name(.) || '=''' || . || ''' on ' || local-name(..) }"/>
+        </xsl:if>
       </xsl:for-each>
-    </xsl:for-each>
+      <xsl:for-each select="$model//pim:deployment">
+        <xsl:variable name="d" as="element(pim:deployment)" select="."/>
+        <xsl:for-each select="tokenize(@deployed)[empty(key('fp:id', ., $root))]">
+          <xsl:sequence select="map { 'code': 'BND001', 'id': string($d/@id), 'message':
+              'dangling reference deployed=''' || . || ''' on deployment ''' || $d/@name || '''' }"/>
+        </xsl:for-each>
+      </xsl:for-each>
+    </xsl:variable>
+    <xsl:sequence select="f:fail-all($problems)"/>
   </xsl:function>
 
   <!-- ===================================================== stereotypes -->
@@ -328,9 +336,25 @@
                 [@kind eq 'node' or exists(f:stereotype(., 'Host'))]"/>
   </xsl:function>
 
+  <!-- the default values of the robomda profile's tags (what a tool that
+       leaves out a tag equal to its default means; the import drops such
+       tags too, so that every tool gives the same PIM) -->
+  <xsl:variable name="fp:profile-defaults" as="document-node()" select="doc('../import/profile-defaults.xml')"/>
+
+  <xsl:function name="fp:tag-default" as="xs:string?">
+    <xsl:param name="stereo" as="xs:string"/>
+    <xsl:param name="tag" as="xs:string"/>
+    <xsl:sequence select="$fp:profile-defaults/*/*/*[@stereotype eq $stereo][@name eq $tag][1]/@default/string()"/>
+  </xsl:function>
+
+  <!-- the middleware of an execution environment: its Middleware kind; a
+       Middleware stereotype that leaves kind out means the profile default
+       (OROCOS); without the stereotype, the environment's name -->
   <xsl:function name="fp:middleware" as="xs:string">
     <xsl:param name="ee" as="element(pim:node)"/>
-    <xsl:variable name="tag" as="xs:string?" select="fp:tag($ee, 'Middleware', 'kind')"/>
+    <xsl:variable name="tag" as="xs:string?"
+        select="(fp:tag($ee, 'Middleware', 'kind')[normalize-space(.)],
+                 if (exists(f:stereotype($ee, 'Middleware'))) then fp:tag-default('Middleware', 'kind') else ())[1]"/>
     <xsl:variable name="raw" as="xs:string" select="if (normalize-space($tag)) then fp:literal($tag) else string($ee/@name)"/>
     <xsl:variable name="key" as="xs:string" select="upper-case(replace($raw, '[^A-Za-z0-9]', ''))"/>
     <xsl:sequence select="
@@ -378,6 +402,9 @@
             'two instances are named ''' || current-grouping-key() || '''')"/>
       </xsl:if>
     </xsl:for-each-group>
+    <!-- every port problem of every instantiated component at once -->
+    <xsl:sequence select="f:fail-all($components[exists(key('fp:instance-by-component', @id, $instance-tree))]
+                          ! (let $c := ., $r := fp:realizing-class(.) return $c/pim:port ! fp:port-problems(., $c, $r)))"/>
     <xsl:variable name="bound-tree" as="document-node()">
       <xsl:document>
         <xsl:sequence select="$components[exists(key('fp:instance-by-component', @id, $instance-tree))]
@@ -732,7 +759,47 @@
         else if ($t/self::pim:class) then
           ($t/pim:provides ! (string(@interface), if ($conj) then 'in' else 'out'),
            $t/pim:requires ! (string(@interface), if ($conj) then 'out' else 'in'))
+        else if (fp:is-data-type($t)) then (string($t/@id), if ($conj) then 'in' else 'out')
+        else if (empty($t) and $p/@primitive) then (string($p/@id), if ($conj) then 'in' else 'out')
         else ()"/>
+  </xsl:function>
+
+  <!-- the problems of the data ports of port $p (BND002, BND004,
+       BND005), as maps for f:fail-all -->
+  <xsl:function name="fp:port-problems" as="map(*)*">
+    <xsl:param name="p" as="element(pim:port)"/>
+    <xsl:param name="c" as="element(pim:component)"/>
+    <xsl:param name="r" as="element(pim:class)?"/>
+    <xsl:variable name="root" as="document-node()" select="root($p[1])"/>
+    <xsl:variable name="pairs" as="xs:string*" select="fp:port-interfaces($p, $c, $r)"/>
+    <xsl:for-each select="1 to count($pairs) idiv 2">
+      <xsl:variable name="i" as="element()?" select="key('fp:id', $pairs[2 * current() - 1], $root)"/>
+      <xsl:variable name="data" as="element(pim:attribute)*" select="$i/pim:attribute"/>
+      <xsl:choose>
+        <xsl:when test="fp:is-data-type($i)"/>
+        <xsl:when test="not($i/self::pim:interface)">
+          <xsl:sequence select="map { 'code': 'BND002', 'id': string($p/@id), 'message': 'port ''' || $p/@name
+              || ''' refers to ''' || $pairs[2 * current() - 1] || ''', which is not an interface' }"/>
+        </xsl:when>
+        <xsl:when test="empty($data)">
+          <xsl:sequence select="map { 'code': 'BND004', 'id': string($i/@id), 'message': 'interface ''' || $i/@name
+              || ''' (port ''' || $p/@name || ''') carries no datum: give it one attribute' }"/>
+        </xsl:when>
+        <xsl:when test="count($data) gt 1">
+          <xsl:sequence select="map { 'code': 'BND005', 'id': string($i/@id), 'message': 'interface ''' || $i/@name
+              || ''' (port ''' || $p/@name || ''') carries ' || count($data)
+              || ' attributes (' || string-join($data/@name, ', ') || '): an interface carries exactly one datum' }"/>
+        </xsl:when>
+      </xsl:choose>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- a port's own type that is its data (a data type, primitive or
+       enumeration of the model; the port itself for a library primitive) -->
+  <xsl:function name="fp:is-data-type" as="xs:boolean">
+    <xsl:param name="t" as="element()?"/>
+    <xsl:sequence select="exists($t/(self::pim:datatype | self::pim:primitive | self::pim:enumeration
+                                     | self::pim:port[@primitive]))"/>
   </xsl:function>
 
   <xsl:function name="fp:data-ports" as="element(pim:data-port)*">
@@ -740,31 +807,33 @@
     <xsl:param name="c" as="element(pim:component)"/>
     <xsl:param name="r" as="element(pim:class)?"/>
     <xsl:variable name="root" as="document-node()" select="root($p[1])"/>
+    <xsl:sequence select="f:fail-all(fp:port-problems($p, $c, $r))"/>
     <xsl:variable name="pairs" as="xs:string*" select="fp:port-interfaces($p, $c, $r)"/>
     <xsl:variable name="n" as="xs:integer" select="count($pairs) idiv 2"/>
     <xsl:for-each select="1 to $n">
       <xsl:variable name="i" as="element()?" select="key('fp:id', $pairs[2 * current() - 1], $root)"/>
-      <xsl:if test="not($i/self::pim:interface)">
-        <xsl:sequence select="f:fail('BND002', $p/@id, 'port ''' || $p/@name
-            || ''' refers to ''' || $pairs[2 * current() - 1] || ''', which is not an interface')"/>
-      </xsl:if>
-      <xsl:variable name="data" as="element(pim:attribute)*" select="$i/pim:attribute"/>
-      <xsl:if test="empty($data)">
-        <xsl:sequence select="f:fail('BND004', $i/@id, 'interface ''' || $i/@name
-            || ''' (port ''' || $p/@name || ''') carries no datum: give it one attribute')"/>
-      </xsl:if>
-      <xsl:if test="count($data) gt 1">
-        <xsl:sequence select="f:fail('BND005', $i/@id, 'interface ''' || $i/@name
-            || ''' (port ''' || $p/@name || ''') carries ' || count($data)
-            || ' attributes (' || string-join($data/@name, ', ') || '): an interface carries exactly one datum')"/>
-      </xsl:if>
-      <pim:data-port port="{$p/@id}"
-                     name="{f:cpp-identifier(if ($n eq 1) then $p/@name else $p/@name || '_' || $i/@name)}"
-                     port-name="{$p/@name}" direction="{$pairs[2 * current()]}"
-                     interface="{$i/@id}" interface-name="{$i/@name}"
-                     datum="{$data/@id}" datum-name="{$data/@name}">
-        <xsl:sequence select="$data/(@primitive, @type, @type-name, @upper)"/>
-      </pim:data-port>
+      <xsl:choose>
+        <xsl:when test="fp:is-data-type($i)">
+          <!-- a port typed by a data type carries that data itself: the
+               type stands for the interface, the port for the datum -->
+          <pim:data-port port="{$p/@id}" name="{f:cpp-identifier($p/@name)}"
+                         port-name="{$p/@name}" direction="{$pairs[2 * current()]}"
+                         interface="{$i/@id}" interface-name="{($i/self::pim:port/@type-name, $i/@name)[1]}"
+                         datum="{$p/@id}" datum-name="{$p/@name}">
+            <xsl:sequence select="$p/(@primitive, @type, @type-name, @upper)"/>
+          </pim:data-port>
+        </xsl:when>
+        <xsl:otherwise>
+          <xsl:variable name="data" as="element(pim:attribute)*" select="$i/pim:attribute"/>
+          <pim:data-port port="{$p/@id}"
+                         name="{f:cpp-identifier(if ($n eq 1) then $p/@name else $p/@name || '_' || $i/@name)}"
+                         port-name="{$p/@name}" direction="{$pairs[2 * current()]}"
+                         interface="{$i/@id}" interface-name="{$i/@name}"
+                         datum="{$data/@id}" datum-name="{$data/@name}">
+            <xsl:sequence select="$data/(@primitive, @type, @type-name, @upper)"/>
+          </pim:data-port>
+        </xsl:otherwise>
+      </xsl:choose>
     </xsl:for-each>
   </xsl:function>
 
