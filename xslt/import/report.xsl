@@ -84,7 +84,8 @@
     </xsl:for-each>
     <xsl:if test="empty($pim//(pim:component | pim:class | pim:interface | pim:node))">
       <xsl:sequence select="f:warn('IMP030', fp:id($root), 'nothing to generate from: '
-          || fp:label($root) || ' holds no component, class, interface or node'
+          || fp:label($root) || (if ($root/@x:type eq 'Profile') then ' is a profile, not a model: it' else '')
+          || ' holds no component, class, interface or node'
           || (let $held := fp:holds($norm) return
               if (exists($held)) then ' (it holds ' || string-join($held, ', ') || ')' else ' (it is empty)')
           || '; robomda reads components, classes and interfaces (component diagram) and nodes'
