@@ -138,7 +138,7 @@ def import_run(model: Path) -> tuple[int, str | None, list[str]]:
 
     chain = pipeline.load(pipeline_path("import"))
     try:
-        result = pipeline.run(chain, api._engine(), model, {"model-file-name": model.name}, steps=1)
+        result = api._run(chain, model, {"model-file-name": model.name}, steps=1)
     except RobomdaError as exc:
         return exc.exit_code, None, [f"{d.code}: {d.message} [xmi:id={d.xmi_id or ''}]" for d in exc.diagnostics]
     return EXIT_OK, result.output, [f"{d.code}: {d.message} [xmi:id={d.xmi_id or ''}]" for d in result.warnings]
