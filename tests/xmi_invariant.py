@@ -82,7 +82,7 @@ def understood_ids(xmi: Path) -> dict[str, str]:
                 continue
             m = meta(child)
             xid = _xmi_attr(child, "id")
-            if xid and m in KINDS and child.get("href") is None:
+            if xid and m in KINDS and child.get("href") is None and _xmi_attr(child, "idref") is None:
                 if m not in ("Property", "Operation") or owner_meta in FEATURE_OWNERS:
                     # a Property / Operation counts as a feature of a classifier
                     if not (m == "Property" and etree.QName(child).localname == "ownedEnd"):

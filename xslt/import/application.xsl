@@ -47,7 +47,8 @@
     wherever it is owned (package or classifier). Every other plain
     Dependency carries no PIM content and is not written. Clients and
     suppliers in another model (href) are not written; a dependency left
-    without a client or a supplier is not written (with a message).
+    without a client or a supplier is not written (IMP111).
+  - What is not written is named by a warning (report.xsl, IMP110-IMP116).
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -361,10 +362,9 @@
     <xsl:param name="root" as="element()" tunnel="yes"/>
     <xsl:choose>
       <xsl:when test="not(fp:is-start-after(.))"/>
-      <xsl:when test="empty(fp:targets(., 'client')) or empty(fp:targets(., 'supplier'))">
-        <xsl:message select="'robomda import: dependency ' || fp:label(.) || ' [xmi:id=' || fp:id(.)
-                             || '] has no client or no supplier in this model; not imported'"/>
-      </xsl:when>
+      <!-- without a client or a supplier in the model: not imported
+           (IMP111, report.xsl) -->
+      <xsl:when test="empty(fp:targets(., 'client')) or empty(fp:targets(., 'supplier'))"/>
       <xsl:otherwise>
         <pim:dependency id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
           <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>

@@ -55,7 +55,9 @@
   For IMP010-IMP021 ID is the referencing element's xmi:id and the message
   names the element, its owner, the property and the missing id. An href to
   another file (a library type, an imported model) is never dangling.
-  Non-fatal notes go to xsl:message ("robomda import: ...").
+  Warnings (f:warn) about what the import leaves out: IMP030, IMP101-IMP103
+  (application.xsl), IMP110-IMP116 (report.xsl); docs/errors.md. Every
+  duplicate id and dangling reference is reported (f:fail-all).
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"

@@ -38,7 +38,8 @@
   InterfaceRealization, ComponentRealization, Abstraction, Deployment,
   Manifestation, and Property / Operation owned by a class, component,
   interface, data type, signal, node or artifact (association ends are
-  the association's, not counted); outside profiles and xmi:Extension; and
+  the association's, not counted); outside profiles and xmi:Extension; not
+  a reference (href, xmi:idref: EA's exposed interfaces); and
   every stereotype application with an xmi:id. It is recorded when an
   @id or @via of the PIM carries its xmi:id.
 -->
@@ -71,7 +72,7 @@
     <xsl:param name="pim" as="document-node()"/>
     <xsl:param name="root" as="element()"/>
     <xsl:variable name="understood" as="element()*"
-        select="$norm/descendant::*[@x:id][@x:type = $understood-metas][not(@href)]
+        select="$norm/descendant::*[@x:id][@x:type = $understood-metas][not(@href or @x:idref)]
                   [not(@x:type = ('Property', 'Operation'))
                    or (../@x:type = $feature-owner-metas and not(self::ownedEnd))]
                   [empty(ancestor::*[@x:type = 'Profile'])]"/>
