@@ -122,7 +122,7 @@ _NAMED = re.compile(r"\[xmi:id=([^\]]*)\]")
 def dropped(xmi: Path, pim_text: str | None, messages: list[str]) -> dict[str, str]:
     """The understood elements neither in the PIM nor named by a warning (id -> metaclass)."""
     named = {xid for m in messages for xid in _NAMED.findall(m)}
-    named |= {i for m in messages for i in re.findall(r"\bxmi:ids?=([^\s\]\)]+)", m)}
+    named |= {i for m in messages for ids in re.findall(r"\bxmi:ids=([^\s\]\)]+)", m) for i in ids.split(",")}
     in_pim = pim_ids(etree.fromstring(pim_text.encode("utf-8"))) if pim_text else set()
     return {xid: m for xid, m in understood_ids(xmi).items() if xid not in in_pim and xid not in named}
 

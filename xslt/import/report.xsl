@@ -26,7 +26,9 @@
             or manifests nothing in the model, or is not on a node /
             artifact).
     IMP114  a CommunicationPath that does not join two nodes.
-    IMP115  a stereotype application whose element is not imported.
+    IMP115  a stereotype application whose element is not imported (those
+            on no element of the model: one warning per stereotype, naming
+            them all with xmi:ids=ID,ID...).
     IMP116  any other element of a kind robomda reads (component, class,
             interface, port, property, operation, node, artifact) in a place
             the import does not read, or outside the model it reads.
@@ -79,10 +81,25 @@
     <xsl:variable name="applications" as="element()*"
         select="$norm/x:XMI/*[not(namespace-uri() = ($U, $X))][@x:id]
                   [@*[starts-with(local-name(), 'base_')]]"/>
-    <xsl:for-each select="($understood | $applications)[empty(key('fp:in-pim', string(@x:id), $pim))]">
-      <xsl:variable name="why" as="map(*)" select="fp:why-not-imported(., $root)"/>
+    <xsl:variable name="left-out" as="element()*"
+        select="($understood | $applications)[empty(key('fp:in-pim', string(@x:id), $pim))]"/>
+    <!-- stereotype applications on no element of the model (tools apply
+         their own to diagrams kept in xmi:Extension): one warning per
+         stereotype, naming every application -->
+    <xsl:variable name="unbased" as="element()*"
+        select="($left-out intersect $applications)
+                  [empty(for $a in . return
+                         $a/@*[starts-with(local-name(), 'base_')]/tokenize(.) ! fp:element($a, .))]"/>
+    <xsl:for-each select="$left-out except $unbased">
+      <xsl:variable name="why" as="map(*)" select="fp:why-not-imported(., $root, $pim)"/>
       <xsl:sequence select="f:warn($why?code, string(@x:id), $why?message)"/>
     </xsl:for-each>
+    <xsl:for-each-group select="$unbased" group-by="name()">
+      <xsl:sequence select="f:warn('IMP115', string(@x:id), 'stereotype ' || local-name() || ' is applied '
+          || count(current-group()) || ' time(s) to no element of the model (a tool''s own element, such as a'
+          || ' diagram, or an element not in the file): not imported (xmi:ids='
+          || string-join(current-group()/@x:id, ',') || ')')"/>
+    </xsl:for-each-group>
     <xsl:if test="empty($pim//(pim:component | pim:class | pim:interface | pim:node))">
       <xsl:sequence select="f:warn('IMP030', fp:id($root), 'nothing to generate from: '
           || fp:label($root) || (if ($root/@x:type eq 'Profile') then ' is a profile, not a model: it' else '')
@@ -119,6 +136,7 @@
   <xsl:function name="fp:why-not-imported" as="map(*)">
     <xsl:param name="e" as="element()"/>
     <xsl:param name="root" as="element()"/>
+    <xsl:param name="pim" as="document-node()"/>
     <xsl:variable name="meta" as="xs:string" select="fp:meta($e)"/>
     <xsl:variable name="what" as="xs:string" select="fp:describe($e)"/>
     <xsl:variable name="outside" as="xs:boolean" select="not($e/ancestor::* intersect $root)"/>
@@ -127,9 +145,11 @@
         <xsl:variable name="bases" as="element()*"
             select="$e/@*[starts-with(local-name(), 'base_')]/tokenize(.) ! fp:element($e, .)"/>
         <xsl:sequence select="map { 'code': 'IMP115', 'message': 'stereotype ' || local-name($e)
-            || (if (exists($bases)) then ' is applied to ' || string-join($bases ! fp:label(.), ', ')
-                                         || ', which robomda does not import'
-                else ' is applied to no element of the file')
+            || (if (empty($bases)) then ' is applied to no element of the file'
+                else ' is applied to ' || string-join($bases ! fp:label(.), ', ')
+                     || (if (some $b in $bases satisfies exists(key('fp:in-pim', fp:id($b), $pim)))
+                         then ', whose stereotypes the PIM does not keep'
+                         else ', which robomda does not import'))
             || ': the stereotype is not imported' }"/>
       </xsl:when>
       <xsl:when test="$outside">
