@@ -15,9 +15,12 @@
            dangling reference before this runs.
 
   Rules (by UML metaclass, xmi:type or the feature's default type)
-  - Package, Model (nested models too) -> pim:package. Contents:
-    packagedElement, ownedMember, ownedType; nested classifiers:
-    nestedClassifier and a component's packagedElement.
+  - Package, Model (nested models too) -> pim:package. Contents: every
+    child of a packageable metaclass, whatever the feature (packagedElement,
+    ownedMember, ownedType, nestedClassifier, a Visual Paradigm deployment
+    xmi:type="uml:Component"), and those of children the application does
+    not write (Nodes, Artifacts, behaviours ...: fp:owned-packageables).
+    Signal -> pim:datatype.
   - Deployment elements (Node, Device, ExecutionEnvironment, Artifact,
     DeploymentSpecification, CommunicationPath) are skipped here: they go
     to pim:platform wherever they are in the model (platform.xsl).
@@ -32,10 +35,18 @@
     Classifier, else its client) and EA's Realization class -> component.
   - Interfaces, usages and realizations that point into another model
     (href) have no PIM element to refer to and are not written.
-  - Port: type (interface or class), explicit provided / required (EA
-    children; Usage or InterfaceRealization whose client is the port),
-    isConjugated, isService, isBehavior.
-  - Connector: kind from @kind, else delegation when an end has no
+  - Port: type (interface, class or data type; a protocol, i.e. a
+    Collaboration, gives provided = the interfaces it realizes, required =
+    those it uses, swapped when conjugated), explicit provided / required
+    (EA children; Usage or InterfaceRealization whose client is the port;
+    @via names the dependencies), isConjugated, isService, isBehavior.
+  - Typed elements: a type that is an element of the model the PIM has no
+    element for (a behaviour, an actor ...) gives type-name and
+    type-metaclass, no @type; warnings IMP101 (no type), IMP102 (not a
+    type), IMP103 (a behaviour: a function of the owner).
+  - Connector (an ownedConnector, or a connector anywhere else that joins
+    parts of the classifier: fp:connector-owner): kind from @kind, else
+    delegation when an end has no
     partWithPort and its role is a port of the connector's owner; ends with
     role and part (partWithPort). A connector with an end outside the model
     (href role) is not written.

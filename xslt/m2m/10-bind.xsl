@@ -33,7 +33,9 @@
     class requires (Usage) it, "out" when it provides it, else "out"
     ("in" if the port is conjugated); typed by a class: the interfaces that
     class provides (out) and requires (in), swapped if conjugated. The datum
-    is the one attribute of the interface.
+    is the one attribute of the interface. Typed by a data type (datatype,
+    primitive, enumeration of the model, or a library primitive): one data
+    port, "out" ("in" if conjugated), whose datum is the port itself.
   - connections: connector mode groups connector writer->reader pairs by
     writer port (one connection point per output port); ball-and-socket mode
     makes one connection point per interface with all its writers and
@@ -63,10 +65,14 @@
     with no constraint, consumed in order, plus a sorted list of those
     released by their last constraint.
 
-  Errors (namespace urn:robomda:error, raised with f:fail):
+  Errors (namespace urn:robomda:error, raised with f:fail; every BND001 /
+  BND002 of the model and every port problem (BND002, BND004, BND005) of
+  the instantiated components at once, with f:fail-all):
     BND001  dangling reference: an id attribute points to no PIM element
     BND002  a port is typed by, provides or requires a missing interface
-    BND003  unknown middleware name (names the ExecutionEnvironment)
+    BND003  unknown middleware name (names the ExecutionEnvironment); a
+            Middleware stereotype without kind means the profile default
+            (xslt/import/profile-defaults.xml: OROCOS)
     BND004  an interface used by a port carries no datum (no attribute)
     BND005  an interface used by a port carries several data (attributes)
     BND006  an instance is deployed to no execution environment and the model
