@@ -10,8 +10,9 @@ dependencies, nodes, devices, execution environments, artifacts,
 deployments, communication paths, stereotype applications) must be
 recorded in the PIM by its xmi:id, or be named by a warning whose code is
 listed in docs/errors.md. A run refused with an error generates nothing, and
-says so: the invariant is about what a successful run leaves out. The
-generated models of tests/test_import_generative.py check the same.
+says so: the invariant is about what a successful run leaves out. A
+benchmark model (bench/synth.py) and the random models of
+tests/test_import_generative.py are checked the same way.
 """
 
 from __future__ import annotations
@@ -63,6 +64,16 @@ def test_nothing_is_dropped_in_silence_in_real_samples(model: Path | None) -> No
     if model is None:
         pytest.skip(f"shared samples absent: {SAMPLES}")
     _check(model)
+
+
+def test_nothing_is_dropped_in_silence_in_a_benchmark_model(tmp_path: Path) -> None:
+    """The generated models of bench/synth.py (one of 50 components)."""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("synth", ROOT / "bench" / "synth.py")
+    synth = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(synth)
+    _check(synth.write_model(50, tmp_path / "synth-50.xmi"))
 
 
 def test_the_invariant_can_fail(tmp_path: Path) -> None:
