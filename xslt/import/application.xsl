@@ -88,6 +88,12 @@
                'Extension', 'ProfileApplication', 'PackageImport', 'ElementImport', 'CommunicationPath',
                $dependency-metas, 'Abstraction', 'Dependency', 'InstanceSpecification', 'Slot')"/>
 
+  <!-- the two lists as maps: one look-up per child element -->
+  <xsl:variable name="packageable-map" as="map(xs:string, xs:boolean)"
+      select="map:merge($packageable-metas ! map:entry(., true()))"/>
+  <xsl:variable name="leaf-map" as="map(xs:string, xs:boolean)"
+      select="map:merge(distinct-values($leaf-metas) ! map:entry(., true()))"/>
+
   <!-- the packageable elements owned by $e (a package or a classifier),
        found by metaclass whatever the feature that holds them
        (packagedElement, ownedMember, ownedType, nestedClassifier, a
@@ -98,11 +104,12 @@
   <xsl:function name="fp:owned-packageables" as="element()*">
     <xsl:param name="e" as="element()"/>
     <xsl:for-each select="$e/*[@x:type][not(@href or @x:idref)]">
+      <xsl:variable name="meta" as="xs:string" select="@x:type"/>
       <xsl:choose>
-        <xsl:when test="@x:type = $packageable-metas">
+        <xsl:when test="map:contains($packageable-map, $meta)">
           <xsl:sequence select="."/>
         </xsl:when>
-        <xsl:when test="not(@x:type = $leaf-metas)">
+        <xsl:when test="not(map:contains($leaf-map, $meta))">
           <xsl:sequence select="fp:owned-packageables(.)"/>
         </xsl:when>
       </xsl:choose>

@@ -48,6 +48,7 @@
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
     xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:map="http://www.w3.org/2005/xpath-functions/map"
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
     xmlns:u="urn:robomda:import:uml"
@@ -62,8 +63,10 @@
   <xsl:variable name="understood-metas" as="xs:string+"
       select="($classifier-metas, $relationship-metas, 'Port', 'Property', 'Operation', 'Connector',
                'CommunicationPath')"/>
-  <xsl:variable name="feature-owner-metas" as="xs:string+"
-      select="($classifier-metas, 'DataType', 'Signal')"/>
+  <xsl:variable name="understood-map" as="map(xs:string, xs:boolean)"
+      select="map:merge(distinct-values($understood-metas) ! map:entry(., true()))"/>
+  <xsl:variable name="feature-owner-map" as="map(xs:string, xs:boolean)"
+      select="map:merge(($classifier-metas, 'DataType', 'Signal') ! map:entry(., true()))"/>
 
   <!-- every id the PIM records -->
   <xsl:key name="fp:in-pim" match="pim:*[@id or @via]" use="@id, tokenize(@via)"/>
@@ -73,21 +76,25 @@
     <xsl:param name="norm" as="document-node()"/>
     <xsl:param name="pim" as="document-node()"/>
     <xsl:param name="root" as="element()"/>
-    <xsl:variable name="understood" as="element()*"
-        select="$norm/descendant::*[@x:id][@x:type = $understood-metas][not(@href or @x:idref)]
+    <!-- profiles are usually absent: the ancestor test only when some is there -->
+    <xsl:variable name="profiles" as="element()*" select="$norm/descendant::*[@x:type eq 'Profile']"/>
+    <xsl:variable name="candidates" as="element()*"
+        select="$norm/descendant::*[@x:id][map:contains($understood-map, string(@x:type))][not(@href or @x:idref)]
                   [not(@x:type = ('Property', 'Operation'))
-                   or (../@x:type = $feature-owner-metas and not(self::ownedEnd))]
-                  [empty(ancestor::*[@x:type = 'Profile'])]"/>
+                   or (map:contains($feature-owner-map, string(../@x:type)) and not(self::ownedEnd))]"/>
+    <xsl:variable name="understood" as="element()*"
+        select="if (empty($profiles)) then $candidates
+                else $candidates[empty(ancestor::*[@x:type eq 'Profile'])]"/>
     <xsl:variable name="applications" as="element()*"
         select="$norm/x:XMI/*[not(namespace-uri() = ($U, $X))][@x:id]
                   [@*[starts-with(local-name(), 'base_')]]"/>
     <xsl:variable name="left-out" as="element()*"
-        select="($understood | $applications)[empty(key('fp:in-pim', string(@x:id), $pim))]"/>
+        select="($understood, $applications)[empty(key('fp:in-pim', string(@x:id), $pim))]"/>
     <!-- stereotype applications on no element of the model (tools apply
          their own to diagrams kept in xmi:Extension): one warning per
          stereotype, naming every application -->
     <xsl:variable name="unbased" as="element()*"
-        select="($left-out intersect $applications)
+        select="$left-out[parent::x:XMI]
                   [empty(for $a in . return
                          $a/@*[starts-with(local-name(), 'base_')]/tokenize(.) ! fp:element($a, .))]"/>
     <xsl:for-each select="$left-out except $unbased">
@@ -100,7 +107,7 @@
           || ' diagram, or an element not in the file): not imported (xmi:ids='
           || string-join(current-group()/@x:id, ',') || ')')"/>
     </xsl:for-each-group>
-    <xsl:if test="empty($pim//(pim:component | pim:class | pim:interface | pim:node))">
+    <xsl:if test="empty(($pim//(pim:component | pim:class | pim:interface | pim:node))[1])">
       <xsl:sequence select="f:warn('IMP030', fp:id($root), 'nothing to generate from: '
           || fp:label($root) || (if ($root/@x:type eq 'Profile') then ' is a profile, not a model: it' else '')
           || ' holds no component, class, interface or node'
