@@ -214,3 +214,37 @@ def test_the_import_command_prints_its_warnings(tmp_path: Path, capsys: pytest.C
     assert main(["import", str(DATA / "vp-owners.xmi"), "-o", str(tmp_path / "vp.xml")]) == 0
     err = capsys.readouterr().err
     assert "warning: [IMP110] Connector 'loose'" in err and "vp-owners.xmi:30:" in err
+
+
+def test_every_instance_without_environment_and_every_unknown_middleware(tmp_path: Path) -> None:
+    # two environments named after no middleware, each with a component, and
+    # a third component deployed nowhere (the model has several environments)
+    text = (DATA / "middleware-default.uml").read_text(encoding="utf-8")
+    text = text.replace('<robomda:Middleware xmi:id="mw1" base_ExecutionEnvironment="rttVision"/>', "")
+    text = text.replace('<robomda:Middleware xmi:id="mw2" base_ExecutionEnvironment="rttDetect" kind="OROCOS"/>', "")
+    text = text.replace('<packagedElement xmi:type="uml:Node"',
+                        '<packagedElement xmi:type="uml:Component" xmi:id="lost" name="Lost">'
+                        '<ownedAttribute xmi:type="uml:Port" xmi:id="lostIn" name="image" type="ifImg" '
+                        'isConjugated="true"/></packagedElement><packagedElement xmi:type="uml:Node"')
+    model = tmp_path / "several.uml"
+    model.write_text(text, encoding="utf-8")
+    with pytest.raises(RobomdaError) as info:
+        import_model(model)
+    assert [(d.code, d.xmi_id) for d in info.value.diagnostics if d.severity == "error"] == \
+        [("BND006", "lost"), ("BND003", "rttVision"), ("BND003", "rttDetect")]
+
+
+def test_every_pair_of_same_named_instances(tmp_path: Path) -> None:
+    text = (DATA / "vp-owners.xmi").read_text(encoding="utf-8")
+    # two pairs of parts with one name each
+    text = text.replace('name="logger"', 'name="wheel"').replace(
+        '<ownedAttribute xmi:type="uml:Property" xmi:id="vpPartW"',
+        '<ownedAttribute xmi:type="uml:Property" xmi:id="vpPartX" name="spare" type="vpWheel" aggregation="composite"/>'
+        '<ownedAttribute xmi:type="uml:Property" xmi:id="vpPartY" name="spare" type="vpLog" aggregation="composite"/>'
+        '<ownedAttribute xmi:type="uml:Property" xmi:id="vpPartW"')
+    model = tmp_path / "names.xmi"
+    model.write_text(text, encoding="utf-8")
+    with pytest.raises(RobomdaError) as info:
+        import_model(model)
+    assert [(d.code, d.xmi_id) for d in info.value.diagnostics if d.severity == "error"] == \
+        [("BND009", "vpPartY"), ("BND009", "vpPartL")]

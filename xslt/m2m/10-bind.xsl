@@ -66,8 +66,9 @@
     released by their last constraint.
 
   Errors (namespace urn:robomda:error, raised with f:fail; every BND001 /
-  BND002 of the model and every port problem (BND002, BND004, BND005) of
-  the instantiated components at once, with f:fail-all):
+  BND002 of the model, every BND006 / BND003 of the instances, every
+  BND009 and every port problem (BND002, BND004, BND005) of the
+  instantiated components at once, with f:fail-all):
     BND001  dangling reference: an id attribute points to no PIM element
     BND002  a port is typed by, provides or requires a missing interface
     BND003  unknown middleware name (names the ExecutionEnvironment); a
@@ -368,9 +369,27 @@
         else if ($key = ('ROS', 'ROS1')) then 'ROS'
         else if ($key eq 'ROS2') then 'ROS2'
         else if ($key = ('OPENRTM', 'OPENRTMAIST')) then 'OpenRTM'
-        else f:fail('BND003', $ee/@id, 'unknown middleware ''' || $raw
-                    || ''' of execution environment ''' || $ee/@name
-                    || ''' (expected OROCOS, ROS, ROS2 or OpenRTM)')"/>
+        else f:fail-all(fp:middleware-problem($ee, $raw))"/>
+  </xsl:function>
+
+  <!-- BND003 about execution environment $ee whose middleware reads $raw -->
+  <xsl:function name="fp:middleware-problem" as="map(*)">
+    <xsl:param name="ee" as="element(pim:node)"/>
+    <xsl:param name="raw" as="xs:string"/>
+    <xsl:sequence select="map { 'code': 'BND003', 'id': string($ee/@id), 'message': 'unknown middleware ''' || $raw
+        || ''' of execution environment ''' || $ee/@name || ''' (expected OROCOS, ROS, ROS2 or OpenRTM)' }"/>
+  </xsl:function>
+
+  <!-- BND003 about $ee, if its middleware is unknown (fp:middleware) -->
+  <xsl:function name="fp:middleware-problems" as="map(*)?">
+    <xsl:param name="ee" as="element(pim:node)"/>
+    <xsl:variable name="tag" as="xs:string?"
+        select="(fp:tag($ee, 'Middleware', 'kind')[normalize-space(.)],
+                 if (exists(f:stereotype($ee, 'Middleware'))) then fp:tag-default('Middleware', 'kind') else ())[1]"/>
+    <xsl:variable name="raw" as="xs:string" select="if (normalize-space($tag)) then fp:literal($tag) else string($ee/@name)"/>
+    <xsl:variable name="key" as="xs:string" select="upper-case(replace($raw, '[^A-Za-z0-9]', ''))"/>
+    <xsl:sequence select="if ($key = ('OROCOS', 'OROCOSRTT', 'RTT', 'OROCOSRTT2', 'ROS', 'ROS1', 'ROS2', 'OPENRTM', 'OPENRTMAIST'))
+                          then () else fp:middleware-problem($ee, $raw)"/>
   </xsl:function>
 
   <!-- ========================================================= binding -->
@@ -385,6 +404,29 @@
     <xsl:variable name="hosts" as="element(pim:node)*" select="fp:hosts($root)"/>
     <!-- instances and bound components live in documents of their own, so
          that keys find them (temporary trees, copied to the result) -->
+    <!-- every instance without an execution environment (BND006) and
+         every environment of an unknown middleware (BND003) at once -->
+    <xsl:variable name="instance-ees" as="element(pim:node)*">
+      <xsl:choose>
+        <xsl:when test="exists($tops)">
+          <xsl:for-each select="$tops/pim:part[key('fp:id', @type, $root)/self::pim:component]">
+            <xsl:sequence select="fp:instance-ee(., key('fp:id', @type, $root), .., $ees)"/>
+          </xsl:for-each>
+        </xsl:when>
+        <xsl:otherwise>
+          <xsl:for-each select="$components[not(@abstract = ('true', '1'))][pim:port or pim:realization]">
+            <xsl:sequence select="fp:instance-ee((), ., (), $ees)"/>
+          </xsl:for-each>
+        </xsl:otherwise>
+      </xsl:choose>
+    </xsl:variable>
+    <xsl:sequence select="f:fail-all((
+        if (exists($tops)) then $tops/pim:part[key('fp:id', @type, $root)/self::pim:component]
+                                  [empty(fp:instance-ee(., key('fp:id', @type, $root), .., $ees))]
+                                ! fp:no-ee-problem(., key('fp:id', @type, $root), $ees)
+        else $components[not(@abstract = ('true', '1'))][pim:port or pim:realization]
+                        [empty(fp:instance-ee((), ., (), $ees))] ! fp:no-ee-problem((), ., $ees),
+        ($instance-ees/.) ! fp:middleware-problems(.)))"/>
     <xsl:variable name="instance-tree" as="document-node()">
       <xsl:document>
         <xsl:choose>
@@ -402,12 +444,15 @@
       </xsl:document>
     </xsl:variable>
     <xsl:variable name="instances" as="element(pim:instance)*" select="$instance-tree/pim:instance"/>
-    <xsl:for-each-group select="$instances" group-by="@name">
-      <xsl:if test="count(current-group()) gt 1">
-        <xsl:sequence select="f:fail('BND009', current-group()[2]/@xmi-id,
-            'two instances are named ''' || current-grouping-key() || '''')"/>
-      </xsl:if>
-    </xsl:for-each-group>
+    <xsl:variable name="same-names" as="map(*)*">
+      <xsl:for-each-group select="$instances" group-by="@name">
+        <xsl:if test="count(current-group()) gt 1">
+          <xsl:sequence select="map { 'code': 'BND009', 'id': string(current-group()[2]/@xmi-id),
+              'message': 'two instances are named ''' || current-grouping-key() || '''' }"/>
+        </xsl:if>
+      </xsl:for-each-group>
+    </xsl:variable>
+    <xsl:sequence select="f:fail-all($same-names)"/>
     <!-- every port problem of every instantiated component at once -->
     <xsl:sequence select="f:fail-all($components[exists(key('fp:instance-by-component', @id, $instance-tree))]
                           ! (let $c := ., $r := fp:realizing-class(.) return $c/pim:port ! fp:port-problems(., $c, $r)))"/>
@@ -629,13 +674,10 @@
         select="key('fp:manifestation-by-element', $ids, $root)/../@id ! string(.)"/>
     <xsl:variable name="deployments" as="element(pim:deployment)*"
         select="key('fp:deployment-by-deployed', ($ids, $artifact-ids), $root)"/>
-    <xsl:variable name="ee" as="element(pim:node)?"
-        select="($deployments ! fp:deployment-ee(.), if (count($ees) eq 1) then $ees else ())[1]"/>
+    <xsl:variable name="ee" as="element(pim:node)?" select="fp:instance-ee($part, $c, $top, $ees)"/>
     <xsl:variable name="inst-id" as="xs:string" select="string(($part/@id, $c/@id)[1])"/>
     <xsl:if test="empty($ee)">
-      <xsl:sequence select="f:fail('BND006', $inst-id,
-          'component instance ''' || ($part/@name, $c/@name)[1] || ''' is deployed to no execution environment'
-          || ' and the model has ' || count($ees) || ' of them')"/>
+      <xsl:sequence select="f:fail-all(fp:no-ee-problem($part, $c, $ees))"/>
     </xsl:if>
     <xsl:variable name="host" as="element(pim:node)?"
         select="(fp:host-of($ee, $deployments/.., $hosts), if (count($hosts) eq 1) then $hosts else ())[1]"/>
@@ -662,6 +704,33 @@
         </pim:deployed-on>
       </xsl:for-each>
     </pim:instance>
+  </xsl:function>
+
+  <!-- the execution environment of the instance of $part (or of
+       component $c when instances come from components), as fp:instance
+       finds it -->
+  <xsl:function name="fp:instance-ee" as="element(pim:node)?">
+    <xsl:param name="part" as="element(pim:part)?"/>
+    <xsl:param name="c" as="element(pim:component)"/>
+    <xsl:param name="top" as="element(pim:component)?"/>
+    <xsl:param name="ees" as="element(pim:node)*"/>
+    <xsl:variable name="root" as="document-node()" select="root($c)"/>
+    <xsl:variable name="r" as="element(pim:class)?" select="fp:realizing-class($c)"/>
+    <xsl:variable name="ids" as="xs:string*" select="($part/@id, $c/@id, $top/@id, $r/@id) ! string(.)"/>
+    <xsl:variable name="artifact-ids" as="xs:string*"
+        select="key('fp:manifestation-by-element', $ids, $root)/../@id ! string(.)"/>
+    <xsl:sequence select="(key('fp:deployment-by-deployed', ($ids, $artifact-ids), $root) ! fp:deployment-ee(.),
+                           if (count($ees) eq 1) then $ees else ())[1]"/>
+  </xsl:function>
+
+  <!-- BND006 about the instance of $part / $c -->
+  <xsl:function name="fp:no-ee-problem" as="map(*)">
+    <xsl:param name="part" as="element(pim:part)?"/>
+    <xsl:param name="c" as="element(pim:component)"/>
+    <xsl:param name="ees" as="element(pim:node)*"/>
+    <xsl:sequence select="map { 'code': 'BND006', 'id': string(($part/@id, $c/@id)[1]), 'message':
+        'component instance ''' || ($part/@name, $c/@name)[1] || ''' is deployed to no execution environment'
+        || ' and the model has ' || count($ees) || ' of them' }"/>
   </xsl:function>
 
   <!-- the execution environment deployment $d reaches: its target, else
