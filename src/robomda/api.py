@@ -107,14 +107,20 @@ def _context(model: Path, out: Path | None, package_name: str, type_map: Path | 
     }
 
 
-def import_model(model: Path | str, *, bind: bool = True) -> str:
-    """The PIM of ``model`` as XML text (bound to its platform unless ``bind`` is false)."""
+def import_model(model: Path | str, *, bind: bool = True, warnings: list[Diagnostic] | None = None) -> str:
+    """The PIM of ``model`` as XML text (bound to its platform unless ``bind`` is false).
+
+    The warnings and notes of the run are appended to ``warnings`` when given.
+    """
     model = Path(model)
     _check_readable(model)
     chain = pipelines.load(pipeline_path("import"))
     if not bind:
         chain = pipelines.Pipeline(chain.name, chain.yields, chain.description, chain.steps[:1], chain.manifest)
-    return _run(chain, model, _context(model, None, "")).output
+    result = _run(chain, model, _context(model, None, ""))
+    if warnings is not None:
+        warnings.extend(result.warnings)
+    return result.output
 
 
 def _usage_target(target: str) -> None:

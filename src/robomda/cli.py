@@ -175,7 +175,9 @@ def main(argv: list[str] | None = None) -> int:
                       + (f"; kept edited stale files: {', '.join(report.kept_stale)}" if report.kept_stale else ""),
                       file=sys.stdout if fmt == "text" else sys.stderr)
         else:
-            text = import_model(args.model, bind=not args.no_bind)
+            found: list[Diagnostic] = []
+            text = import_model(args.model, bind=not args.no_bind, warnings=found)
+            _report("text", found, EXIT_OK)
             dest = _pim_destination(args.model, args.output)
             _write_model_file(dest, text)
             print(f"robomda: PIM written to {dest}")

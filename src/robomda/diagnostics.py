@@ -25,6 +25,7 @@ __all__ = [
     "EXIT_INTERNAL",
     "parse_stylesheet_error",
     "parse_stylesheet_warning",
+    "parse_stylesheet_message",
     "model_element_id",
 ]
 
@@ -98,6 +99,27 @@ def parse_stylesheet_warning(text: str) -> tuple[str, str, str] | None:
     if not text.startswith("warning: "):
         return None
     return parse_stylesheet_error(text[len("warning: "):])
+
+
+def parse_stylesheet_message(text: str) -> tuple[str, str, str, str] | None:
+    """Split an ``xsl:message`` of a robomda stylesheet into (severity, code, message, xmi id).
+
+    ``warning: CODE: ...`` is a warning, ``error: CODE: ...`` an error the
+    stage reports before it stops (f:report-error), anything else a note
+    (code NOTE): no message a stylesheet writes is ever dropped.
+    """
+    stripped = text.strip()
+    if not stripped:
+        return None
+    for severity in ("warning", "error"):
+        if stripped.startswith(severity + ": "):
+            parsed = parse_stylesheet_error(stripped[len(severity) + 2:])
+            if parsed is not None:
+                return (severity, *parsed)
+    parsed = parse_stylesheet_error(stripped)
+    if parsed is not None and stripped.startswith(parsed[0]):
+        return ("info", *parsed)
+    return "info", "NOTE", " ".join(stripped.split()), ""
 
 
 def parse_stylesheet_error(text: str) -> tuple[str, str, str] | None:

@@ -27,7 +27,7 @@ from robomda.diagnostics import (
     RobomdaError,
     XmiLocator,
     parse_stylesheet_error,
-    parse_stylesheet_warning,
+    parse_stylesheet_message,
 )
 from robomda.engine import Engine, TransformError, Tree
 from robomda.resources import resource_root
@@ -130,8 +130,11 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
     ``context`` supplies the values of parameters declared with ``from``.
     Each output is validated against its step's schema, then checked by the
     step's rules, before the next step sees it. A stylesheet error stops at
-    once; rule findings at error level stop after the whole check, and the
-    error carries every finding so far (warnings included).
+    once, with the errors the stage reported before it (f:fail-all: every
+    error of the stage); rule findings at error level stop after the whole
+    check, and the error carries every finding so far (warnings included).
+    Every message a stylesheet writes becomes a diagnostic: ``warning:``,
+    ``error:``, or a note (code NOTE).
     """
     locator = XmiLocator(model)
     result = RunResult()
@@ -145,13 +148,17 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
             text, handed = engine.run(step.stylesheet, params, previous, keep_tree=index < len(chain) - 1)
         except TransformError as exc:
             failure = _transform_failure(exc, step, locator)
-            failure.diagnostics[:0] = result.warnings
+            found, errors = _messages(engine.messages, step, locator)
+            # the error that stopped the stage first, then the others it
+            # reported before stopping (f:fail-all: in the stage's order)
+            if failure.exit_code != EXIT_INTERNAL:
+                failure.diagnostics.extend(errors)
+            failure.diagnostics[:0] = result.warnings + found
             raise failure from None
-        for message in engine.messages:
-            parsed = parse_stylesheet_warning(message)
-            if parsed is not None:
-                code, text_, xmi_id = parsed
-                result.warnings.append(locator.diagnostic(code, text_, xmi_id, severity="warning", step=step.name))
+        found, errors = _messages(engine.messages, step, locator)
+        result.warnings.extend(found)
+        if errors:  # reported without stopping: an error all the same
+            raise RobomdaError(result.warnings + errors, EXIT_FINDINGS)
         transformed = time.perf_counter()
         tree, violations = validate(text, step.schema)
         validated = time.perf_counter()
@@ -171,6 +178,20 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
         result.tree = tree
         previous = handed if handed is not None else text
     return result
+
+
+def _messages(messages: list[str], step: Step, locator: XmiLocator) -> tuple[list[Diagnostic], list[Diagnostic]]:
+    """The stylesheet's messages as (warnings and notes, errors), located."""
+    found: list[Diagnostic] = []
+    errors: list[Diagnostic] = []
+    for message in messages:
+        parsed = parse_stylesheet_message(message)
+        if parsed is None:
+            continue
+        severity, code, text, xmi_id = parsed
+        diag = locator.diagnostic(code, text, xmi_id, severity=severity, step=step.name)
+        (errors if severity == "error" else found).append(diag)
+    return found, errors
 
 
 def _transform_failure(exc: TransformError, step: Step, locator: XmiLocator) -> RobomdaError:

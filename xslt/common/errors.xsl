@@ -6,7 +6,9 @@
   Writes:  nothing.
   Params:  none.
   Errors:  f:fail raises the code it is given, in namespace urn:robomda:error;
-           f:warn reports a warning and lets the run go on.
+           f:warn reports a warning and lets the run go on; f:report-error
+           reports an error and lets the stage find the others, f:fail-all
+           reports all of a list and stops.
 
   Contract with the driver (src/robomda/diagnostics.py): the error's
   description is "CODE: MESSAGE [xmi:id=ID]" (Saxon's Python API passes on
@@ -31,6 +33,32 @@
     <xsl:param name="message" as="xs:string"/>
     <xsl:sequence select="error(QName('urn:robomda:error', 'err:' || $code),
                                 $code || ': ' || $message || ' [xmi:id=' || string($id) || ']')"/>
+  </xsl:function>
+
+  <!-- Report error $code about the element with id $id and go on, so that
+       one run reports every error of a stage: written as xsl:message
+       "error: CODE: MESSAGE [xmi:id=ID]". The stage must then end with
+       f:fail (the first error), which the driver reports before the
+       reported ones; other engines print them. -->
+  <xsl:function name="f:report-error" as="empty-sequence()">
+    <xsl:param name="code" as="xs:string"/>
+    <xsl:param name="id" as="xs:string?"/>
+    <xsl:param name="message" as="xs:string"/>
+    <xsl:message select="'error: ' || $code || ': ' || $message || ' [xmi:id=' || string($id) || ']'"/>
+  </xsl:function>
+
+  <!-- Raise every error of $errors (maps with code, id, message), in
+       order: the first with f:fail, after reporting the others with
+       f:report-error. Nothing when $errors is empty. -->
+  <xsl:function name="f:fail-all" as="item()*">
+    <!-- item()* so a call fits any context; it returns only when $errors is empty -->
+    <xsl:param name="errors" as="map(*)*"/>
+    <xsl:if test="exists($errors)">
+      <xsl:for-each select="subsequence($errors, 2)">
+        <xsl:sequence select="f:report-error(?code, ?id, ?message)"/>
+      </xsl:for-each>
+      <xsl:sequence select="f:fail($errors[1]?code, $errors[1]?id, $errors[1]?message)"/>
+    </xsl:if>
   </xsl:function>
 
   <!-- Report warning $code about the element with id $id; the run goes on.

@@ -15,9 +15,12 @@
            dangling reference before this runs.
 
   Rules (by UML metaclass, xmi:type or the feature's default type)
-  - Package, Model (nested models too) -> pim:package. Contents:
-    packagedElement, ownedMember, ownedType; nested classifiers:
-    nestedClassifier and a component's packagedElement.
+  - Package, Model (nested models too) -> pim:package. Contents: every
+    child of a packageable metaclass, whatever the feature (packagedElement,
+    ownedMember, ownedType, nestedClassifier, a Visual Paradigm deployment
+    xmi:type="uml:Component"), and those of children the application does
+    not write (Nodes, Artifacts, behaviours ...: fp:owned-packageables).
+    Signal -> pim:datatype.
   - Deployment elements (Node, Device, ExecutionEnvironment, Artifact,
     DeploymentSpecification, CommunicationPath) are skipped here: they go
     to pim:platform wherever they are in the model (platform.xsl).
@@ -32,10 +35,18 @@
     Classifier, else its client) and EA's Realization class -> component.
   - Interfaces, usages and realizations that point into another model
     (href) have no PIM element to refer to and are not written.
-  - Port: type (interface or class), explicit provided / required (EA
-    children; Usage or InterfaceRealization whose client is the port),
-    isConjugated, isService, isBehavior.
-  - Connector: kind from @kind, else delegation when an end has no
+  - Port: type (interface, class or data type; a protocol, i.e. a
+    Collaboration, gives provided = the interfaces it realizes, required =
+    those it uses, swapped when conjugated), explicit provided / required
+    (EA children; Usage or InterfaceRealization whose client is the port;
+    @via names the dependencies), isConjugated, isService, isBehavior.
+  - Typed elements: a type that is an element of the model the PIM has no
+    element for (a behaviour, an actor ...) gives type-name and
+    type-metaclass, no @type; warnings IMP101 (no type), IMP102 (not a
+    type), IMP103 (a behaviour: a function of the owner).
+  - Connector (an ownedConnector, or a connector anywhere else that joins
+    parts of the classifier: fp:connector-owner): kind from @kind, else
+    delegation when an end has no
     partWithPort and its role is a port of the connector's owner; ends with
     role and part (partWithPort). A connector with an end outside the model
     (href role) is not written.
@@ -47,7 +58,8 @@
     wherever it is owned (package or classifier). Every other plain
     Dependency carries no PIM content and is not written. Clients and
     suppliers in another model (href) are not written; a dependency left
-    without a client or a supplier is not written (with a message).
+    without a client or a supplier is not written (IMP111).
+  - What is not written is named by a warning (report.xsl, IMP110-IMP116).
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -64,10 +76,44 @@
   <xsl:mode name="mp:packageable" on-no-match="deep-skip"/>
   <xsl:mode name="mp:feature" on-no-match="deep-skip"/>
 
-  <!-- the packageable elements owned by $e (a package or a classifier) -->
+  <!-- the metaclasses mode mp:packageable writes to the PIM -->
+  <xsl:variable name="packageable-metas" as="xs:string+"
+      select="('Package', 'Model', 'PrimitiveType', 'DataType', 'Signal', 'Enumeration', 'Class',
+               'Interface', 'Component', 'Dependency')"/>
+  <!-- what never holds a packageable element robomda reads: features,
+       relationships, values, profiles -->
+  <xsl:variable name="leaf-metas" as="xs:string+"
+      select="('Property', 'Port', 'Operation', 'Parameter', 'Connector', 'ConnectorEnd', 'Generalization',
+               'Comment', 'Constraint', 'EnumerationLiteral', 'Association', 'Profile', 'Stereotype',
+               'Extension', 'ProfileApplication', 'PackageImport', 'ElementImport', 'CommunicationPath',
+               $dependency-metas, 'Abstraction', 'Dependency', 'InstanceSpecification', 'Slot')"/>
+
+  <!-- the two lists as maps: one look-up per child element -->
+  <xsl:variable name="packageable-map" as="map(xs:string, xs:boolean)"
+      select="map:merge($packageable-metas ! map:entry(., true()))"/>
+  <xsl:variable name="leaf-map" as="map(xs:string, xs:boolean)"
+      select="map:merge(distinct-values($leaf-metas) ! map:entry(., true()))"/>
+
+  <!-- the packageable elements owned by $e (a package or a classifier),
+       found by metaclass whatever the feature that holds them
+       (packagedElement, ownedMember, ownedType, nestedClassifier, a
+       Visual Paradigm deployment xmi:type="uml:Component" ...), and those
+       owned by an element the application does not write (a Node, an
+       Artifact, an Activity, a Collaboration ...: EA nests components in
+       Nodes), which keep their qualified name under that owner -->
   <xsl:function name="fp:owned-packageables" as="element()*">
     <xsl:param name="e" as="element()"/>
-    <xsl:sequence select="$e/(packagedElement | ownedMember | ownedType | nestedClassifier)"/>
+    <xsl:for-each select="$e/*[@x:type][not(@href or @x:idref)]">
+      <xsl:variable name="meta" as="xs:string" select="@x:type"/>
+      <xsl:choose>
+        <xsl:when test="map:contains($packageable-map, $meta)">
+          <xsl:sequence select="."/>
+        </xsl:when>
+        <xsl:when test="not(map:contains($leaf-map, $meta))">
+          <xsl:sequence select="fp:owned-packageables(.)"/>
+        </xsl:when>
+      </xsl:choose>
+    </xsl:for-each>
   </xsl:function>
 
   <!-- ========================================================= packages -->
@@ -89,7 +135,8 @@
     </pim:primitive>
   </xsl:template>
 
-  <xsl:template match="*[@x:type eq 'DataType']" mode="mp:packageable"
+  <!-- a Signal is a classifier of data: the PIM holds it as a datatype -->
+  <xsl:template match="*[@x:type = ('DataType', 'Signal')]" mode="mp:packageable"
                 as="element(pim:datatype)">
     <xsl:param name="root" as="element()" tunnel="yes"/>
     <pim:datatype id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
@@ -230,10 +277,64 @@
     <xsl:apply-templates select="ownedOperation" mode="mp:feature"/>
     <xsl:apply-templates select="ownedConnector[not(end/role/@href or end/partWithPort/@href)]"
         mode="mp:feature"/>
-    <xsl:for-each select="ownedConnector[end/role/@href or end/partWithPort/@href]">
-      <xsl:message select="'robomda import: connector ' || fp:label(.) || ' [xmi:id=' || fp:id(.)
-                           || '] has an end in another model; not imported'"/>
-    </xsl:for-each>
+    <!-- connectors a tool wrote elsewhere (Visual Paradigm: under the
+         Model) belong to the classifier that owns the parts they join -->
+    <xsl:apply-templates select="key('fp:stray-connector', $id)[not(end/role/@href or end/partWithPort/@href)]"
+        mode="mp:feature">
+      <xsl:with-param name="owner" select="$c"/>
+    </xsl:apply-templates>
+  </xsl:template>
+
+  <!-- connectors that are not an ownedConnector of a class, component or
+       interface, by the classifier they belong to (fp:connector-owner) -->
+  <xsl:key name="fp:stray-connector"
+      match="*[@x:type eq 'Connector'][not(self::ownedConnector and ../@x:type = ('Class', 'Component', 'Interface'))]"
+      use="fp:connector-owner(.)"/>
+
+  <!-- the id of the classifier a connector belongs to: the owner of the
+       part (partWithPort) of its first end that has one, else of the first
+       end's role -->
+  <xsl:function name="fp:connector-owner" as="xs:string?">
+    <xsl:param name="k" as="element()"/>
+    <xsl:variable name="owner" as="element()?"
+        select="($k/end ! fp:targets(., 'partWithPort'), $k/end ! fp:targets(., 'role'))[1]/.."/>
+    <xsl:sequence select="$owner[@x:type = ('Class', 'Component', 'Interface')] ! fp:id(.)"/>
+  </xsl:function>
+
+  <!-- the warnings about the type of a Property or Port $e: none (IMP101),
+       or a model element that is not a type (IMP102), a behaviour (IMP103:
+       the attribute is a function of its owner, docs/profile.md) -->
+  <xsl:template name="tp:type-warnings" as="empty-sequence()">
+    <xsl:param name="e" as="element()"/>
+    <xsl:param name="typed" as="attribute()*"/>
+    <xsl:variable name="meta" as="xs:string" select="fp:meta($e)"/>
+    <xsl:variable name="what" as="xs:string"
+        select="(if ($meta eq 'Port') then 'port ''' else 'attribute ''') || $e/@name || ''' of '
+                || fp:label($e/..)"/>
+    <xsl:variable name="t-meta" as="xs:string?" select="$typed[name() eq 'type-metaclass']/string()"/>
+    <xsl:choose>
+      <xsl:when test="empty($typed[name() = ('type', 'type-name')])">
+        <xsl:if test="$meta ne 'Port' or empty(fp:exposed($e, 'provided') | fp:exposed($e, 'required')
+                                              | key('fp:dep-by-client', fp:id($e)))">
+          <xsl:sequence select="f:warn('IMP101', fp:id($e), $what || ' has no type'
+              || (if ($meta eq 'Port') then ': no data flows through it' else ': no target generates it')
+              || ' (give it a type)')"/>
+        </xsl:if>
+      </xsl:when>
+      <xsl:when test="empty($t-meta) or ($meta eq 'Port' and $t-meta eq 'Collaboration')"/>
+      <xsl:when test="$t-meta = $behavior-metas and $meta ne 'Port'">
+        <xsl:sequence select="f:warn('IMP103', fp:id($e), $what || ' is typed by the ' || $t-meta || ' '''
+            || $typed[name() eq 'type-name'] || ''': imported as a function of '
+            || fp:label($e/..) || ' (docs/profile.md); no target generates code for it yet')"/>
+      </xsl:when>
+      <xsl:otherwise>
+        <xsl:sequence select="f:warn('IMP102', fp:id($e), $what || ' is typed by the ' || $t-meta || ' '''
+            || $typed[name() eq 'type-name'] || ''', which is not a type robomda reads'
+            || (if ($meta eq 'Port') then ' (a port is typed by an interface, a protocol (Collaboration), a class'
+                                          || ' or a data type): no data flows through it'
+                else ': no target generates it'))"/>
+      </xsl:otherwise>
+    </xsl:choose>
   </xsl:template>
 
   <!-- a composite property typed by a class or component: a part -->
@@ -241,7 +342,7 @@
     <xsl:param name="p" as="element()"/>
     <xsl:variable name="t" as="element()?" select="fp:type-element($p)"/>
     <xsl:variable name="href-type" as="element()?" select="$p/type[@href][1]"/>
-    <xsl:sequence select="$p/@aggregation = 'composite'
+    <xsl:sequence select="$p/@aggregation = 'composite' and exists(($t, $href-type))
         and (fp:meta(($t, $href-type)[1]) = ('Class', 'Component'))"/>
   </xsl:function>
 
@@ -279,10 +380,9 @@
     <xsl:param name="root" as="element()" tunnel="yes"/>
     <xsl:choose>
       <xsl:when test="not(fp:is-start-after(.))"/>
-      <xsl:when test="empty(fp:targets(., 'client')) or empty(fp:targets(., 'supplier'))">
-        <xsl:message select="'robomda import: dependency ' || fp:label(.) || ' [xmi:id=' || fp:id(.)
-                             || '] has no client or no supplier in this model; not imported'"/>
-      </xsl:when>
+      <!-- without a client or a supplier in the model: not imported
+           (IMP111, report.xsl) -->
+      <xsl:when test="empty(fp:targets(., 'client')) or empty(fp:targets(., 'supplier'))"/>
       <xsl:otherwise>
         <pim:dependency id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
           <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
@@ -308,8 +408,13 @@
   <xsl:template match="ownedAttribute | ownedEnd" mode="mp:feature" as="element(pim:attribute)">
     <xsl:param name="root" as="element()" tunnel="yes"/>
     <xsl:param name="href-types" as="map(*)" tunnel="yes"/>
+    <xsl:variable name="typed" as="attribute()*" select="fp:typed(., $href-types)"/>
+    <xsl:call-template name="tp:type-warnings">
+      <xsl:with-param name="e" select="."/>
+      <xsl:with-param name="typed" select="$typed"/>
+    </xsl:call-template>
     <pim:attribute id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
-      <xsl:sequence select="fp:typed(., $href-types)"/>
+      <xsl:sequence select="$typed"/>
       <xsl:attribute name="visibility" select="fp:visibility(.)"/>
       <xsl:attribute name="static" select="fp:bool(@isStatic, false())"/>
       <xsl:attribute name="read-only" select="fp:bool(@isReadOnly, false())"/>
@@ -326,8 +431,30 @@
     <xsl:param name="root" as="element()" tunnel="yes"/>
     <xsl:param name="href-types" as="map(*)" tunnel="yes"/>
     <xsl:variable name="id" as="xs:string" select="fp:id(.)"/>
+    <xsl:variable name="typed" as="attribute()*" select="fp:typed(., $href-types)"/>
+    <xsl:call-template name="tp:type-warnings">
+      <xsl:with-param name="e" select="."/>
+      <xsl:with-param name="typed" select="$typed"/>
+    </xsl:call-template>
+    <!-- a port typed by a protocol (Papyrus-RT: a Collaboration): the
+         interfaces the protocol realizes are provided, those it uses are
+         required; the other way round when the port is conjugated -->
+    <xsl:variable name="protocol" as="element()?" select="fp:type-element(.)[@x:type eq 'Collaboration']"/>
+    <xsl:variable name="conjugated" as="xs:boolean" select="fp:bool(@isConjugated, false()) eq 'true'"/>
+    <xsl:variable name="protocol-realized" as="element()*"
+        select="$protocol ! (interfaceRealization[empty(fp:ref-ids(., 'client'))]
+                             | key('fp:dep-by-client', fp:id(.))[@x:type = ('InterfaceRealization', 'Realization')])"/>
+    <xsl:variable name="protocol-used" as="element()*"
+        select="$protocol ! key('fp:dep-by-client', fp:id(.))[@x:type eq 'Usage']"/>
+    <xsl:variable name="own-realized" as="element()*"
+        select="key('fp:dep-by-client', $id)[@x:type = ('InterfaceRealization', 'Realization')]"/>
+    <xsl:variable name="own-used" as="element()*" select="key('fp:dep-by-client', $id)[@x:type eq 'Usage']"/>
+    <xsl:variable name="provided-deps" as="element()*"
+        select="$own-realized | (if ($conjugated) then $protocol-used else $protocol-realized)"/>
+    <xsl:variable name="required-deps" as="element()*"
+        select="$own-used | (if ($conjugated) then $protocol-realized else $protocol-used)"/>
     <pim:port id="{$id}" name="{@name}" qualified-name="{fp:qname(., $root)}">
-      <xsl:sequence select="fp:typed(., $href-types)"/>
+      <xsl:sequence select="$typed"/>
       <xsl:attribute name="visibility" select="fp:visibility(.)"/>
       <xsl:attribute name="conjugated" select="fp:bool(@isConjugated, false())"/>
       <xsl:attribute name="service" select="fp:bool(@isService, true())"/>
@@ -336,17 +463,26 @@
       <xsl:variable name="provided" as="element()*"
           select="fp:exposed(., 'provided') ! fp:interface-of(.),
                   fp:targets(., 'provided')[@x:type eq 'Interface'],
-                  key('fp:dep-by-client', $id)[@x:type = ('InterfaceRealization', 'Realization')]
-                    ! fp:realized-interfaces(.)"/>
+                  $provided-deps ! fp:realized-interfaces(.)"/>
       <xsl:for-each select="distinct-values($provided ! fp:id(.))">
-        <pim:provided interface="{.}"/>
+        <xsl:variable name="i" as="xs:string" select="."/>
+        <pim:provided interface="{$i}">
+          <xsl:call-template name="tp:via">
+            <xsl:with-param name="deps" select="$provided-deps[fp:realized-interfaces(.) ! fp:id(.) = $i]"/>
+          </xsl:call-template>
+        </pim:provided>
       </xsl:for-each>
       <xsl:variable name="required" as="element()*"
           select="fp:exposed(., 'required') ! fp:interface-of(.),
                   fp:targets(., 'required')[@x:type eq 'Interface'],
-                  key('fp:dep-by-client', $id)[@x:type eq 'Usage'] ! fp:used-interfaces(.)"/>
+                  $required-deps ! fp:used-interfaces(.)"/>
       <xsl:for-each select="distinct-values($required ! fp:id(.))">
-        <pim:required interface="{.}"/>
+        <xsl:variable name="i" as="xs:string" select="."/>
+        <pim:required interface="{$i}">
+          <xsl:call-template name="tp:via">
+            <xsl:with-param name="deps" select="$required-deps[fp:used-interfaces(.) ! fp:id(.) = $i]"/>
+          </xsl:call-template>
+        </pim:required>
       </xsl:for-each>
     </pim:port>
   </xsl:template>
@@ -377,9 +513,19 @@
     </pim:operation>
   </xsl:template>
 
-  <xsl:template match="ownedConnector" mode="mp:feature" as="element(pim:connector)?">
+  <!-- @via: the ids of the dependencies $deps that give a port its
+       provided or required interface -->
+  <xsl:template name="tp:via" as="attribute()?">
+    <xsl:param name="deps" as="element()*"/>
+    <xsl:if test="exists($deps)">
+      <xsl:attribute name="via" select="distinct-values($deps ! fp:id(.))"/>
+    </xsl:if>
+  </xsl:template>
+
+  <xsl:template match="*[@x:type eq 'Connector']" mode="mp:feature" as="element(pim:connector)?">
     <xsl:param name="root" as="element()" tunnel="yes"/>
-    <xsl:variable name="owner" as="element()" select=".."/>
+    <!-- the classifier the connector belongs to -->
+    <xsl:param name="owner" as="element()" select=".."/>
     <xsl:variable name="ends" as="element()*" select="end[exists(fp:targets(., 'role'))]"/>
     <xsl:if test="count($ends) ge 2">
       <xsl:variable name="kind" as="xs:string" select="

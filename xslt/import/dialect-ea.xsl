@@ -21,7 +21,8 @@
   - Exposed interfaces: EA writes a component's or port's provided and
     required interfaces as child elements <provided xmi:id=".." xmi:idref=
     "INTERFACE"/> and <required .../>; the xmi:idref names the interface
-    (absent when the exposed interface is not classified). A Usage or
+    (absent when the exposed interface is not classified; an xmi:type
+    uml:Interface on it does not make it an interface of its own). A Usage or
     Dependency may connect such exposed elements; fp:interface-of sees
     through them to the interface.
   - Component realization: EA writes a generic uml:Realization from the
@@ -68,9 +69,9 @@
     <xsl:param name="e" as="element()?"/>
     <xsl:sequence select="
         if (empty($e)) then ()
-        else if (fp:meta($e) eq 'Interface') then $e
         else if (local-name($e) = ('provided', 'required') and $e/@x:idref)
           then fp:element($e, $e/@x:idref)[@x:type eq 'Interface']
+        else if (fp:meta($e) eq 'Interface') then $e
         else ()"/>
   </xsl:function>
 

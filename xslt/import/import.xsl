@@ -55,7 +55,9 @@
   For IMP010-IMP021 ID is the referencing element's xmi:id and the message
   names the element, its owner, the property and the missing id. An href to
   another file (a library type, an imported model) is never dangling.
-  Non-fatal notes go to xsl:message ("robomda import: ...").
+  Warnings (f:warn) about what the import leaves out: IMP030, IMP101-IMP103
+  (application.xsl), IMP110-IMP116 (report.xsl); docs/errors.md. Every
+  duplicate id and dangling reference is reported (f:fail-all).
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -78,6 +80,7 @@
   <xsl:include href="stereotypes.xsl"/>
   <xsl:include href="application.xsl"/>
   <xsl:include href="platform.xsl"/>
+  <xsl:include href="report.xsl"/>
   <xsl:include href="dialect-eclipse.xsl"/>
   <xsl:include href="dialect-ea.xsl"/>
   <xsl:include href="dialect-magicdraw.xsl"/>
@@ -130,6 +133,7 @@
           </pim:model>
         </xsl:document>
         </xsl:variable>
+        <xsl:sequence select="fp:report($norm, $pim, $root)"/>
         <xsl:sequence select="f:indent($pim)"/>
       </xsl:if>
     </xsl:if>
@@ -140,10 +144,11 @@
     <xsl:param name="src-root" as="element()"/>
     <xsl:sequence select="
         if (fp:is-uml-ns(namespace-uri($src-root))
-            and local-name($src-root) = ('Model', 'Package')) then $src-root
+            and local-name($src-root) = ('Model', 'Package', 'Profile')) then $src-root
         else if (fp:is-xmi-ns(namespace-uri($src-root)) and local-name($src-root) eq 'XMI')
           then ($src-root/*[fp:is-uml-ns(namespace-uri())][local-name() eq 'Model'],
-                $src-root/*[fp:is-uml-ns(namespace-uri())][local-name() eq 'Package'])[1]
+                $src-root/*[fp:is-uml-ns(namespace-uri())][local-name() eq 'Package'],
+                $src-root/*[fp:is-uml-ns(namespace-uri())][local-name() eq 'Profile'])[1]
         else ()"/>
   </xsl:function>
 
@@ -180,8 +185,9 @@
     </xsl:choose>
   </xsl:function>
 
-  <!-- model checks: duplicate ids (IMP004), then the first dangling
-       reference in document order (IMP010-IMP021, check.xsl) -->
+  <!-- model checks: duplicate ids (IMP004: every one), else every
+       dangling reference in document order (IMP010-IMP021, check.xsl);
+       the first is raised, the others reported before it (f:fail-all) -->
   <xsl:function name="fp:check-model" as="xs:boolean">
     <xsl:param name="norm" as="document-node()"/>
     <xsl:param name="model-el" as="element()"/>
@@ -203,13 +209,14 @@
                  else $checked[@x:type eq 'Generalization']) ! fp:problems(.)"/>
     <xsl:choose>
       <xsl:when test="exists($duplicates)">
-        <xsl:variable name="holders" as="element()*" select="key('fp:by-id', $duplicates[1], $norm)"/>
-        <xsl:sequence select="f:fail('IMP004', $duplicates[1],
-            'duplicate xmi:id ''' || $duplicates[1] || ''' on ' || count($holders) || ' elements: '
-            || string-join($holders ! fp:label(.), ', '))"/>
+        <xsl:sequence select="f:fail-all($duplicates ! map {
+            'code': 'IMP004', 'id': .,
+            'message': let $holders := key('fp:by-id', ., $norm) return
+                'duplicate xmi:id ''' || . || ''' on ' || count($holders) || ' elements: '
+                || string-join($holders ! fp:label(.), ', ') })"/>
       </xsl:when>
       <xsl:when test="exists($problems)">
-        <xsl:sequence select="f:fail($problems[1]?code, $problems[1]?id, $problems[1]?message)"/>
+        <xsl:sequence select="f:fail-all($problems)"/>
       </xsl:when>
       <xsl:otherwise>
         <xsl:sequence select="true()"/>

@@ -29,7 +29,7 @@
   - CommunicationPath -> pim:communication-path; its ends are the types of
     its memberEnd properties (ownedEnd, or ends owned by the nodes), or of
     its ownedEnds when memberEnd is not written. A path with fewer than two
-    node ends is not written.
+    node ends is not written (IMP114, report.xsl).
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -67,7 +67,8 @@
         <xsl:with-param name="e" select="."/>
       </xsl:call-template>
       <xsl:apply-templates select="ownedAttribute[not(@x:type = 'Port')]" mode="mp:feature"/>
-      <xsl:for-each select="deployment | key('fp:dep-by-client', fp:id(.))[@x:type eq 'Deployment']">
+      <xsl:for-each select="deployment[@x:type eq 'Deployment']
+                            | key('fp:dep-by-client', fp:id(.))[@x:type eq 'Deployment']">
         <xsl:variable name="deployed" as="xs:string*"
             select="distinct-values((fp:targets(., 'deployedArtifact'), fp:targets(., 'supplier')) ! fp:id(.))"/>
         <xsl:if test="exists($deployed)">
@@ -123,10 +124,7 @@
           </xsl:for-each>
         </pim:communication-path>
       </xsl:when>
-      <xsl:otherwise>
-        <xsl:message select="'robomda import: communication path ' || fp:label(.) || ' [xmi:id='
-                             || fp:id(.) || '] does not connect two nodes; not imported'"/>
-      </xsl:otherwise>
+      <!-- otherwise not imported: report.xsl says so (IMP114) -->
     </xsl:choose>
   </xsl:template>
 </xsl:stylesheet>

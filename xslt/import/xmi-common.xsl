@@ -238,13 +238,14 @@
 
   <!-- the UML model element of a normalised document (a bare uml:Model or
        uml:Package, else the first uml:Model, else uml:Package, of xmi:XMI) -->
-  <xsl:key name="fp:model" match="/u:Model | /u:Package | /x:XMI/u:Model | /x:XMI/u:Package"
+  <xsl:key name="fp:model" match="/u:Model | /u:Package | /u:Profile
+                                 | /x:XMI/u:Model | /x:XMI/u:Package | /x:XMI/u:Profile"
       use="'model'"/>
 
   <xsl:function name="fp:model-el" as="element()?">
     <xsl:param name="n" as="node()"/>
     <xsl:variable name="models" as="element()*" select="key('fp:model', 'model', root($n))"/>
-    <xsl:sequence select="($models[self::u:Model], $models)[1]"/>
+    <xsl:sequence select="($models[self::u:Model], $models[self::u:Package], $models)[1]"/>
   </xsl:function>
 
   <!-- =================================================== ids, metaclass -->
@@ -500,6 +501,14 @@
           <xsl:attribute name="primitive" select="."/>
         </xsl:for-each>
       </xsl:when>
+      <xsl:when test="exists($t) and not($t/@x:type = $type-metas)">
+        <!-- an element of the model that the PIM holds under no id of
+             its own (a behaviour, a collaboration, an association ...):
+             named, never a reference that would dangle -->
+        <xsl:attribute name="type-name" select="string($t/@name)"/>
+        <xsl:attribute name="type-library" select="'local'"/>
+        <xsl:attribute name="type-metaclass" select="fp:meta($t)"/>
+      </xsl:when>
       <xsl:when test="exists($t)">
         <xsl:attribute name="type" select="fp:id($t)"/>
         <xsl:attribute name="type-name" select="string($t/@name)"/>
@@ -524,6 +533,16 @@
     <xsl:attribute name="lower" select="(fp:bound($e/*:lowerValue[1], $e/@*:lower), '1')[1]"/>
     <xsl:attribute name="upper" select="(fp:bound($e/*:upperValue[1], $e/@*:upper), '1')[1]"/>
   </xsl:function>
+
+  <!-- the metaclasses of the local types a PIM element stands for (the
+       PIM holds them with their xmi:id) -->
+  <xsl:variable name="type-metas" as="xs:string+"
+      select="('PrimitiveType', 'DataType', 'Signal', 'Enumeration', 'Class', 'Interface', 'Component',
+               $node-metas, $artifact-metas)"/>
+  <!-- behaviours: an attribute typed by one is a function of its owner -->
+  <xsl:variable name="behavior-metas" as="xs:string+"
+      select="('OpaqueBehavior', 'FunctionBehavior', 'Activity', 'StateMachine', 'ProtocolStateMachine',
+               'Interaction')"/>
 
   <!-- the local type element of a typed element, if any -->
   <xsl:function name="fp:type-element" as="element()?">

@@ -33,7 +33,9 @@
     class requires (Usage) it, "out" when it provides it, else "out"
     ("in" if the port is conjugated); typed by a class: the interfaces that
     class provides (out) and requires (in), swapped if conjugated. The datum
-    is the one attribute of the interface.
+    is the one attribute of the interface. Typed by a data type (datatype,
+    primitive, enumeration of the model, or a library primitive): one data
+    port, "out" ("in" if conjugated), whose datum is the port itself.
   - connections: connector mode groups connector writer->reader pairs by
     writer port (one connection point per output port); ball-and-socket mode
     makes one connection point per interface with all its writers and
@@ -63,10 +65,15 @@
     with no constraint, consumed in order, plus a sorted list of those
     released by their last constraint.
 
-  Errors (namespace urn:robomda:error, raised with f:fail):
+  Errors (namespace urn:robomda:error, raised with f:fail; every BND001 /
+  BND002 of the model, every BND006 / BND003 of the instances, every
+  BND009 and every port problem (BND002, BND004, BND005) of the
+  instantiated components at once, with f:fail-all):
     BND001  dangling reference: an id attribute points to no PIM element
     BND002  a port is typed by, provides or requires a missing interface
-    BND003  unknown middleware name (names the ExecutionEnvironment)
+    BND003  unknown middleware name (names the ExecutionEnvironment); a
+            Middleware stereotype without kind means the profile default
+            (xslt/import/profile-defaults.xml: OROCOS)
     BND004  an interface used by a port carries no datum (no attribute)
     BND005  an interface used by a port carries several data (attributes)
     BND006  an instance is deployed to no execution environment and the model
@@ -192,36 +199,44 @@
   </xsl:template>
 
   <!-- ============================================== reference checks -->
+  <!-- every dangling reference of the model (BND001, BND002: a port's
+       type, provided or required interface), all reported (f:fail-all);
+       a reference to any element of the PIM is not dangling, whatever its
+       kind (an element of the model the PIM holds no element for has no
+       reference at all: xslt/import, @type-metaclass) -->
   <xsl:function name="fp:check-references" as="empty-sequence()">
     <xsl:param name="model" as="element(pim:model)"/>
     <xsl:variable name="root" as="document-node()" select="root($model[1])"/>
-    <xsl:for-each select="$model//pim:port">
-      <xsl:variable name="port" as="element(pim:port)" select="."/>
-      <xsl:for-each select="@type[not(key('fp:id', ., $root))],
-                            (pim:provided, pim:required)/@interface[not(key('fp:id', ., $root)/self::pim:interface)]">
-        <xsl:sequence select="f:fail('BND002', $port/@id,
-            'port ''' || $port/@name || ''' refers to a missing interface ''' || . || '''')"/>
+    <xsl:variable name="problems" as="map(*)*">
+      <xsl:for-each select="$model//pim:port">
+        <xsl:variable name="port" as="element(pim:port)" select="."/>
+        <xsl:for-each select="@type[not(key('fp:id', ., $root))],
+                              (pim:provided, pim:required)/@interface[not(key('fp:id', ., $root)/self::pim:interface)]">
+          <xsl:sequence select="map { 'code': 'BND002', 'id': string($port/@id), 'message':
+              'port ''' || $port/@name || ''' refers to a missing interface ''' || . || '''' }"/>
+        </xsl:for-each>
       </xsl:for-each>
-    </xsl:for-each>
-    <xsl:for-each select="$model//pim:realization/@classifier, $model//pim:part/@type,
-                          $model//pim:generalization/@general,
-                          $model//pim:connector/pim:end/(@role | @part),
-                          $model//pim:manifestation/@element,
-                          $model//pim:communication-path/pim:end/@node,
-                          $model//(pim:provides | pim:requires)/@interface,
-                          $model//pim:attribute/@type, $model//pim:parameter/@type">
-      <xsl:if test="empty(key('fp:id', ., $root))">
-        <xsl:sequence select="f:fail('BND001', (../ancestor-or-self::*[@id])[last()]/@id,
-            'dangling reference ' || name(.) || '=''' || . || ''' on ' || local-name(..))"/>
-      </xsl:if>
-    </xsl:for-each>
-    <xsl:for-each select="$model//pim:deployment">
-      <xsl:variable name="d" as="element(pim:deployment)" select="."/>
-      <xsl:for-each select="tokenize(@deployed)[empty(key('fp:id', ., $root))]">
-        <xsl:sequence select="f:fail('BND001', $d/@id,
-            'dangling reference deployed=''' || . || ''' on deployment ''' || $d/@name || '''')"/>
+      <xsl:for-each select="$model//pim:realization/@classifier, $model//pim:part/@type,
+                            $model//pim:generalization/@general,
+                            $model//pim:connector/pim:end/(@role | @part),
+                            $model//pim:manifestation/@element,
+                            $model//pim:communication-path/pim:end/@node,
+                            $model//(pim:provides | pim:requires)/@interface,
+                            $model//pim:attribute/@type, $model//pim:parameter/@type">
+        <xsl:if test="empty(key('fp:id', ., $root))">
+          <xsl:sequence select="map { 'code': 'BND001', 'id': string((../ancestor-or-self::*[@id])[last()]/@id),
+              'message': 'dangling reference ' || name(.) || '=''' || . || ''' on ' || local-name(..) }"/>
+        </xsl:if>
       </xsl:for-each>
-    </xsl:for-each>
+      <xsl:for-each select="$model//pim:deployment">
+        <xsl:variable name="d" as="element(pim:deployment)" select="."/>
+        <xsl:for-each select="tokenize(@deployed)[empty(key('fp:id', ., $root))]">
+          <xsl:sequence select="map { 'code': 'BND001', 'id': string($d/@id), 'message':
+              'dangling reference deployed=''' || . || ''' on deployment ''' || $d/@name || '''' }"/>
+        </xsl:for-each>
+      </xsl:for-each>
+    </xsl:variable>
+    <xsl:sequence select="f:fail-all($problems)"/>
   </xsl:function>
 
   <!-- ===================================================== stereotypes -->
@@ -328,9 +343,25 @@
                 [@kind eq 'node' or exists(f:stereotype(., 'Host'))]"/>
   </xsl:function>
 
+  <!-- the default values of the robomda profile's tags (what a tool that
+       leaves out a tag equal to its default means; the import drops such
+       tags too, so that every tool gives the same PIM) -->
+  <xsl:variable name="fp:profile-defaults" as="document-node()" select="doc('../import/profile-defaults.xml')"/>
+
+  <xsl:function name="fp:tag-default" as="xs:string?">
+    <xsl:param name="stereo" as="xs:string"/>
+    <xsl:param name="tag" as="xs:string"/>
+    <xsl:sequence select="$fp:profile-defaults/*/*/*[@stereotype eq $stereo][@name eq $tag][1]/@default/string()"/>
+  </xsl:function>
+
+  <!-- the middleware of an execution environment: its Middleware kind; a
+       Middleware stereotype that leaves kind out means the profile default
+       (OROCOS); without the stereotype, the environment's name -->
   <xsl:function name="fp:middleware" as="xs:string">
     <xsl:param name="ee" as="element(pim:node)"/>
-    <xsl:variable name="tag" as="xs:string?" select="fp:tag($ee, 'Middleware', 'kind')"/>
+    <xsl:variable name="tag" as="xs:string?"
+        select="(fp:tag($ee, 'Middleware', 'kind')[normalize-space(.)],
+                 if (exists(f:stereotype($ee, 'Middleware'))) then fp:tag-default('Middleware', 'kind') else ())[1]"/>
     <xsl:variable name="raw" as="xs:string" select="if (normalize-space($tag)) then fp:literal($tag) else string($ee/@name)"/>
     <xsl:variable name="key" as="xs:string" select="upper-case(replace($raw, '[^A-Za-z0-9]', ''))"/>
     <xsl:sequence select="
@@ -338,9 +369,27 @@
         else if ($key = ('ROS', 'ROS1')) then 'ROS'
         else if ($key eq 'ROS2') then 'ROS2'
         else if ($key = ('OPENRTM', 'OPENRTMAIST')) then 'OpenRTM'
-        else f:fail('BND003', $ee/@id, 'unknown middleware ''' || $raw
-                    || ''' of execution environment ''' || $ee/@name
-                    || ''' (expected OROCOS, ROS, ROS2 or OpenRTM)')"/>
+        else f:fail-all(fp:middleware-problem($ee, $raw))"/>
+  </xsl:function>
+
+  <!-- BND003 about execution environment $ee whose middleware reads $raw -->
+  <xsl:function name="fp:middleware-problem" as="map(*)">
+    <xsl:param name="ee" as="element(pim:node)"/>
+    <xsl:param name="raw" as="xs:string"/>
+    <xsl:sequence select="map { 'code': 'BND003', 'id': string($ee/@id), 'message': 'unknown middleware ''' || $raw
+        || ''' of execution environment ''' || $ee/@name || ''' (expected OROCOS, ROS, ROS2 or OpenRTM)' }"/>
+  </xsl:function>
+
+  <!-- BND003 about $ee, if its middleware is unknown (fp:middleware) -->
+  <xsl:function name="fp:middleware-problems" as="map(*)?">
+    <xsl:param name="ee" as="element(pim:node)"/>
+    <xsl:variable name="tag" as="xs:string?"
+        select="(fp:tag($ee, 'Middleware', 'kind')[normalize-space(.)],
+                 if (exists(f:stereotype($ee, 'Middleware'))) then fp:tag-default('Middleware', 'kind') else ())[1]"/>
+    <xsl:variable name="raw" as="xs:string" select="if (normalize-space($tag)) then fp:literal($tag) else string($ee/@name)"/>
+    <xsl:variable name="key" as="xs:string" select="upper-case(replace($raw, '[^A-Za-z0-9]', ''))"/>
+    <xsl:sequence select="if ($key = ('OROCOS', 'OROCOSRTT', 'RTT', 'OROCOSRTT2', 'ROS', 'ROS1', 'ROS2', 'OPENRTM', 'OPENRTMAIST'))
+                          then () else fp:middleware-problem($ee, $raw)"/>
   </xsl:function>
 
   <!-- ========================================================= binding -->
@@ -355,6 +404,29 @@
     <xsl:variable name="hosts" as="element(pim:node)*" select="fp:hosts($root)"/>
     <!-- instances and bound components live in documents of their own, so
          that keys find them (temporary trees, copied to the result) -->
+    <!-- every instance without an execution environment (BND006) and
+         every environment of an unknown middleware (BND003) at once -->
+    <xsl:variable name="instance-ees" as="element(pim:node)*">
+      <xsl:choose>
+        <xsl:when test="exists($tops)">
+          <xsl:for-each select="$tops/pim:part[key('fp:id', @type, $root)/self::pim:component]">
+            <xsl:sequence select="fp:instance-ee(., key('fp:id', @type, $root), .., $ees)"/>
+          </xsl:for-each>
+        </xsl:when>
+        <xsl:otherwise>
+          <xsl:for-each select="$components[not(@abstract = ('true', '1'))][pim:port or pim:realization]">
+            <xsl:sequence select="fp:instance-ee((), ., (), $ees)"/>
+          </xsl:for-each>
+        </xsl:otherwise>
+      </xsl:choose>
+    </xsl:variable>
+    <xsl:sequence select="f:fail-all((
+        if (exists($tops)) then $tops/pim:part[key('fp:id', @type, $root)/self::pim:component]
+                                  [empty(fp:instance-ee(., key('fp:id', @type, $root), .., $ees))]
+                                ! fp:no-ee-problem(., key('fp:id', @type, $root), $ees)
+        else $components[not(@abstract = ('true', '1'))][pim:port or pim:realization]
+                        [empty(fp:instance-ee((), ., (), $ees))] ! fp:no-ee-problem((), ., $ees),
+        ($instance-ees/.) ! fp:middleware-problems(.)))"/>
     <xsl:variable name="instance-tree" as="document-node()">
       <xsl:document>
         <xsl:choose>
@@ -372,12 +444,18 @@
       </xsl:document>
     </xsl:variable>
     <xsl:variable name="instances" as="element(pim:instance)*" select="$instance-tree/pim:instance"/>
-    <xsl:for-each-group select="$instances" group-by="@name">
-      <xsl:if test="count(current-group()) gt 1">
-        <xsl:sequence select="f:fail('BND009', current-group()[2]/@xmi-id,
-            'two instances are named ''' || current-grouping-key() || '''')"/>
-      </xsl:if>
-    </xsl:for-each-group>
+    <xsl:variable name="same-names" as="map(*)*">
+      <xsl:for-each-group select="$instances" group-by="@name">
+        <xsl:if test="count(current-group()) gt 1">
+          <xsl:sequence select="map { 'code': 'BND009', 'id': string(current-group()[2]/@xmi-id),
+              'message': 'two instances are named ''' || current-grouping-key() || '''' }"/>
+        </xsl:if>
+      </xsl:for-each-group>
+    </xsl:variable>
+    <xsl:sequence select="f:fail-all($same-names)"/>
+    <!-- every port problem of every instantiated component at once -->
+    <xsl:sequence select="f:fail-all($components[exists(key('fp:instance-by-component', @id, $instance-tree))]
+                          ! (let $c := ., $r := fp:realizing-class(.) return $c/pim:port ! fp:port-problems(., $c, $r)))"/>
     <xsl:variable name="bound-tree" as="document-node()">
       <xsl:document>
         <xsl:sequence select="$components[exists(key('fp:instance-by-component', @id, $instance-tree))]
@@ -596,13 +674,10 @@
         select="key('fp:manifestation-by-element', $ids, $root)/../@id ! string(.)"/>
     <xsl:variable name="deployments" as="element(pim:deployment)*"
         select="key('fp:deployment-by-deployed', ($ids, $artifact-ids), $root)"/>
-    <xsl:variable name="ee" as="element(pim:node)?"
-        select="($deployments ! fp:deployment-ee(.), if (count($ees) eq 1) then $ees else ())[1]"/>
+    <xsl:variable name="ee" as="element(pim:node)?" select="fp:instance-ee($part, $c, $top, $ees)"/>
     <xsl:variable name="inst-id" as="xs:string" select="string(($part/@id, $c/@id)[1])"/>
     <xsl:if test="empty($ee)">
-      <xsl:sequence select="f:fail('BND006', $inst-id,
-          'component instance ''' || ($part/@name, $c/@name)[1] || ''' is deployed to no execution environment'
-          || ' and the model has ' || count($ees) || ' of them')"/>
+      <xsl:sequence select="f:fail-all(fp:no-ee-problem($part, $c, $ees))"/>
     </xsl:if>
     <xsl:variable name="host" as="element(pim:node)?"
         select="(fp:host-of($ee, $deployments/.., $hosts), if (count($hosts) eq 1) then $hosts else ())[1]"/>
@@ -629,6 +704,33 @@
         </pim:deployed-on>
       </xsl:for-each>
     </pim:instance>
+  </xsl:function>
+
+  <!-- the execution environment of the instance of $part (or of
+       component $c when instances come from components), as fp:instance
+       finds it -->
+  <xsl:function name="fp:instance-ee" as="element(pim:node)?">
+    <xsl:param name="part" as="element(pim:part)?"/>
+    <xsl:param name="c" as="element(pim:component)"/>
+    <xsl:param name="top" as="element(pim:component)?"/>
+    <xsl:param name="ees" as="element(pim:node)*"/>
+    <xsl:variable name="root" as="document-node()" select="root($c)"/>
+    <xsl:variable name="r" as="element(pim:class)?" select="fp:realizing-class($c)"/>
+    <xsl:variable name="ids" as="xs:string*" select="($part/@id, $c/@id, $top/@id, $r/@id) ! string(.)"/>
+    <xsl:variable name="artifact-ids" as="xs:string*"
+        select="key('fp:manifestation-by-element', $ids, $root)/../@id ! string(.)"/>
+    <xsl:sequence select="(key('fp:deployment-by-deployed', ($ids, $artifact-ids), $root) ! fp:deployment-ee(.),
+                           if (count($ees) eq 1) then $ees else ())[1]"/>
+  </xsl:function>
+
+  <!-- BND006 about the instance of $part / $c -->
+  <xsl:function name="fp:no-ee-problem" as="map(*)">
+    <xsl:param name="part" as="element(pim:part)?"/>
+    <xsl:param name="c" as="element(pim:component)"/>
+    <xsl:param name="ees" as="element(pim:node)*"/>
+    <xsl:sequence select="map { 'code': 'BND006', 'id': string(($part/@id, $c/@id)[1]), 'message':
+        'component instance ''' || ($part/@name, $c/@name)[1] || ''' is deployed to no execution environment'
+        || ' and the model has ' || count($ees) || ' of them' }"/>
   </xsl:function>
 
   <!-- the execution environment deployment $d reaches: its target, else
@@ -732,7 +834,47 @@
         else if ($t/self::pim:class) then
           ($t/pim:provides ! (string(@interface), if ($conj) then 'in' else 'out'),
            $t/pim:requires ! (string(@interface), if ($conj) then 'out' else 'in'))
+        else if (fp:is-data-type($t)) then (string($t/@id), if ($conj) then 'in' else 'out')
+        else if (empty($t) and $p/@primitive) then (string($p/@id), if ($conj) then 'in' else 'out')
         else ()"/>
+  </xsl:function>
+
+  <!-- the problems of the data ports of port $p (BND002, BND004,
+       BND005), as maps for f:fail-all -->
+  <xsl:function name="fp:port-problems" as="map(*)*">
+    <xsl:param name="p" as="element(pim:port)"/>
+    <xsl:param name="c" as="element(pim:component)"/>
+    <xsl:param name="r" as="element(pim:class)?"/>
+    <xsl:variable name="root" as="document-node()" select="root($p[1])"/>
+    <xsl:variable name="pairs" as="xs:string*" select="fp:port-interfaces($p, $c, $r)"/>
+    <xsl:for-each select="1 to count($pairs) idiv 2">
+      <xsl:variable name="i" as="element()?" select="key('fp:id', $pairs[2 * current() - 1], $root)"/>
+      <xsl:variable name="data" as="element(pim:attribute)*" select="$i/pim:attribute"/>
+      <xsl:choose>
+        <xsl:when test="fp:is-data-type($i)"/>
+        <xsl:when test="not($i/self::pim:interface)">
+          <xsl:sequence select="map { 'code': 'BND002', 'id': string($p/@id), 'message': 'port ''' || $p/@name
+              || ''' refers to ''' || $pairs[2 * current() - 1] || ''', which is not an interface' }"/>
+        </xsl:when>
+        <xsl:when test="empty($data)">
+          <xsl:sequence select="map { 'code': 'BND004', 'id': string($i/@id), 'message': 'interface ''' || $i/@name
+              || ''' (port ''' || $p/@name || ''') carries no datum: give it one attribute' }"/>
+        </xsl:when>
+        <xsl:when test="count($data) gt 1">
+          <xsl:sequence select="map { 'code': 'BND005', 'id': string($i/@id), 'message': 'interface ''' || $i/@name
+              || ''' (port ''' || $p/@name || ''') carries ' || count($data)
+              || ' attributes (' || string-join($data/@name, ', ') || '): an interface carries exactly one datum' }"/>
+        </xsl:when>
+      </xsl:choose>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- a port's own type that is its data (a data type, primitive or
+       enumeration of the model; the port itself for a library primitive) -->
+  <xsl:function name="fp:is-data-type" as="xs:boolean">
+    <xsl:param name="t" as="element()?"/>
+    <xsl:sequence select="exists($t/(self::pim:datatype | self::pim:primitive | self::pim:enumeration
+                                     | self::pim:port[@primitive]))"/>
   </xsl:function>
 
   <xsl:function name="fp:data-ports" as="element(pim:data-port)*">
@@ -740,31 +882,33 @@
     <xsl:param name="c" as="element(pim:component)"/>
     <xsl:param name="r" as="element(pim:class)?"/>
     <xsl:variable name="root" as="document-node()" select="root($p[1])"/>
+    <xsl:sequence select="f:fail-all(fp:port-problems($p, $c, $r))"/>
     <xsl:variable name="pairs" as="xs:string*" select="fp:port-interfaces($p, $c, $r)"/>
     <xsl:variable name="n" as="xs:integer" select="count($pairs) idiv 2"/>
     <xsl:for-each select="1 to $n">
       <xsl:variable name="i" as="element()?" select="key('fp:id', $pairs[2 * current() - 1], $root)"/>
-      <xsl:if test="not($i/self::pim:interface)">
-        <xsl:sequence select="f:fail('BND002', $p/@id, 'port ''' || $p/@name
-            || ''' refers to ''' || $pairs[2 * current() - 1] || ''', which is not an interface')"/>
-      </xsl:if>
-      <xsl:variable name="data" as="element(pim:attribute)*" select="$i/pim:attribute"/>
-      <xsl:if test="empty($data)">
-        <xsl:sequence select="f:fail('BND004', $i/@id, 'interface ''' || $i/@name
-            || ''' (port ''' || $p/@name || ''') carries no datum: give it one attribute')"/>
-      </xsl:if>
-      <xsl:if test="count($data) gt 1">
-        <xsl:sequence select="f:fail('BND005', $i/@id, 'interface ''' || $i/@name
-            || ''' (port ''' || $p/@name || ''') carries ' || count($data)
-            || ' attributes (' || string-join($data/@name, ', ') || '): an interface carries exactly one datum')"/>
-      </xsl:if>
-      <pim:data-port port="{$p/@id}"
-                     name="{f:cpp-identifier(if ($n eq 1) then $p/@name else $p/@name || '_' || $i/@name)}"
-                     port-name="{$p/@name}" direction="{$pairs[2 * current()]}"
-                     interface="{$i/@id}" interface-name="{$i/@name}"
-                     datum="{$data/@id}" datum-name="{$data/@name}">
-        <xsl:sequence select="$data/(@primitive, @type, @type-name, @upper)"/>
-      </pim:data-port>
+      <xsl:choose>
+        <xsl:when test="fp:is-data-type($i)">
+          <!-- a port typed by a data type carries that data itself: the
+               type stands for the interface, the port for the datum -->
+          <pim:data-port port="{$p/@id}" name="{f:cpp-identifier($p/@name)}"
+                         port-name="{$p/@name}" direction="{$pairs[2 * current()]}"
+                         interface="{$i/@id}" interface-name="{($i/self::pim:port/@type-name, $i/@name)[1]}"
+                         datum="{$p/@id}" datum-name="{$p/@name}">
+            <xsl:sequence select="$p/(@primitive, @type, @type-name, @upper)"/>
+          </pim:data-port>
+        </xsl:when>
+        <xsl:otherwise>
+          <xsl:variable name="data" as="element(pim:attribute)*" select="$i/pim:attribute"/>
+          <pim:data-port port="{$p/@id}"
+                         name="{f:cpp-identifier(if ($n eq 1) then $p/@name else $p/@name || '_' || $i/@name)}"
+                         port-name="{$p/@name}" direction="{$pairs[2 * current()]}"
+                         interface="{$i/@id}" interface-name="{$i/@name}"
+                         datum="{$data/@id}" datum-name="{$data/@name}">
+            <xsl:sequence select="$data/(@primitive, @type, @type-name, @upper)"/>
+          </pim:data-port>
+        </xsl:otherwise>
+      </xsl:choose>
     </xsl:for-each>
   </xsl:function>
 

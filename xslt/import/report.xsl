@@ -1,0 +1,214 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/import/report.xsl - nothing dropped in silence: the warnings about
+  what the import leaves out.
+
+  Reads:   the normalised XMI and the PIM import.xsl made of it.
+  Writes:  nothing; warnings (f:warn, "warning: CODE: message [xmi:id=ID]")
+           about every element of a kind robomda understands that the PIM
+           does not record, and about a model that holds nothing robomda
+           generates from.
+  Params:  none.
+  Errors:  none raised. Warnings (docs/errors.md):
+    IMP030  the model holds nothing robomda generates from (no component,
+            class, interface or node); names what it holds.
+    IMP110  a connector that is not imported (an end in another file, fewer
+            than two ends in the model, no class or component owns the
+            parts it joins).
+    IMP111  a Dependency or Abstraction that is not imported (only a
+            deployment-sequence StartAfter one means something; or such a
+            one without client or supplier in the model).
+    IMP112  a Usage, Realization, InterfaceRealization or
+            ComponentRealization that is not imported (its client is not an
+            imported classifier or port, or its supplier not an interface /
+            the classifier it should be).
+    IMP113  a Deployment or Manifestation that is not imported (it deploys
+            or manifests nothing in the model, or is not on a node /
+            artifact).
+    IMP114  a CommunicationPath that does not join two nodes.
+    IMP115  a stereotype application whose element is not imported (those
+            on no element of the model: one warning per stereotype, naming
+            them all with xmi:ids=ID,ID...).
+    IMP116  any other element of a kind robomda reads (component, class,
+            interface, port, property, operation, node, artifact) in a place
+            the import does not read, or outside the model it reads.
+
+  What counts (the same set tests/xmi_invariant.py checks): every element
+  with an xmi:id of metaclass Component, Class, Interface, Node, Device,
+  ExecutionEnvironment, Artifact, DeploymentSpecification, Port,
+  Connector, CommunicationPath, Dependency, Usage, Realization,
+  InterfaceRealization, ComponentRealization, Abstraction, Deployment,
+  Manifestation, and Property / Operation owned by a class, component,
+  interface, data type, signal, node or artifact (association ends are
+  the association's, not counted); outside profiles and xmi:Extension; not
+  a reference (href, xmi:idref: EA's exposed interfaces); and
+  every stereotype application with an xmi:id. It is recorded when an
+  @id or @via of the PIM carries its xmi:id.
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:map="http://www.w3.org/2005/xpath-functions/map"
+    xmlns:f="urn:robomda:xslt:function"
+    xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:u="urn:robomda:import:uml"
+    xmlns:x="urn:robomda:import:xmi"
+    xmlns:pim="urn:robomda:pim:1"
+    exclude-result-prefixes="#all">
+
+  <xsl:variable name="classifier-metas" as="xs:string+"
+      select="('Component', 'Class', 'Interface', $node-metas, $artifact-metas)"/>
+  <xsl:variable name="relationship-metas" as="xs:string+"
+      select="('Dependency', 'Abstraction', $dependency-metas)"/>
+  <xsl:variable name="understood-metas" as="xs:string+"
+      select="($classifier-metas, $relationship-metas, 'Port', 'Property', 'Operation', 'Connector',
+               'CommunicationPath')"/>
+  <xsl:variable name="understood-map" as="map(xs:string, xs:boolean)"
+      select="map:merge(distinct-values($understood-metas) ! map:entry(., true()))"/>
+  <xsl:variable name="feature-owner-map" as="map(xs:string, xs:boolean)"
+      select="map:merge(($classifier-metas, 'DataType', 'Signal') ! map:entry(., true()))"/>
+
+  <!-- every id the PIM records -->
+  <xsl:key name="fp:in-pim" match="pim:*[@id or @via]" use="@id, tokenize(@via)"/>
+
+  <!-- the warnings about $norm (the normalised XMI) and its PIM -->
+  <xsl:function name="fp:report" as="empty-sequence()">
+    <xsl:param name="norm" as="document-node()"/>
+    <xsl:param name="pim" as="document-node()"/>
+    <xsl:param name="root" as="element()"/>
+    <!-- profiles are usually absent: the ancestor test only when some is there -->
+    <xsl:variable name="profiles" as="element()*" select="$norm/descendant::*[@x:type eq 'Profile']"/>
+    <xsl:variable name="candidates" as="element()*"
+        select="$norm/descendant::*[@x:id][map:contains($understood-map, string(@x:type))][not(@href or @x:idref)]
+                  [not(@x:type = ('Property', 'Operation'))
+                   or (map:contains($feature-owner-map, string(../@x:type)) and not(self::ownedEnd))]"/>
+    <xsl:variable name="understood" as="element()*"
+        select="if (empty($profiles)) then $candidates
+                else $candidates[empty(ancestor::*[@x:type eq 'Profile'])]"/>
+    <xsl:variable name="applications" as="element()*"
+        select="$norm/x:XMI/*[not(namespace-uri() = ($U, $X))][@x:id]
+                  [@*[starts-with(local-name(), 'base_')]]"/>
+    <xsl:variable name="left-out" as="element()*"
+        select="($understood, $applications)[empty(key('fp:in-pim', string(@x:id), $pim))]"/>
+    <!-- stereotype applications on no element of the model (tools apply
+         their own to diagrams kept in xmi:Extension): one warning per
+         stereotype, naming every application -->
+    <xsl:variable name="unbased" as="element()*"
+        select="$left-out[parent::x:XMI]
+                  [empty(for $a in . return
+                         $a/@*[starts-with(local-name(), 'base_')]/tokenize(.) ! fp:element($a, .))]"/>
+    <xsl:for-each select="$left-out except $unbased">
+      <xsl:variable name="why" as="map(*)" select="fp:why-not-imported(., $root, $pim)"/>
+      <xsl:sequence select="f:warn($why?code, string(@x:id), $why?message)"/>
+    </xsl:for-each>
+    <xsl:for-each-group select="$unbased" group-by="name()">
+      <xsl:sequence select="f:warn('IMP115', string(@x:id), 'stereotype ' || local-name() || ' is applied '
+          || count(current-group()) || ' time(s) to no element of the model (a tool''s own element, such as a'
+          || ' diagram, or an element not in the file): not imported (xmi:ids='
+          || string-join(current-group()/@x:id, ',') || ')')"/>
+    </xsl:for-each-group>
+    <xsl:if test="empty(($pim//(pim:component | pim:class | pim:interface | pim:node))[1])">
+      <xsl:sequence select="f:warn('IMP030', fp:id($root), 'nothing to generate from: '
+          || fp:label($root) || (if ($root/@x:type eq 'Profile') then ' is a profile, not a model: it' else '')
+          || ' holds no component, class, interface or node'
+          || (let $held := fp:holds($norm) return
+              if (exists($held)) then ' (it holds ' || string-join($held, ', ') || ')' else ' (it is empty)')
+          || '; robomda reads components, classes and interfaces (component diagram) and nodes'
+          || ' (deployment diagram)')"/>
+    </xsl:if>
+  </xsl:function>
+
+  <!-- "3 Profile", "12 Stereotype" ...: what a document holds, the most
+       frequent metaclasses first (at most 8) -->
+  <xsl:function name="fp:holds" as="xs:string*">
+    <xsl:param name="norm" as="document-node()"/>
+    <xsl:variable name="groups" as="xs:string*">
+      <xsl:for-each-group select="$norm/descendant::*[@x:id][@x:type][not(starts-with(@x:type, '{'))]
+                                    [not(@x:type = ('Model', 'Comment'))]"
+          group-by="string(@x:type)">
+        <xsl:sort select="count(current-group())" order="descending"/>
+        <xsl:sort select="current-grouping-key()"/>
+        <xsl:sequence select="count(current-group()) || ' ' || current-grouping-key()"/>
+      </xsl:for-each-group>
+      <xsl:variable name="apps" as="xs:integer"
+          select="count($norm/x:XMI/*[not(namespace-uri() = ($U, $X))][@*[starts-with(local-name(), 'base_')]])"/>
+      <xsl:if test="$apps gt 0">
+        <xsl:sequence select="$apps || ' stereotype application(s)'"/>
+      </xsl:if>
+    </xsl:variable>
+    <xsl:sequence select="subsequence($groups, 1, 8)"/>
+  </xsl:function>
+
+  <!-- map { code, message }: why $e is not in the PIM -->
+  <xsl:function name="fp:why-not-imported" as="map(*)">
+    <xsl:param name="e" as="element()"/>
+    <xsl:param name="root" as="element()"/>
+    <xsl:param name="pim" as="document-node()"/>
+    <xsl:variable name="meta" as="xs:string" select="fp:meta($e)"/>
+    <xsl:variable name="what" as="xs:string" select="fp:describe($e)"/>
+    <xsl:variable name="outside" as="xs:boolean" select="not($e/ancestor::* intersect $root)"/>
+    <xsl:choose>
+      <xsl:when test="not(namespace-uri($e) = ($U, $X, '')) and $e/parent::x:XMI">
+        <xsl:variable name="bases" as="element()*"
+            select="$e/@*[starts-with(local-name(), 'base_')]/tokenize(.) ! fp:element($e, .)"/>
+        <xsl:sequence select="map { 'code': 'IMP115', 'message': 'stereotype ' || local-name($e)
+            || (if (empty($bases)) then ' is applied to no element of the file'
+                else ' is applied to ' || string-join($bases ! fp:label(.), ', ')
+                     || (if (some $b in $bases satisfies exists(key('fp:in-pim', fp:id($b), $pim)))
+                         then ', whose stereotypes the PIM does not keep'
+                         else ', which robomda does not import'))
+            || ': the stereotype is not imported' }"/>
+      </xsl:when>
+      <xsl:when test="$outside">
+        <xsl:sequence select="map { 'code': 'IMP116', 'message': $what
+            || ' is outside ' || fp:label($root) || ', the model robomda reads in this file: not imported' }"/>
+      </xsl:when>
+      <xsl:when test="$meta eq 'Connector'">
+        <xsl:sequence select="map { 'code': 'IMP110', 'message': $what || ' is not imported: ' || (
+            if ($e/end/(role | partWithPort)/@href) then 'an end is in another model'
+            else if (count($e/end[exists(fp:targets(., 'role'))]) lt 2) then 'it has fewer than two ends in the model'
+            else 'no class or component owns the parts it joins') }"/>
+      </xsl:when>
+      <xsl:when test="$meta = ('Dependency', 'Abstraction')">
+        <xsl:sequence select="map { 'code': 'IMP111', 'message': $what || ' is not imported: ' || (
+            if (fp:is-start-after($e)) then 'it has no client or no supplier in this model'
+            else 'robomda reads a dependency only as a deployment-sequence constraint'
+                 || ' (stereotype StartAfter, or named startAfter; docs/profile.md)') }"/>
+      </xsl:when>
+      <xsl:when test="$meta = ('Usage', 'Realization', 'InterfaceRealization', 'ComponentRealization')">
+        <xsl:sequence select="map { 'code': 'IMP112', 'message': $what || ' is not imported: '
+            || 'robomda reads it when its client is a class, component or port of the model and its supplier'
+            || (if ($meta eq 'ComponentRealization') then ' a component, realized by a class or component'
+                else ' an interface of the model')
+            || ' (client: ' || fp:ends($e, ('client')) || '; supplier: '
+            || fp:ends($e, ('supplier', 'contract', 'realizingClassifier')) || ')' }"/>
+      </xsl:when>
+      <xsl:when test="$meta = ('Deployment', 'Manifestation')">
+        <xsl:sequence select="map { 'code': 'IMP113', 'message': $what || ' is not imported: it '
+            || (if ($meta eq 'Deployment') then 'deploys nothing of the model onto a node'
+                else 'manifests nothing of the model in an artifact')
+            || ' (client: ' || fp:ends($e, ('client')) || '; supplier: '
+            || fp:ends($e, ('supplier', 'deployedArtifact', 'utilizedElement')) || ')' }"/>
+      </xsl:when>
+      <xsl:when test="$meta eq 'CommunicationPath'">
+        <xsl:sequence select="map { 'code': 'IMP114', 'message': $what
+            || ' is not imported: it does not join two nodes' }"/>
+      </xsl:when>
+      <xsl:otherwise>
+        <xsl:sequence select="map { 'code': 'IMP116', 'message': $what || ' is not imported: robomda does not read a '
+            || $meta || ' owned by ' || (if ($e/..) then fp:label($e/..) else 'nothing') }"/>
+      </xsl:otherwise>
+    </xsl:choose>
+  </xsl:function>
+
+  <!-- the labels of what $e refers to by the properties $props -->
+  <xsl:function name="fp:ends" as="xs:string">
+    <xsl:param name="e" as="element()"/>
+    <xsl:param name="props" as="xs:string*"/>
+    <xsl:variable name="ids" as="xs:string*" select="$props ! fp:ref-ids($e, .)"/>
+    <xsl:variable name="hrefs" as="xs:string*" select="$e/*[local-name() = $props]/@href/string()"/>
+    <xsl:sequence select="if (empty(($ids, $hrefs))) then 'none'
+        else string-join(($ids ! (let $t := fp:element($e, .) return if ($t) then fp:label($t) else '''' || . || ''''),
+                          $hrefs ! ('''' || . || '''')), ', ')"/>
+  </xsl:function>
+</xsl:stylesheet>
