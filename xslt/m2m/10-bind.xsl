@@ -354,42 +354,41 @@
     <xsl:sequence select="$fp:profile-defaults/*/*/*[@stereotype eq $stereo][@name eq $tag][1]/@default/string()"/>
   </xsl:function>
 
-  <!-- the middleware of an execution environment: its Middleware kind; a
-       Middleware stereotype that leaves kind out means the profile default
-       (OROCOS); without the stereotype, the environment's name -->
-  <xsl:function name="fp:middleware" as="xs:string">
+  <!-- what names the middleware of an execution environment: its Middleware
+       kind; a Middleware stereotype that leaves kind out means the profile
+       default (OROCOS); without the stereotype, the environment's name -->
+  <xsl:function name="fp:middleware-name" as="xs:string">
     <xsl:param name="ee" as="element(pim:node)"/>
     <xsl:variable name="tag" as="xs:string?"
         select="(fp:tag($ee, 'Middleware', 'kind')[normalize-space(.)],
                  if (exists(f:stereotype($ee, 'Middleware'))) then fp:tag-default('Middleware', 'kind') else ())[1]"/>
-    <xsl:variable name="raw" as="xs:string" select="if (normalize-space($tag)) then fp:literal($tag) else string($ee/@name)"/>
-    <xsl:variable name="key" as="xs:string" select="upper-case(replace($raw, '[^A-Za-z0-9]', ''))"/>
+    <xsl:sequence select="if (normalize-space($tag)) then fp:literal($tag) else string($ee/@name)"/>
+  </xsl:function>
+
+  <!-- the middleware fp:middleware-name means, () when it is unknown -->
+  <xsl:function name="fp:known-middleware" as="xs:string?">
+    <xsl:param name="ee" as="element(pim:node)"/>
+    <xsl:variable name="key" as="xs:string" select="upper-case(replace(fp:middleware-name($ee), '[^A-Za-z0-9]', ''))"/>
     <xsl:sequence select="
         if ($key = ('OROCOS', 'OROCOSRTT', 'RTT', 'OROCOSRTT2')) then 'OROCOS'
         else if ($key = ('ROS', 'ROS1')) then 'ROS'
         else if ($key eq 'ROS2') then 'ROS2'
         else if ($key = ('OPENRTM', 'OPENRTMAIST')) then 'OpenRTM'
-        else f:fail-all(fp:middleware-problem($ee, $raw))"/>
+        else ()"/>
   </xsl:function>
 
-  <!-- BND003 about execution environment $ee whose middleware reads $raw -->
-  <xsl:function name="fp:middleware-problem" as="map(*)">
+  <!-- the middleware of an execution environment; BND003 when unknown -->
+  <xsl:function name="fp:middleware" as="xs:string">
     <xsl:param name="ee" as="element(pim:node)"/>
-    <xsl:param name="raw" as="xs:string"/>
-    <xsl:sequence select="map { 'code': 'BND003', 'id': string($ee/@id), 'message': 'unknown middleware ''' || $raw
-        || ''' of execution environment ''' || $ee/@name || ''' (expected OROCOS, ROS, ROS2 or OpenRTM)' }"/>
+    <xsl:sequence select="(fp:known-middleware($ee), f:fail-all(fp:middleware-problems($ee)))[1]"/>
   </xsl:function>
 
   <!-- BND003 about $ee, if its middleware is unknown (fp:middleware) -->
   <xsl:function name="fp:middleware-problems" as="map(*)?">
     <xsl:param name="ee" as="element(pim:node)"/>
-    <xsl:variable name="tag" as="xs:string?"
-        select="(fp:tag($ee, 'Middleware', 'kind')[normalize-space(.)],
-                 if (exists(f:stereotype($ee, 'Middleware'))) then fp:tag-default('Middleware', 'kind') else ())[1]"/>
-    <xsl:variable name="raw" as="xs:string" select="if (normalize-space($tag)) then fp:literal($tag) else string($ee/@name)"/>
-    <xsl:variable name="key" as="xs:string" select="upper-case(replace($raw, '[^A-Za-z0-9]', ''))"/>
-    <xsl:sequence select="if ($key = ('OROCOS', 'OROCOSRTT', 'RTT', 'OROCOSRTT2', 'ROS', 'ROS1', 'ROS2', 'OPENRTM', 'OPENRTMAIST'))
-                          then () else fp:middleware-problem($ee, $raw)"/>
+    <xsl:sequence select="if (exists(fp:known-middleware($ee))) then () else
+        map { 'code': 'BND003', 'id': string($ee/@id), 'message': 'unknown middleware ''' || fp:middleware-name($ee)
+              || ''' of execution environment ''' || $ee/@name || ''' (expected OROCOS, ROS, ROS2 or OpenRTM)' }"/>
   </xsl:function>
 
   <!-- ========================================================= binding -->
