@@ -2,7 +2,12 @@
 
 from __future__ import annotations
 
+import os
 import shutil
+import signal
+import subprocess
+import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -21,7 +26,13 @@ def tree(tmp_path: Path) -> Path:
     shutil.copytree(CASES / "headlamp", src / "headlamp", ignore=shutil.ignore_patterns("expected"))
     # found by content: an XMI model whose name says nothing
     shutil.copy(CASES / "meka" / "model.ea.xmi", src / "meka" / "exported-by-ea.txt")
-    # not models: a robomda PIM, a text file, broken XML
+    # not models: a robomda PIM, a text file, broken XML, Papyrus' diagram and
+    # architecture files (XMI documents without UML)
+    (src / "meka" / "model.notation").write_text(
+        '<?xml version="1.0" encoding="UTF-8"?><xmi:XMI xmi:version="2.0" xmlns:xmi="http://www.omg.org/XMI" '
+        'xmlns:notation="http://www.eclipse.org/gmf/runtime/1.0.2/notation"><notation:Diagram xmi:id="d1"/></xmi:XMI>')
+    (src / "meka" / "model.di").write_text(
+        '<?xml version="1.0" encoding="UTF-8"?><xmi:XMI xmi:version="2.0" xmlns:xmi="http://www.omg.org/XMI"/>')
     (src / "notes.xml").write_text('<pim:model xmlns:pim="urn:robomda:pim:1"/>')
     (src / "readme.txt").write_text("hello")
     (src / "half.xmi").write_text("<xmi:XMI xmlns:xmi='http://www.omg.org/spec/XMI/20131001'")
@@ -47,11 +58,11 @@ def test_batch_reports_each_model_and_goes_on_after_a_failure(tree: Path, tmp_pa
     failed = next(r for r in report.results if r.status == "failed")
     assert "[BND003]" in failed.diagnostics[0] and "gazebo.xmi:" in failed.diagnostics[0]
     assert report.exit_code == 1
-    assert (out / "headlamp" / "model" / "deploy" / "headlamp.xml").is_file()
-    assert (out / "meka" / "exported-by-ea" / "CMakeLists.txt").is_file()
-    assert not (out / "broken" / "gazebo").exists()
+    assert (out / "headlamp" / "model.xmi" / "deploy" / "headlamp.xml").is_file()
+    assert (out / "meka" / "exported-by-ea.txt" / "CMakeLists.txt").is_file()
+    assert not (out / "broken" / "gazebo.xmi").exists()
     # each model's package equals the single-model run
-    assert ((out / "meka" / "model" / "src" / "components.cpp").read_bytes()
+    assert ((out / "meka" / "model.xmi" / "src" / "components.cpp").read_bytes()
             == (CASES / "meka" / "expected" / "orocos" / "files" / "src" / "components.cpp").read_bytes())
 
 
@@ -66,7 +77,7 @@ def test_second_run_skips_unchanged_models_and_redoes_changed_ones(tree: Path, t
     model.write_text(model.read_text(encoding="utf-8").replace("0.05", "0.1"), encoding="utf-8")
     third = run_batch(tree, out, jobs=1)
     assert {r.model for r in third.results if r.status == "ok"} == {"meka/model.xmi"}
-    assert "0.1" in (out / "meka" / "model" / "deploy" / "meka.ops").read_text()
+    assert "0.1" in (out / "meka" / "model.xmi" / "deploy" / "meka.ops").read_text()
     forced = run_batch(tree, out, jobs=1, force=True)
     assert forced.count("skipped") == 0 and forced.count("ok") == 5
 
@@ -79,3 +90,68 @@ def test_cli_prints_a_summary_and_exits_non_zero(tree: Path, tmp_path: Path,
     assert "6 models: 5 ok, 0 unchanged, 1 failed" in out
     assert "broken/gazebo.xmi" in out and "[BND003]" in err
     assert "[####" not in err  # no progress bar when stderr is not a terminal
+
+
+def test_models_named_alike_get_folders_of_their_own(tmp_path: Path) -> None:
+    """robot.xmi and robot.uml side by side were written into one folder (mixed sources, then OUT001)."""
+    src = tmp_path / "models"
+    src.mkdir()
+    shutil.copy(CASES / "meka" / "model.xmi", src / "robot.xmi")
+    shutil.copy(CASES / "headlamp" / "model.xmi", src / "robot.uml")
+    out = tmp_path / "out"
+    first = run_batch(src, out, jobs=1)
+    assert first.count("ok") == 2, [r.diagnostics for r in first.results]
+    assert (out / "robot.xmi" / "deploy" / "meka.xml").is_file() and not (out / "robot.xmi" / "deploy" / "headlamp.xml").exists()
+    assert (out / "robot.uml" / "deploy" / "headlamp.xml").is_file()
+    assert run_batch(src, out, jobs=1, force=True).count("ok") == 2
+
+
+def test_a_model_whose_outputs_were_deleted_is_regenerated(tree: Path, tmp_path: Path) -> None:
+    out = tmp_path / "out"
+    run_batch(tree, out, jobs=1)
+    (out / "meka" / "model.xmi" / "deploy" / "meka.ops").unlink()
+    again = run_batch(tree, out, jobs=1)
+    status = {r.model: r.status for r in again.results}
+    assert status["meka/model.xmi"] == "ok" and status["meka/model.ea.xmi"] == "skipped"
+    assert (out / "meka" / "model.xmi" / "deploy" / "meka.ops").is_file()
+
+
+@pytest.mark.parametrize("sig,code", [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
+def test_a_signal_stops_the_batch_at_once_with_one_line(tmp_path: Path, sig: signal.Signals, code: int) -> None:
+    """Ctrl-C ran queued models on for 30 s, then a traceback; SIGTERM left workers alive."""
+    src = tmp_path / "models"
+    for n in range(12):
+        (src / f"m{n}").mkdir(parents=True)
+        shutil.copy(CASES / "headlamp" / "model.xmi", src / f"m{n}" / "model.xmi")
+    out = tmp_path / "out"
+    child = subprocess.Popen([sys.executable, "-m", "robomda", "generate", str(src), "-o", str(out), "-j", "2"],
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, start_new_session=True,
+                             env=dict(os.environ, PYTHONPATH=str(ROOT / "src")))
+    deadline = time.monotonic() + 60
+    while not (out / "m0" / "model.xmi").exists() and not (out / "m1" / "model.xmi").exists() \
+            and time.monotonic() < deadline and child.poll() is None:
+        time.sleep(0.05)  # wait until the workers are at work
+    child.send_signal(sig)
+    stopped = time.monotonic()
+    _, err = child.communicate(timeout=30)
+    assert time.monotonic() - stopped < 10
+    assert child.returncode == code, err
+    text = err.decode()
+    assert "Traceback" not in text and text.strip().splitlines()[-1].startswith("robomda: interrupted")
+    time.sleep(0.5)
+    assert not _running_in_group(child.pid)  # no worker of the batch is left running
+    # every folder is a whole package or absent, and a second run finishes the job
+    assert run_batch(src, out, jobs=2).count("failed") == 0
+
+
+def _running_in_group(pgid: int) -> list[str]:
+    """The processes of group ``pgid`` that still run (a zombie awaiting its reaper does not)."""
+    running = []
+    for stat in Path("/proc").glob("[0-9]*/stat"):
+        try:
+            fields = stat.read_text().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        if int(fields[2]) == pgid and fields[0] != "Z":
+            running.append(stat.parent.name)
+    return running

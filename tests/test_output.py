@@ -72,3 +72,51 @@ def test_output_that_is_a_file_is_refused(tmp_path: Path) -> None:
     with pytest.raises(RobomdaError) as caught:
         write_fileset(fileset(("a.cpp", "A\n", "generated")), target)
     assert caught.value.exit_code == 2
+
+
+def test_a_failed_write_leaves_the_old_package_whole(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A write error partway (disk full, a read-only file) used to leave half a package and no state."""
+    write_fileset(fileset(("a.cpp", "A1\n", "generated"), ("b.cpp", "B1\n", "generated")), tmp_path / "out")
+    before = {p.name: p.read_bytes() for p in (tmp_path / "out").iterdir() if p.is_file()}
+    calls = {"n": 0}
+    real = Path.write_bytes
+
+    def failing(self: Path, data: bytes) -> int:
+        calls["n"] += 1
+        if calls["n"] == 2:
+            raise OSError(28, "No space left on device", str(self))
+        return real(self, data)
+
+    monkeypatch.setattr(Path, "write_bytes", failing)
+    with pytest.raises(OSError):
+        write_fileset(fileset(("a.cpp", "A2\n", "generated"), ("b.cpp", "B2\n", "generated")), tmp_path / "out")
+    monkeypatch.undo()
+    assert {p.name: p.read_bytes() for p in (tmp_path / "out").iterdir() if p.is_file()} == before
+    assert [p.name for p in tmp_path.iterdir()] == ["out"]  # nothing left beside it
+    write_fileset(fileset(("a.cpp", "A2\n", "generated"), ("b.cpp", "B2\n", "generated")), tmp_path / "out")
+    assert (tmp_path / "out" / "b.cpp").read_text() == "B2\n"
+
+
+def test_the_users_own_files_and_folders_survive_a_regeneration(tmp_path: Path) -> None:
+    out = tmp_path / "out"
+    write_fileset(fileset(("src/a.cpp", "A1\n", "generated")), out)
+    (out / "build").mkdir()
+    (out / "build" / "CMakeCache.txt").write_text("cache\n")
+    (out / "build" / "link").symlink_to("CMakeCache.txt")
+    (out / "notes.md").write_text("mine\n")
+    write_fileset(fileset(("src/a.cpp", "A2\n", "generated")), out)
+    assert (out / "build" / "CMakeCache.txt").read_text() == "cache\n"
+    assert (out / "build" / "link").is_symlink() and (out / "build" / "link").read_text() == "cache\n"
+    assert (out / "notes.md").read_text() == "mine\n" and (out / "src" / "a.cpp").read_text() == "A2\n"
+
+
+def test_an_interrupted_swap_is_completed_by_the_next_run(tmp_path: Path) -> None:
+    """Killed between the two renames of the fallback swap: no OUT, a complete new tree beside it."""
+    from robomda.output import recover
+    out = tmp_path / "out"
+    write_fileset(fileset(("a.cpp", "A1\n", "generated")), out)
+    staged = tmp_path / ".out.robomda-new"
+    write_fileset(fileset(("a.cpp", "A2\n", "generated")), staged)  # a complete tree, state file included
+    out.rename(tmp_path / ".out.robomda-old")
+    recover(out)
+    assert (out / "a.cpp").read_text() == "A2\n" and [p.name for p in tmp_path.iterdir()] == ["out"]

@@ -1,20 +1,30 @@
 """Batch generation: every UML model under a folder, in parallel, incrementally.
 
 - Models are found by content, not by file name: any file whose root element
-  is an XMI document or a UML model element (``xmi:XMI``, ``uml:Model``,
-  ``uml:Package`` in any XMI / UML namespace version).
-- Each model gets its own output folder: OUT/<path of the model relative to
-  DIR, without its last suffix> (``cases/headlamp/model.xmi`` ->
-  ``OUT/cases/headlamp/model/``).
+  is a UML model element (``uml:Model``, ``uml:Package``, ``uml:Profile`` in
+  any UML namespace version), or an ``xmi:XMI`` document whose first element
+  that is not XMI's own is a UML one (Papyrus' ``.notation`` and ``.di``
+  files are XMI documents without UML: they are not models), or an XMI 1.x
+  ``XMI`` document (refused with IMP001 when generated).
+- Each model gets its own output folder, always: OUT/<path of the model
+  relative to DIR> (``cases/headlamp/model.xmi`` ->
+  ``OUT/cases/headlamp/model.xmi/``), so ``robot.xmi`` and ``robot.uml``
+  beside each other never share one.
 - Models run in worker processes (``jobs``, default: the number of CPUs);
   each worker keeps one Saxon engine, so each stylesheet is compiled once
   per worker, not once per model.
 - A model is skipped when neither its bytes nor the toolchain (stylesheets,
   schemas, manifests, robomda's version, the target and options) changed
-  since the last successful run, and its output folder is still there
-  (content hashes in OUT/.robomda/batch.json). ``force`` regenerates all.
+  since the last successful run (content hashes in OUT/.robomda/batch.json),
+  and every generated file its output folder's state lists is still there
+  with the hash robomda wrote: a deleted or edited output is regenerated
+  (and an edited one then refused with OUT001). ``force`` regenerates all.
 - A failing model is reported with its diagnostics and does not stop the
   others.
+- SIGINT (Ctrl-C) or SIGTERM stops the batch at once: queued models are
+  cancelled, the workers are terminated (each output folder is then the old
+  package or the new one, see output.py), the batch state is written for
+  the models done, and the signal goes on to the caller.
 """
 
 from __future__ import annotations
@@ -23,6 +33,7 @@ import hashlib
 import json
 import os
 import re
+import signal
 import sys
 import time
 from concurrent.futures import ProcessPoolExecutor, as_completed
@@ -35,6 +46,7 @@ from lxml import etree
 
 from robomda import __version__
 from robomda.diagnostics import EXIT_INTERNAL, EXIT_OK, Diagnostic, RobomdaError
+from robomda.output import STATE_FILE as OUTPUT_STATE
 from robomda.output import atomic_write
 from robomda.resources import resource_root
 
@@ -74,12 +86,25 @@ class BatchReport:
 
 
 def _is_uml_model(path: Path) -> bool:
-    """True when the file's root element is an XMI or UML element (reads only the start)."""
+    """True when the file holds a UML model (reads only its start; see the module text)."""
+    depth = 0
     try:
-        for _, element in etree.iterparse(str(path), events=("start",), resolve_entities=False,
-                                          no_network=True, huge_tree=True):
+        for event, element in etree.iterparse(str(path), events=("start", "end"), resolve_entities=False,
+                                              no_network=True, huge_tree=True, load_dtd=False):
+            if event == "end":
+                depth -= 1
+                if depth == 0:
+                    return False  # an XMI document with nothing but XMI's own elements
+                continue
+            depth += 1
             uri = etree.QName(element).namespace or ""
-            return bool(_XMI_NS.match(uri) or _UML_NS.match(uri)) or element.tag in ("XMI",)
+            if depth == 1:
+                if element.tag == "XMI" or _UML_NS.match(uri):
+                    return True  # XMI 1.x, or a bare UML model
+                if not _XMI_NS.match(uri):
+                    return False
+            elif depth == 2 and not _XMI_NS.match(uri):
+                return bool(_UML_NS.match(uri))  # the first child that is not XMI's decides
     except (etree.XMLSyntaxError, OSError, ValueError):
         return False
     return False
@@ -114,8 +139,19 @@ def toolchain_hash(target: str, package_name: str, type_map: Path | None = None)
 
 
 def _output_folder(model: Path, folder: Path, out: Path) -> Path:
-    rel = model.relative_to(folder)
-    return out / rel.with_suffix("") if rel.suffix else out / rel
+    """OUT/<the model's path under DIR>: one folder per model file, whatever its siblings."""
+    return out / model.relative_to(folder)
+
+
+def _outputs_intact(dest: Path) -> bool:
+    """True when every generated file ``dest``'s state lists is there with the hash robomda wrote."""
+    try:
+        files = json.loads((dest / OUTPUT_STATE).read_text(encoding="utf-8")).get("files", {})
+        return bool(files) and all(
+            (dest / rel).is_file() and hashlib.sha256((dest / rel).read_bytes()).hexdigest() == digest
+            for rel, digest in files.items())
+    except (OSError, ValueError, AttributeError):
+        return False
 
 
 def _generate_one(model: str, out: str, target: str, package_name: str, type_map: str | None) -> ModelResult:
@@ -164,7 +200,7 @@ def run_batch(folder: Path, out: Path, target: str = "orocos", *, package_name: 
         dest = _output_folder(model, folder, out)
         seen = state.get(rel, {})
         if (not force and seen.get("input") == digest and seen.get("toolchain") == tools
-                and (dest / ".robomda" / "state.json").is_file()):
+                and _outputs_intact(dest)):
             results.append(ModelResult(model=rel, status="skipped", input_hash=digest))
         else:
             todo.append((model, dest, digest))
@@ -175,28 +211,56 @@ def run_batch(folder: Path, out: Path, target: str = "orocos", *, package_name: 
         if progress:
             progress(done_count, total, skipped)
     workers = max(1, min(jobs or os.cpu_count() or 1, len(todo) or 1))
-    if todo:
-        if workers == 1:
-            outcomes = (_generate_one(str(m), str(d), target, package_name, map_arg) for m, d, _ in todo)
-            for (model, _, digest), result in zip(todo, outcomes):
+    try:
+        if todo and workers == 1:
+            for model, dest, digest in todo:
+                result = _generate_one(str(model), str(dest), target, package_name, map_arg)
                 done_count += 1
                 results.append(_finish(result, model, folder, digest, progress, done_count, total))
-        else:
+        elif todo:
             # spawn, not fork: each worker starts its own Saxon engine cleanly
-            with ProcessPoolExecutor(max_workers=workers, mp_context=get_context("spawn")) as pool:
+            pool = ProcessPoolExecutor(max_workers=workers, mp_context=get_context("spawn"),
+                                       initializer=_worker_init)
+            try:
                 futures = {pool.submit(_generate_one, str(m), str(d), target, package_name, map_arg): (m, dg)
                            for m, d, dg in todo}
                 for future in as_completed(futures):
                     model, digest = futures[future]
                     done_count += 1
                     results.append(_finish(future.result(), model, folder, digest, progress, done_count, total))
-
+            except BaseException:
+                _stop(pool)
+                raise
+            pool.shutdown()
+    finally:  # the models done are recorded, also when a signal stops the batch
+        _write_state(out, target, tools, results)
     results.sort(key=lambda r: r.model)
-    new_state = {r.model: {"input": r.input_hash, "toolchain": tools} for r in results if r.status != "failed"}
-    if results:
-        payload = {"generator": f"robomda {__version__}", "target": target, "models": new_state}
-        atomic_write(out / STATE, (json.dumps(payload, indent=1, sort_keys=True) + "\n").encode("utf-8"))
     return BatchReport(results, time.perf_counter() - started)
+
+
+def _write_state(out: Path, target: str, tools: str, results: list[ModelResult]) -> None:
+    if not results:
+        return
+    new_state = {r.model: {"input": r.input_hash, "toolchain": tools}
+                 for r in sorted(results, key=lambda r: r.model) if r.status != "failed"}
+    payload = {"generator": f"robomda {__version__}", "target": target, "models": new_state}
+    atomic_write(out / STATE, (json.dumps(payload, indent=1, sort_keys=True) + "\n").encode("utf-8"))
+
+
+def _worker_init() -> None:
+    """Workers leave Ctrl-C to the parent, which stops them (no traceback from each worker)."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
+def _stop(pool: ProcessPoolExecutor) -> None:
+    """Cancel what is queued and terminate the running workers now."""
+    processes = list(getattr(pool, "_processes", {}).values())  # the executor has no public handle
+    pool.shutdown(wait=False, cancel_futures=True)
+    for process in processes:
+        if process.is_alive():
+            process.terminate()
+    for process in processes:
+        process.join(timeout=5)
 
 
 def _finish(result: ModelResult, model: Path, folder: Path, digest: str,

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import signal
 import sys
 from pathlib import Path
 
@@ -17,11 +18,15 @@ from robomda.output import atomic_write
 
 __all__ = ["main"]
 
+EXIT_SIGINT = 130  # 128 + SIGINT, as shells report it
+EXIT_SIGTERM = 143  # 128 + SIGTERM
+
 _EXIT_CODES = """exit codes:
   0  success (warnings may have been reported)
   1  the model has errors (each reported as FILE:LINE:COL: error: [CODE] ...)
   2  usage error, or input that cannot be read (missing, not XML, not UML XMI)
-  3  internal error in robomda (please report it with the model)"""
+  3  internal error in robomda (please report it with the model)
+  130 / 143  interrupted by SIGINT (Ctrl-C) / SIGTERM: no output folder is half-written"""
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -148,9 +153,31 @@ def _check(args: argparse.Namespace) -> int:
     return done.exit_code
 
 
+class Terminated(BaseException):
+    """SIGTERM, raised where Python next runs, as KeyboardInterrupt is for SIGINT."""
+
+
+def _on_sigterm(signum: int, frame: object) -> None:
+    raise Terminated()
+
+
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     fmt = getattr(args, "format", "text")
+    previous = signal.signal(signal.SIGTERM, _on_sigterm)
+    try:
+        return _main(args, fmt)
+    except (KeyboardInterrupt, Terminated) as exc:
+        # the output folder is the old package or the new one (output.py); say so in one line
+        name, code = ("SIGINT", EXIT_SIGINT) if isinstance(exc, KeyboardInterrupt) else ("SIGTERM", EXIT_SIGTERM)
+        print(f"robomda: interrupted ({name}); every output folder is as it was before or completely "
+              "written, never half of each", file=sys.stderr)
+        return code
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
+def _main(args: argparse.Namespace, fmt: str) -> int:
     try:
         if args.command == "generate" and args.model.is_dir():
             if fmt != "text":

@@ -12,15 +12,28 @@ Rules (the file set's ``mode`` says which applies):
 - generated files of an earlier run that the new run no longer produces are
   removed if unchanged, kept (and reported) if edited.
 
-Every file is written to a temporary name first and then renamed, so a file
-is either the old or the new version, never half of one.
+All or nothing, even when robomda is killed: the new package is built in a
+staging folder beside the output (``.<name>.robomda-new``): every file the
+output already holds and the run keeps (user files, the user's own files,
+unchanged generated files) is carried over as a hard link (a copy where the
+file system has none), the new and changed files are written, and the state
+file comes last. Then the staging folder and the output trade places in one
+atomic step (``renameat2(RENAME_EXCHANGE)`` on Linux; elsewhere two renames
+that the next run completes), and the old tree is removed. Killed at any
+instant, the output is the old package or the new one; the next run clears
+what an interrupted one left beside it (``recover``). A shell whose working
+directory is inside the output stays in the old, removed tree: ``cd .``.
 """
 
 from __future__ import annotations
 
+import ctypes
+import errno
 import hashlib
 import json
 import os
+import shutil
+import stat
 import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -29,7 +42,7 @@ from lxml import etree
 
 from robomda.diagnostics import EXIT_INPUT, Diagnostic, RobomdaError
 
-__all__ = ["WriteReport", "write_fileset", "atomic_write", "STATE_FILE", "NEW_SUFFIX"]
+__all__ = ["WriteReport", "write_fileset", "atomic_write", "recover", "STATE_FILE", "NEW_SUFFIX"]
 
 STATE_FILE = Path(".robomda") / "state.json"
 NEW_SUFFIX = ".robomda-new"
@@ -60,6 +73,7 @@ def _read_state(out: Path) -> dict[str, str]:
 
 
 def atomic_write(path: Path, data: bytes) -> None:
+    """Write one file so that it is the old or the new version, never half of one."""
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     try:
@@ -71,11 +85,95 @@ def atomic_write(path: Path, data: bytes) -> None:
         raise
 
 
+def _staging(out: Path) -> Path:
+    return out.with_name(f".{out.name}.robomda-new")
+
+
+def _retired(out: Path) -> Path:
+    return out.with_name(f".{out.name}.robomda-old")
+
+
+def _remove_tree(path: Path) -> None:
+    if path.is_symlink() or path.is_file():
+        path.unlink()
+    elif path.exists():
+        shutil.rmtree(path)
+
+
+def recover(out: Path) -> None:
+    """Finish or undo what a run interrupted while swapping ``out`` left beside it.
+
+    The staging folder is complete once its state file exists (written last).
+    Without ``out``: a complete staging folder becomes ``out`` (the run was
+    between its two renames), else the retired old tree goes back. With
+    ``out``: whatever is left beside it is an unfinished new tree or the old
+    tree after the swap, and is removed.
+    """
+    out = Path(out).resolve()
+    new, old = _staging(out), _retired(out)
+    if not out.exists():
+        if (new / STATE_FILE).is_file():
+            os.rename(new, out)
+        elif old.is_dir():
+            os.rename(old, out)
+    for leftover in (new, old):
+        if leftover.exists() or leftover.is_symlink():
+            _remove_tree(leftover)
+
+
+_RENAME_EXCHANGE = 2
+_AT_FDCWD = -100
+
+
+def _exchange(a: Path, b: Path) -> bool:
+    """Swap ``a`` and ``b`` atomically (Linux renameat2); False where the system cannot."""
+    try:
+        libc = ctypes.CDLL(None, use_errno=True)
+        renameat2 = libc.renameat2
+    except (OSError, AttributeError):
+        return False
+    renameat2.argtypes = [ctypes.c_int, ctypes.c_char_p, ctypes.c_int, ctypes.c_char_p, ctypes.c_uint]
+    if renameat2(_AT_FDCWD, os.fsencode(a), _AT_FDCWD, os.fsencode(b), _RENAME_EXCHANGE) == 0:
+        return True
+    err = ctypes.get_errno()
+    if err in (errno.ENOSYS, errno.EINVAL, errno.ENOTSUP, errno.EOPNOTSUPP):
+        return False
+    raise OSError(err, os.strerror(err), str(b))
+
+
+def _carry_over(out: Path, staging: Path, replaced: set[str]) -> None:
+    """Recreate ``out`` in ``staging`` without the paths in ``replaced``: hard links, else copies."""
+    for top, dirs, names in os.walk(out):
+        rel_dir = Path(top).relative_to(out)
+        (staging / rel_dir).mkdir(exist_ok=True)
+        shutil.copymode(top, staging / rel_dir)
+        for name in dirs + names:
+            src, rel = Path(top) / name, (rel_dir / name).as_posix()
+            dst = staging / rel
+            mode = os.lstat(src).st_mode
+            if stat.S_ISLNK(mode):
+                os.symlink(os.readlink(src), dst)
+                if name in dirs:
+                    dirs.remove(name)  # os.walk does not descend into links; keep it so
+            elif stat.S_ISDIR(mode):
+                continue
+            elif not stat.S_ISREG(mode):
+                raise RobomdaError([Diagnostic(
+                    "error", "OUT002", f"cannot carry {src} over into the new package: not a regular file, "
+                    "folder or link; move it out of the output folder", file=str(src))], EXIT_INPUT)
+            elif rel not in replaced:
+                try:
+                    os.link(src, dst)
+                except OSError:
+                    shutil.copy2(src, dst)
+
+
 def write_fileset(files: etree._Element, out: Path) -> WriteReport:
-    """Write the validated file set ``files`` into folder ``out``."""
-    out = out.resolve()
+    """Write the validated file set ``files`` into folder ``out``, all or nothing."""
+    out = Path(out).resolve()
     if out.exists() and not out.is_dir():
         raise RobomdaError([Diagnostic("error", "IO001", f"output {out} exists and is not a folder")], EXIT_INPUT)
+    recover(out)
     state = _read_state(out)
     plan: list[tuple[str, bytes, str]] = []  # (path, data, mode)
     conflicts: list[Diagnostic] = []
@@ -97,35 +195,67 @@ def write_fileset(files: etree._Element, out: Path) -> WriteReport:
 
     report = WriteReport()
     new_state: dict[str, str] = {}
+    writes: dict[str, bytes] = {}  # what the new package has that the old one has not, by path
+    drops: set[str] = set()  # what the old package has that the new one has not
     produced = {rel for rel, _, _ in plan}
     for rel, data, mode in plan:
         target = out / rel
-        digest = _sha(data)
         if mode == "user" and target.exists():
             report.kept_user.append(rel)
-            side = target.with_name(target.name + NEW_SUFFIX)
+            side = rel + NEW_SUFFIX
             if target.read_bytes() != data:
-                atomic_write(side, data)
-                report.fresh_copies.append(rel + NEW_SUFFIX)
-            elif side.exists():
-                side.unlink()
+                writes[side] = data
+                report.fresh_copies.append(side)
+            elif (out / side).exists():
+                drops.add(side)
             continue
-        if target.exists() and target.read_bytes() == data:
+        if target.is_file() and target.read_bytes() == data:
             report.unchanged.append(rel)
         else:
-            atomic_write(target, data)
+            writes[rel] = data
             report.written.append(rel)
         if mode == "generated":
-            new_state[rel] = digest
+            new_state[rel] = _sha(data)
     for rel, digest in sorted(state.items()):
         if rel in produced:
             continue
         target = out / rel
         if target.is_file() and _sha(target.read_bytes()) == digest:
-            target.unlink()
+            drops.add(rel)
             report.removed.append(rel)
         elif target.exists():
             report.kept_stale.append(rel)
     payload = {"generator": "robomda", "files": dict(sorted(new_state.items()))}
-    atomic_write(out / STATE_FILE, (json.dumps(payload, indent=1) + "\n").encode("utf-8"))
+    writes[STATE_FILE.as_posix()] = (json.dumps(payload, indent=1) + "\n").encode("utf-8")
+    _swap_in(out, writes, drops)
     return report
+
+
+def _swap_in(out: Path, writes: dict[str, bytes], drops: set[str]) -> None:
+    """Build the new package beside ``out`` and trade places with it (see the module text)."""
+    staging = _staging(out)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    staging.mkdir()
+    try:
+        if out.exists():
+            _carry_over(out, staging, set(writes) | drops)
+        state = writes[STATE_FILE.as_posix()]
+        for rel, data in writes.items():
+            if rel != STATE_FILE.as_posix():
+                path = staging / rel
+                path.parent.mkdir(parents=True, exist_ok=True)
+                path.write_bytes(data)
+        (staging / STATE_FILE).parent.mkdir(parents=True, exist_ok=True)
+        (staging / STATE_FILE).write_bytes(state)  # last: the staging folder is complete
+    except BaseException:
+        _remove_tree(staging)
+        raise
+    if not out.exists():
+        os.rename(staging, out)
+    elif _exchange(staging, out):
+        _remove_tree(staging)  # now the old tree
+    else:
+        retired = _retired(out)
+        os.rename(out, retired)
+        os.rename(staging, out)
+        _remove_tree(retired)
