@@ -117,3 +117,20 @@ def test_sarif_passes_the_sarif_multitool(case: str, tmp_path: Path, capsys: pyt
     found = json.loads(verdict.read_text(encoding="utf-8-sig"))
     errors = [r for run in found["runs"] for r in run.get("results", []) if r.get("level") == "error"]
     assert errors == [], errors
+
+
+def test_sarif_names_the_qualified_name_and_keeps_the_xmi_id_apart(capsys) -> None:
+    """SARIF's fullyQualifiedName held the xmi:id (issue 10 item 9)."""
+    import json
+
+    from robomda.cli import main
+    model = next(p for p in sorted(BROKEN.glob("*/model.xmi"))
+                 if (p.parent / "expected.txt").read_text().count("(uml:Port ") > 0)
+    main(["check", str(model), "--format", "sarif"])
+    log = json.loads(capsys.readouterr().out)
+    logical = [loc["logicalLocations"][0] for r in log["runs"][0]["results"] for loc in r.get("locations", [])
+               if "logicalLocations" in loc]
+    assert logical
+    for loc in logical:
+        assert "::" in loc["fullyQualifiedName"] and loc["fullyQualifiedName"].endswith(loc["name"])
+        assert loc["properties"]["xmiId"] and loc["properties"]["xmiId"] not in loc["fullyQualifiedName"]

@@ -78,3 +78,74 @@ def test_a_user_type_map_overrides_the_message_types(capsys: pytest.CaptureFixtu
     assert main(["generate", str(model), "-o", str(tmp_path / "o2"), "--target", "ros1",
                  "--type-map", str(tmp_path / "missing.xml")]) == 2
     assert "[IO001]" in capsys.readouterr().err
+
+
+ROOT = Path(__file__).resolve().parents[1]
+CASES = ROOT / "fixtures" / "cases"
+
+
+def test_generate_defaults_to_the_middleware_the_model_deploys_on(capsys: pytest.CaptureFixture[str],
+                                                                  tmp_path: Path) -> None:
+    """pid deploys on ROS only: without --target it was generated for Orocos (issue 10 item 9)."""
+    code, out, _ = run(capsys, "generate", str(CASES / "pid" / "model.xmi"), "-o", str(tmp_path / "pid"))
+    assert code == 0 and "ros1 package in" in out
+    assert (tmp_path / "pid" / "launch").is_dir() and not (tmp_path / "pid" / "deploy").exists()
+
+
+def _two_middlewares(tmp_path: Path) -> Path:
+    """pid with the robot interface's class in a second artifact, deployed on an Orocos environment."""
+    text = (CASES / "pid" / "model.xmi").read_text(encoding="utf-8")
+    edits = [('      <manifestation xmi:type="uml:Manifestation" xmi:id="_pid093m" client="_pid089f" '
+              'supplier="_pid046c" utilizedElement="_pid046c"/>\n', ''),
+             ('      </nestedNode>\n',
+              '      </nestedNode>\n      <nestedNode xmi:type="uml:ExecutionEnvironment" xmi:id="_ee2" name="OROCOS">\n'
+              '        <deployment xmi:type="uml:Deployment" xmi:id="_d2" client="_ee2" supplier="_a2" '
+              'deployedArtifact="_a2"/>\n      </nestedNode>\n'),
+             ('  </packagedElement>\n</uml:Model>',
+              '    <packagedElement xmi:type="uml:Artifact" xmi:id="_a2" name="robot_atomic" fileName="atomic">\n'
+              '      <manifestation xmi:type="uml:Manifestation" xmi:id="_m2" client="_a2" supplier="_pid046c" '
+              'utilizedElement="_pid046c"/>\n    </packagedElement>\n  </packagedElement>\n</uml:Model>')]
+    for old, new in edits:
+        assert text.count(old) == 1, old
+        text = text.replace(old, new)
+    model = tmp_path / "two.xmi"
+    model.write_text(text, encoding="utf-8")
+    return model
+
+
+def test_a_model_on_several_middlewares_must_name_its_target(capsys: pytest.CaptureFixture[str],
+                                                             tmp_path: Path) -> None:
+    from robomda.api import default_targets
+    model = _two_middlewares(tmp_path)
+    assert default_targets(model) == ["orocos", "ros1"]
+    code, _, err = run(capsys, "generate", str(model), "-o", str(tmp_path / "out"))
+    assert code == 2 and "name the one to generate with --target" in err and not (tmp_path / "out").exists()
+    code, out, _ = run(capsys, "generate", str(model), "-o", str(tmp_path / "out"), "--target", "ros1")
+    assert code == 0 and "ros1 package in" in out
+
+
+def test_check_runs_what_generate_runs_and_names_the_rule_sets(capsys: pytest.CaptureFixture[str],
+                                                               tmp_path: Path) -> None:
+    """check without --target passed models that generate refuses ('nothing to generate') (item 4)."""
+    model = tmp_path / "empty.uml"
+    model.write_text('<?xml version="1.0" encoding="UTF-8"?>\n<uml:Model xmi:version="20131001" '
+                     'xmlns:xmi="http://www.omg.org/spec/XMI/20131001" '
+                     'xmlns:uml="http://www.eclipse.org/uml2/5.0.0/UML" xmi:id="m" name="empty">\n'
+                     '  <packagedElement xmi:type="uml:Class" xmi:id="c" name="Lonely"/>\n</uml:Model>\n',
+                     encoding="utf-8")
+    gen_code, _, gen_err = run(capsys, "generate", str(model), "-o", str(tmp_path / "out"))
+    code, out, err = run(capsys, "check", str(model))
+    assert gen_code == 1 and code == 1
+    assert "nothing to generate" in gen_err and "nothing to generate" in err
+    assert "checked for orocos; rules: pim.sch (model), psm-orocos.sch" in out
+    code, out, _ = run(capsys, "check", str(CASES / "pid" / "model.xmi"))
+    assert code == 0 and "checked for ros1; rules: pim.sch (model), pim.sch (ros), psm-ros.sch" in out
+
+
+def test_a_package_name_that_is_rewritten_says_so(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    code, out, err = run(capsys, "generate", str(CASES / "headlamp" / "model.xmi"), "-o", str(tmp_path / "o"),
+                         "--package-name", "My Lamp")
+    assert code == 0 and "[PKG001] --package-name 'My Lamp' is written 'my_lamp'" in err
+    code, _, err = run(capsys, "generate", str(CASES / "headlamp" / "model.xmi"), "-o", str(tmp_path / "p"),
+                       "--package-name", "my_lamp")
+    assert code == 0 and "PKG001" not in err

@@ -34,8 +34,8 @@ def _line_of(model: Path, needle: str) -> tuple[int, int]:
     raise AssertionError(needle)
 
 
-def _generate(capsys: pytest.CaptureFixture[str], model: Path, out: Path) -> tuple[int, list[str]]:
-    code = main(["generate", str(model), "-o", str(out)])
+def _generate(capsys: pytest.CaptureFixture[str], model: Path, out: Path, *target: str) -> tuple[int, list[str]]:
+    code = main(["generate", str(model), "-o", str(out), *target])
     err = capsys.readouterr().err.strip().splitlines()
     return code, err
 
@@ -108,7 +108,8 @@ def test_a_failed_run_leaves_an_existing_output_untouched(tmp_path: Path,
 def test_a_model_deployed_elsewhere_is_generated_with_a_located_warning(
         tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     model = _mutated(tmp_path, "meka", 'name="OROCOS"', 'name="ROS"')
-    code, err = _generate(capsys, model, tmp_path / "out")
+    # named on purpose: without --target, generate picks the model's own middleware (ROS)
+    code, err = _generate(capsys, model, tmp_path / "out", "--target", "orocos")
     line, column = _line_of(model, 'name="ROS"')
     assert code == 0
     assert err[0].startswith(f"{model}:{line}:{column}: warning: [ORO006] ") and "generating all 6" in err[0]

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import os
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from lxml import etree
@@ -15,7 +15,7 @@ from robomda.engine import Engine
 from robomda.output import WriteReport, write_fileset
 from robomda.resources import available_targets, pipeline_path
 
-__all__ = ["generate", "import_model", "check", "targets", "Generated", "Checked"]
+__all__ = ["generate", "import_model", "check", "targets", "default_targets", "Generated", "Checked"]
 
 _ENGINE: Engine | None = None
 
@@ -41,15 +41,17 @@ class Generated:
     report: WriteReport | None
     timings: list[tuple[str, float, float, float]]
     warnings: list[Diagnostic]
+    target: str = ""
 
 
 @dataclass
 class Checked:
-    """What :func:`check` found: every diagnostic, the targets checked, the exit code."""
+    """What :func:`check` found: every diagnostic, the targets checked, the rule sets run, the exit code."""
 
     diagnostics: list[Diagnostic]
     targets: list[str]
     exit_code: int
+    rule_sets: list[str] = field(default_factory=list)
 
     def count(self, severity: str) -> int:
         return sum(1 for d in self.diagnostics if d.severity == severity)
@@ -145,24 +147,31 @@ def check(model: Path | str, target: str | None = None, *, package_name: str = "
 
     With a ``target``, everything ``generate`` would check for it: the import
     and bind errors, the PIM rules, the PSM step and its rules. Without one,
-    the same for every target the model's instances are deployed on (the
-    shared PIM rules when they are deployed on none robomda generates for).
-    Diagnostics found by several targets are reported once. Input that
-    cannot be read at all still raises :class:`RobomdaError` (exit code 2).
+    the same for every target ``generate`` would pick (:func:`default_targets`):
+    the middlewares the model's instances are deployed on, or Orocos when
+    they are deployed on none robomda generates for. ``rule_sets`` names the
+    rule files (and phases) that ran. Diagnostics found by several targets
+    are reported once. Input that cannot be read at all still raises
+    :class:`RobomdaError` (exit code 2).
     """
     model = Path(model)
     if target is not None:
         _usage_target(target)
     _check_readable(model)
     context = _context(model, None, package_name, _type_map(type_map))
-    chosen = [target] if target is not None else []
     diagnostics: list[Diagnostic] = []
+    rule_sets: list[str] = []
     exit_code = EXIT_OK
 
     def run_until_text(name: str) -> pipelines.RunResult | None:
         nonlocal exit_code
         chain = pipelines.load(pipeline_path(name))
         steps = len(chain.steps) - 1 if chain.yields == "files" else None
+        for step in chain.steps[:steps]:
+            for rules in step.checks:
+                label = rules.rules.name + (f" ({rules.phase})" if rules.phase else "")
+                if label not in rule_sets:
+                    rule_sets.append(label)
         try:
             result = _run(chain, model, context, steps=steps)
         except RobomdaError as exc:
@@ -174,18 +183,36 @@ def check(model: Path | str, target: str | None = None, *, package_name: str = "
         _add(diagnostics, result.warnings)
         return result
 
-    if not chosen:
+    if target is not None:
+        chosen = [target]
+    else:
         shared = run_until_text("check")
         if shared is None:
-            return Checked(diagnostics, ["model"], exit_code)
-        deployed = {i.get("middleware") for i in shared.tree.iter("{urn:robomda:pim:1}instance")}
-        chosen = [t for m, t in _TARGET_OF_MIDDLEWARE.items() if m in deployed]
-        if not chosen:
-            return Checked(diagnostics, ["model"], exit_code)
+            return Checked(diagnostics, ["model"], exit_code, rule_sets)
+        chosen = _targets_of(shared.tree) or [DEFAULT_TARGET]
         diagnostics.clear()  # the targets' runs repeat the shared findings
     for name in chosen:
         run_until_text(name)
-    return Checked(diagnostics, chosen, exit_code)
+    return Checked(diagnostics, chosen, exit_code, rule_sets)
+
+
+DEFAULT_TARGET = "orocos"
+
+
+def _targets_of(bound_pim: etree._Element | None) -> list[str]:
+    """The targets of the middlewares the instances of a bound PIM are deployed on, in target order."""
+    if bound_pim is None:
+        return []
+    deployed = {i.get("middleware") for i in bound_pim.iter("{urn:robomda:pim:1}instance")}
+    return [t for m, t in _TARGET_OF_MIDDLEWARE.items() if m in deployed]
+
+
+def default_targets(model: Path | str) -> list[str]:
+    """The targets ``generate`` and ``check`` use without ``--target``: the model's middlewares, else Orocos."""
+    model = Path(model)
+    _check_readable(model)
+    bound = _run(pipelines.load(pipeline_path("import")), model, _context(model, None, ""))
+    return _targets_of(bound.tree) or [DEFAULT_TARGET]
 
 
 def _add(into: list[Diagnostic], found: list[Diagnostic]) -> None:
@@ -198,21 +225,44 @@ def _add(into: list[Diagnostic], found: list[Diagnostic]) -> None:
             into.append(d)
 
 
-def generate(model: Path | str, out: Path | str | None, target: str = "orocos", *, package_name: str = "",
+def _package_name_note(asked: str, psm: str | None, model: Path) -> list[Diagnostic]:
+    """PKG001 when the package name written is not the one ``--package-name`` gave."""
+    if not asked or not psm:
+        return []
+    root = etree.fromstring(psm.encode("utf-8"))
+    written = root.get("package") or root.get("name") or ""
+    if written == asked:
+        return []
+    return [Diagnostic("warning", "PKG001", f"--package-name '{asked}' is written '{written}': package names "
+                       "are lower-case letters, digits and underscores (CMake, catkin and ament)", file=str(model))]
+
+
+def generate(model: Path | str, out: Path | str | None, target: str | None = None, *, package_name: str = "",
              type_map: Path | str | None = None, write: bool = True) -> Generated:
     """Run ``target``'s chain on ``model`` and write its files into ``out``.
 
-    Nothing is written unless every step succeeded and every intermediate
-    model is valid. With ``write=False`` only the stage outputs are returned.
+    Without a ``target``: the one middleware the model deploys on (Orocos
+    when it deploys on none robomda generates for); a model deployed on
+    several must name one (usage error, exit code 2). Nothing is written
+    unless every step succeeded and every intermediate model is valid. With
+    ``write=False`` only the stage outputs are returned.
     """
     model = Path(model)
+    if target is None:
+        found = default_targets(model)
+        if len(found) > 1:
+            raise RobomdaError([Diagnostic(
+                "error", "USAGE", f"the model deploys on several middlewares ({', '.join(found)}): "
+                "name the one to generate with --target", file=str(model))], EXIT_INPUT)
+        target = found[0]
     _usage_target(target)
     _check_readable(model)
     out_path = Path(out) if out is not None else None
     chain = pipelines.load(pipeline_path(target))
     context = _context(model, out_path, package_name, _type_map(type_map))
     result = _run(chain, model, context)
+    warnings = result.warnings + _package_name_note(package_name, result.stages.get("psm"), model)
     report = None
     if write and out_path is not None and chain.yields == "files" and result.tree is not None:
         report = write_fileset(result.tree, out_path)
-    return Generated(result.stages, report, result.timings, result.warnings)
+    return Generated(result.stages, report, result.timings, warnings, target)

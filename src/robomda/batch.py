@@ -125,7 +125,7 @@ def find_models(folder: Path, exclude: Path | None = None) -> list[Path]:
     return found
 
 
-def toolchain_hash(target: str, package_name: str, type_map: Path | None = None) -> str:
+def toolchain_hash(target: str | None, package_name: str, type_map: Path | None = None) -> str:
     """A hash of everything besides the model that decides the output."""
     digest = hashlib.sha256(f"robomda {__version__} {target} {package_name}".encode())
     if type_map is not None:
@@ -154,7 +154,7 @@ def _outputs_intact(dest: Path) -> bool:
         return False
 
 
-def _generate_one(model: str, out: str, target: str, package_name: str, type_map: str | None) -> ModelResult:
+def _generate_one(model: str, out: str, target: str | None, package_name: str, type_map: str | None) -> ModelResult:
     """Worker: one model (the process's engine is reused across calls)."""
     from robomda.api import generate
 
@@ -182,7 +182,7 @@ def _read_state(out: Path) -> dict[str, dict[str, str]]:
         return {}
 
 
-def run_batch(folder: Path, out: Path, target: str = "orocos", *, package_name: str = "", jobs: int | None = None,
+def run_batch(folder: Path, out: Path, target: str | None = None, *, package_name: str = "", jobs: int | None = None,
               force: bool = False, type_map: Path | None = None,
               progress: Callable[[int, int, ModelResult], None] | None = None) -> BatchReport:
     """Generate every model under ``folder`` into ``out``; never raises for one model's failure."""
@@ -238,7 +238,7 @@ def run_batch(folder: Path, out: Path, target: str = "orocos", *, package_name: 
     return BatchReport(results, time.perf_counter() - started)
 
 
-def _write_state(out: Path, target: str, tools: str, results: list[ModelResult]) -> None:
+def _write_state(out: Path, target: str | None, tools: str, results: list[ModelResult]) -> None:
     if not results:
         return
     new_state = {r.model: {"input": r.input_hash, "toolchain": tools}

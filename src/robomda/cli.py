@@ -52,7 +52,8 @@ def _parser() -> argparse.ArgumentParser:
                      help="folder mode: models generated in parallel (default: number of CPUs)")
     gen.add_argument("--force", action="store_true",
                      help="folder mode: regenerate models whose input and stylesheets did not change")
-    gen.add_argument("-t", "--target", default="orocos", choices=targets(), help="middleware target (default: orocos)")
+    gen.add_argument("-t", "--target", default=None, choices=targets(),
+                     help="middleware target (default: the one the model deploys on; Orocos if it deploys on none)")
     gen.add_argument("--package-name", default="", metavar="NAME",
                      help="package / CMake project name (default: derived from the model name)")
     gen.add_argument("--type-map", type=Path, metavar="FILE",
@@ -148,7 +149,8 @@ def _check(args: argparse.Namespace) -> int:
     done = check(args.model, args.target, package_name=args.package_name, type_map=args.type_map)
     _report(args.format, done.diagnostics, done.exit_code)
     summary = (f"robomda: {args.model}: {done.count('error')} errors, {done.count('warning')} warnings, "
-               f"{done.count('info')} notes (checked for {', '.join(done.targets)})")
+               f"{done.count('info')} notes (checked for {', '.join(done.targets)}; rules: "
+               f"{', '.join(done.rule_sets) or 'none, the import or bind stopped first'})")
     print(summary, file=sys.stdout if args.format == "text" else sys.stderr)
     return done.exit_code
 
@@ -195,7 +197,7 @@ def _main(args: argparse.Namespace, fmt: str) -> int:
                     _write_model_file(args.save_stages / f"{name}.xml", text)
             report = done.report
             if report is not None:
-                print(f"robomda: {args.target} package in {args.output}: {len(report.written)} written, "
+                print(f"robomda: {done.target} package in {args.output}: {len(report.written)} written, "
                       f"{len(report.unchanged)} unchanged, {len(report.kept_user)} user files kept"
                       + (f", fresh copies beside them: {', '.join(report.fresh_copies)}" if report.fresh_copies else "")
                       + (f", removed stale: {', '.join(report.removed)}" if report.removed else "")

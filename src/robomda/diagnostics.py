@@ -57,6 +57,7 @@ class Diagnostic:
     element_name: str | None = None
     xmi_id: str | None = None
     step: str | None = None
+    qualified_name: str | None = None  # the element's UML qualified name (Package::Component::port)
 
     def format(self) -> str:
         """``FILE:LINE:COL: severity: [CODE] message (kind 'name', xmi:id)``."""
@@ -151,6 +152,7 @@ class _Where:
     column: int
     kind: str
     name: str
+    qualified_name: str = ""
 
 
 class XmiLocator:
@@ -178,7 +180,7 @@ class XmiLocator:
             if xid is None or xid in index:
                 continue
             line = el.sourceline or 0
-            index[xid] = _Where(line, _column(lines, line, xid), _kind(el), el.get("name", ""))
+            index[xid] = _Where(line, _column(lines, line, xid), _kind(el), el.get("name", ""), _qualified_name(el))
         return index
 
     def locate(self, xmi_id: str | None) -> _Where | None:
@@ -203,7 +205,14 @@ class XmiLocator:
             element_name=where.name if where else None,
             xmi_id=xmi_id or None,
             step=step,
+            qualified_name=(where.qualified_name or None) if where else None,
         )
+
+
+def _qualified_name(el: etree._Element) -> str:
+    """UML's qualified name: the names of the element and its named owners, outermost first, joined by ::."""
+    names = [a.get("name") for a in [el, *el.iterancestors()] if a.get("name")]
+    return "::".join(reversed(names))
 
 
 def _xmi_id(el: etree._Element) -> str | None:

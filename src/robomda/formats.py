@@ -25,7 +25,8 @@ _SARIF_LEVEL = {"error": "error", "warning": "warning", "info": "note"}
 def _element(d: Diagnostic) -> dict[str, str] | None:
     if not (d.xmi_id or d.element_kind):
         return None
-    return {"kind": d.element_kind or "", "name": d.element_name or "", "xmi_id": d.xmi_id or ""}
+    return {"kind": d.element_kind or "", "name": d.element_name or "", "qualified_name": d.qualified_name or "",
+            "xmi_id": d.xmi_id or ""}
 
 
 def to_json(diagnostics: list[Diagnostic], exit_code: int) -> str:
@@ -68,9 +69,11 @@ def to_sarif(diagnostics: list[Diagnostic], exit_code: int) -> str:
                 physical["region"] = region
             location["physicalLocation"] = physical
         if d.xmi_id or d.element_name:
-            logical = {"name": d.element_name or d.xmi_id or "", "kind": d.element_kind or "element"}
+            logical: dict[str, object] = {"name": d.element_name or d.xmi_id or "", "kind": d.element_kind or "element"}
+            if d.qualified_name:
+                logical["fullyQualifiedName"] = d.qualified_name
             if d.xmi_id:
-                logical["fullyQualifiedName"] = d.xmi_id
+                logical["properties"] = {"xmiId": d.xmi_id}
             location["logicalLocations"] = [logical]
         if location:
             result["locations"] = [location]
