@@ -90,12 +90,38 @@ def _run(chain: pipelines.Pipeline, model: Path, context: dict[str, str], *,
     Well-formedness is checked only after a failure: a good model is parsed
     once, by Saxon, not once more up front.
     """
+    unread = _external_entities(model)
     try:
-        return pipelines.run(chain, _engine(), model, context, steps=steps)
+        result = pipelines.run(chain, _engine(), model, context, steps=steps)
     except RobomdaError as exc:
         if exc.exit_code == EXIT_INTERNAL:
             _check_well_formed(model)
+        exc.diagnostics[:0] = unread
         raise
+    result.warnings[:0] = unread
+    return result
+
+
+# an external entity declared in the document type: <!ENTITY [%] name SYSTEM|PUBLIC ...>
+_EXTERNAL_ENTITY = re.compile(rb"<!ENTITY\s+(?:%\s+)?([^\s>]+)\s+(?:SYSTEM|PUBLIC)\s+[\"']([^\"']*)", re.S)
+
+
+def _external_entities(model: Path) -> list[Diagnostic]:
+    """IMP005 for each external entity the model declares: no parser of robomda's reads them."""
+    try:
+        with model.open("rb") as handle:
+            head = handle.read(1 << 16)
+    except OSError:
+        return []
+    prolog = head.split(b"]>", 1)[0] if b"<!DOCTYPE" in head else b""
+    found = []
+    for match in _EXTERNAL_ENTITY.finditer(prolog):
+        line = head.count(b"\n", 0, match.start()) + 1
+        name, target = (g.decode("utf-8", "replace") for g in match.groups())
+        found.append(Diagnostic("warning", "IMP005", f"the model declares the external entity '{name}' "
+                                f"({target}): robomda reads no external entity or DTD, so its references are empty",
+                                file=str(model), line=line, column=1))
+    return found
 
 
 def _context(model: Path, out: Path | None, package_name: str, type_map: Path | None = None) -> dict[str, str]:

@@ -59,11 +59,25 @@ def _captured_stderr() -> Iterator[list[str]]:
             out.append(sink.read().decode("utf-8", errors="replace"))
 
 
+# Saxon's XML parser, for the models and every document a stylesheet reads:
+# no external entities (a model must not pull /etc/passwd into the output)
+# and no external DTD (EA's XMI 1.1 names UML_EA.dtd, which nobody has; a
+# DTD could also be fetched over the network)
+_SAFE_PARSER = {
+    f"http://saxon.sf.net/feature/parserFeature?uri={feature}": "false"
+    for feature in ("http%3A//xml.org/sax/features/external-general-entities",
+                    "http%3A//xml.org/sax/features/external-parameter-entities",
+                    "http%3A//apache.org/xml/features/nonvalidating/load-external-dtd")
+}
+
+
 class Engine:
     """Compiles stylesheets once and runs them on strings or files."""
 
     def __init__(self) -> None:
         self._proc = PySaxonProcessor(license=False)
+        for name, value in _SAFE_PARSER.items():
+            self._proc.set_configuration_property(name, value)
         self._xslt = self._proc.new_xslt30_processor()
         self._compiled: dict[Path, object] = {}
         self._serializer: object | None = None
