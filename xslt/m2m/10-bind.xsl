@@ -935,7 +935,7 @@
                         ('DATA', 'BUFFER', 'CIRCULAR_BUFFER'), 'connection type', $id)"/>
     <pim:policy type="{$type}"
         size="{let $s := fp:tag($e, 'ConnectionPolicy', 'size')[normalize-space(.)]
-               return if (exists($s)) then max((1, fp:integer($s, 'size', $id))) else $default/@size}"
+               return if (exists($s)) then fp:integer($s, 'size', $id) else $default/@size}"
         lock-policy="{fp:enum((fp:tag($e, 'ConnectionPolicy', 'lockPolicy')[normalize-space(.)], $default/@lock-policy)[1],
                              ('UNSYNC', 'LOCKED', 'LOCK_FREE'), 'lock policy', $id)}"
         init="{fp:boolean((fp:tag($e, 'ConnectionPolicy', 'init')[normalize-space(.)], $default/@init)[1], 'init', $id)}"
