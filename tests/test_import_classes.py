@@ -198,9 +198,11 @@ def test_an_unknown_environment_name_without_stereotype_is_still_bnd003(tmp_path
                                             ("use-cases-only.uml", "holds no component")])
 def test_a_file_with_nothing_robomda_uses_says_so(name: str, holds: str, tmp_path: Path,
                                                   capsys: pytest.CaptureFixture[str]) -> None:
-    assert main(["check", str(DATA / name)]) == 0
+    # check runs what generate runs (issue 10 item 4): it fails as generate does
+    assert main(["check", str(DATA / name)]) == 1
     err = capsys.readouterr().err
     assert "warning: [IMP030] nothing to generate from" in err and holds in err
+    assert "[ORO005] nothing to generate" in err
     assert ("2 Stereotype" if name == "profile-only.uml" else "2 UseCase, 1 Actor") in err
     # generating says why nothing was generated, and writes nothing
     assert main(["generate", str(DATA / name), "-o", str(tmp_path / "out")]) == 1

@@ -838,6 +838,19 @@
         else ()"/>
   </xsl:function>
 
+  <!-- true when port $p is typed by an interface that neither the
+       component nor its realizing class provides or requires, and has no
+       provided / required lists: fp:port-interfaces then guesses its
+       direction from conjugation alone (rule APP006 says so) -->
+  <xsl:function name="fp:direction-guessed" as="xs:boolean">
+    <xsl:param name="p" as="element(pim:port)"/>
+    <xsl:param name="c" as="element(pim:component)"/>
+    <xsl:param name="r" as="element(pim:class)?"/>
+    <xsl:variable name="t" as="element()?" select="key('fp:id', $p/@type, root($p))"/>
+    <xsl:sequence select="not($p/pim:provided or $p/pim:required) and exists($t/self::pim:interface)
+                          and not(($c, $r)/(pim:requires | pim:provides)/@interface = $t/@id)"/>
+  </xsl:function>
+
   <!-- the problems of the data ports of port $p (BND002, BND004,
        BND005), as maps for f:fail-all -->
   <xsl:function name="fp:port-problems" as="map(*)*">
@@ -904,6 +917,9 @@
                          port-name="{$p/@name}" direction="{$pairs[2 * current()]}"
                          interface="{$i/@id}" interface-name="{$i/@name}"
                          datum="{$data/@id}" datum-name="{$data/@name}">
+            <xsl:if test="fp:direction-guessed($p, $c, $r)">
+              <xsl:attribute name="direction-source" select="'guessed'"/>
+            </xsl:if>
             <xsl:sequence select="$data/(@primitive, @type, @type-name, @upper)"/>
           </pim:data-port>
         </xsl:otherwise>
