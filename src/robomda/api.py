@@ -291,4 +291,5 @@ def generate(model: Path | str, out: Path | str | None, target: str | None = Non
     report = None
     if write and out_path is not None and chain.yields == "files" and result.tree is not None:
         report = write_fileset(result.tree, out_path)
+        warnings += report.warnings
     return Generated(result.stages, report, result.timings, warnings, target)

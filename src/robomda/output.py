@@ -11,6 +11,14 @@ Rules (the file set's ``mode`` says which applies):
   ``PATH.robomda-new`` for diffing.
 - generated files of an earlier run that the new run no longer produces are
   removed if unchanged, kept (and reported) if edited.
+- a user file of an earlier run that the new run no longer produces (its
+  component was renamed or removed) while it is still there stops the run
+  before anything is written (OUT003): the build would no longer compile it,
+  so the user's code would drop out of the robot in silence. The message
+  names the file and, for a rename, the new file to move the code into.
+- a user file whose element changed what the generated code requires of it
+  (ports, operations, hooks: the file set's ``signature``) gets a warning
+  naming the file and the changes (OUT004); its fresh copy goes beside it.
 
 All or nothing, even when robomda is killed: the new package is built in a
 staging folder beside the output (``.<name>.robomda-new``): every file the
@@ -57,19 +65,52 @@ class WriteReport:
     fresh_copies: list[str] = field(default_factory=list)
     removed: list[str] = field(default_factory=list)
     kept_stale: list[str] = field(default_factory=list)
+    warnings: list[Diagnostic] = field(default_factory=list)
 
 
 def _sha(data: bytes) -> str:
     return hashlib.sha256(data).hexdigest()
 
 
-def _read_state(out: Path) -> dict[str, str]:
+def _read_state(out: Path, part: str = "files") -> dict:
+    """``files`` (path -> hash of each generated file) or ``user`` (path -> what each user file implements)."""
     try:
         data = json.loads((out / STATE_FILE).read_text(encoding="utf-8"))
-        files = data.get("files", {})
-        return {str(k): str(v) for k, v in files.items()} if isinstance(files, dict) else {}
-    except (OSError, ValueError):
+        found = data.get(part, {})
+        return dict(found) if isinstance(found, dict) else {}
+    except (OSError, ValueError, AttributeError):
         return {}
+
+
+def _user_drift(out: Path, nodes: list[etree._Element]) -> tuple[list[Diagnostic], list[Diagnostic]]:
+    """(OUT003 errors for orphaned user files, OUT004 warnings for user files whose element changed)."""
+    before = _read_state(out, "user")
+    now = {n.get("path"): n for n in nodes}
+    errors, warnings = [], []
+    for rel, was in sorted(before.items()):
+        if not isinstance(was, dict) or not (out / rel).is_file():
+            continue
+        node = now.get(rel)
+        if node is None:
+            moved = [n.get("path") for n in nodes if n.get("implements") == was.get("implements")
+                     and Path(n.get("path")).suffix == Path(rel).suffix]
+            what = f"{was.get('name', '?')} ({was.get('implements', '?')})"
+            hint = (f"it is now {moved[0]}: move your code there (rename the class too), then remove {rel}"
+                    if moved else "no user file implements it any more (it is gone from the model, or got a realizing "
+                    "class): move your code out of the package or remove the file")
+            errors.append(Diagnostic(
+                "error", "OUT003", f"user file {rel} holds the code of {what}, which the new package no longer "
+                f"builds: {hint}; nothing was written", file=str(out / rel)))
+            continue
+        old_items = set(filter(None, str(was.get("signature", "")).split("\n")))
+        new_items = set(filter(None, (node.get("signature") or "").split("\n")))
+        if old_items != new_items:
+            changes = [f"no more {i}" for i in sorted(old_items - new_items)] + [f"new {i}" for i in sorted(new_items - old_items)]
+            warnings.append(Diagnostic(
+                "warning", "OUT004", f"{node.get('implements-name')} changed what user file {rel} implements "
+                f"({'; '.join(changes)}): update it (the fresh version is beside it as {rel}{NEW_SUFFIX})",
+                file=str(out / rel)))
+    return errors, warnings
 
 
 def atomic_write(path: Path, data: bytes) -> None:
@@ -190,8 +231,10 @@ def write_fileset(files: etree._Element, out: Path) -> WriteReport:
                     "move your changes into the user files (the ones robomda writes once) or remove it",
                     file=str(target)))
         plan.append((rel, data, mode))
-    if conflicts:
-        raise RobomdaError(conflicts, EXIT_INPUT)
+    user_nodes = [n for n in files.iterchildren(f"{{{_FS}}}file") if n.get("mode") == "user"]
+    orphans, drift = _user_drift(out, user_nodes)
+    if conflicts or orphans:
+        raise RobomdaError(conflicts + orphans, EXIT_INPUT)
 
     report = WriteReport()
     new_state: dict[str, str] = {}
@@ -225,7 +268,10 @@ def write_fileset(files: etree._Element, out: Path) -> WriteReport:
             report.removed.append(rel)
         elif target.exists():
             report.kept_stale.append(rel)
-    payload = {"generator": "robomda", "files": dict(sorted(new_state.items()))}
+    report.warnings.extend(drift)
+    users = {n.get("path"): {"implements": n.get("implements", ""), "name": n.get("implements-name", ""),
+                             "signature": n.get("signature", "")} for n in user_nodes if n.get("implements")}
+    payload = {"generator": "robomda", "files": dict(sorted(new_state.items())), "user": dict(sorted(users.items()))}
     writes[STATE_FILE.as_posix()] = (json.dumps(payload, indent=1) + "\n").encode("utf-8")
     _swap_in(out, writes, drops)
     return report

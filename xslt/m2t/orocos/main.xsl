@@ -57,8 +57,8 @@
         <xsl:sequence select="fp:file(concat('include/', $pkg, '/', @generated-class, '.hpp'), 'generated', $fp:cpp-xsl, fp:cpp-header(.))"/>
         <xsl:sequence select="fp:file(concat('src/', @generated-class, '.cpp'), 'generated', $fp:cpp-xsl, fp:cpp-source(.))"/>
         <xsl:if test="@kind eq 'base'">
-          <xsl:sequence select="fp:file(concat('include/', $pkg, '/', @class, '.hpp'), 'user', $fp:cpp-xsl, fp:user-header(.))"/>
-          <xsl:sequence select="fp:file(concat('src/', @class, '.cpp'), 'user', $fp:cpp-xsl, fp:user-source(.))"/>
+          <xsl:sequence select="fp:user-file(concat('include/', $pkg, '/', @class, '.hpp'), ., fp:user-header(.))"/>
+          <xsl:sequence select="fp:user-file(concat('src/', @class, '.cpp'), ., fp:user-source(.))"/>
         </xsl:if>
       </xsl:for-each>
       <xsl:sequence select="fp:file('src/components.cpp', 'generated', $fp:cpp-xsl, fp:components-cpp(.))"/>
@@ -76,6 +76,22 @@
       </xsl:call-template>
     </fs:files>
   </xsl:template>
+
+  <!-- a user file of task context $tc: what it implements and what the
+       generated base class requires of it (ports, operations, hooks) -->
+  <xsl:function name="fp:user-file" as="element(fs:file)">
+    <xsl:param name="path" as="xs:string"/>
+    <xsl:param name="tc" as="element(o:task-context)"/>
+    <xsl:param name="text" as="xs:string"/>
+    <fs:file path="{$path}" mode="user" stylesheet="{$fp:cpp-xsl}" implements="{$tc/@xmi-id}"
+             implements-name="{$tc/@name}"
+             signature="{string-join((
+                 $tc/o:port ! concat('port ', @name, ' ', @direction, ' ', @cpp-type),
+                 $tc/o:operation ! concat('operation ', @name, '(', string-join(o:parameter/@decl-type, ', '), ') ', @return-type),
+                 $tc/o:hook[@call] ! concat('hook ', @name)), '&#10;')}">
+      <xsl:value-of select="$text"/>
+    </fs:file>
+  </xsl:function>
 
   <xsl:function name="fp:file" as="element(fs:file)">
     <xsl:param name="path" as="xs:string"/>
