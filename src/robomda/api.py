@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 import re
+from functools import lru_cache
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -193,11 +194,7 @@ def check(model: Path | str, target: str | None = None, *, package_name: str = "
         nonlocal exit_code
         chain = pipelines.load(pipeline_path(name))
         steps = len(chain.steps) - 1 if chain.yields == "files" else None
-        for step in chain.steps[:steps]:
-            for rules in step.checks:
-                label = rules.rules.name + (f" ({rules.phase})" if rules.phase else "")
-                if label not in rule_sets:
-                    rule_sets.append(label)
+        ran = chain.steps[:steps]
         try:
             result = _run(chain, model, context, steps=steps)
         except RobomdaError as exc:
@@ -205,7 +202,14 @@ def check(model: Path | str, target: str | None = None, *, package_name: str = "
                 raise
             exit_code = EXIT_FINDINGS
             _add(diagnostics, exc.diagnostics)
+            ran = _steps_checked(ran, exc.diagnostics)
             return None
+        finally:
+            for step in ran:
+                for rules in step.checks:
+                    label = rules.rules.name + (f" ({rules.phase})" if rules.phase else "")
+                    if label not in rule_sets:
+                        rule_sets.append(label)
         _add(diagnostics, result.warnings)
         return result
 
@@ -220,6 +224,26 @@ def check(model: Path | str, target: str | None = None, *, package_name: str = "
     for name in chosen:
         run_until_text(name)
     return Checked(diagnostics, chosen, exit_code, rule_sets)
+
+
+def _steps_checked(steps: list[pipelines.Step], found: list[Diagnostic]) -> list[pipelines.Step]:
+    """The steps of a failed run whose rules ran: those before the failing step, and the failing step
+    itself when its rules made the error (an error of its stylesheet stops it before its rules)."""
+    failing = next((d.step for d in found if d.severity == "error" and d.step), None)
+    names = [step.name for step in steps]
+    if failing not in names:
+        return []
+    at = names.index(failing)
+    codes = {d.code for d in found if d.severity == "error" and d.step == failing}
+    by_rules = any(codes & _rule_ids(check.rules) for check in steps[at].checks)
+    return steps[:at + 1] if by_rules else steps[:at]
+
+
+@lru_cache(maxsize=None)
+def _rule_ids(rules: Path) -> frozenset[str]:
+    tree = etree.parse(str(rules))
+    return frozenset(tree.xpath("//sch:assert/@id | //sch:report/@id",
+                                namespaces={"sch": "http://purl.oclc.org/dsdl/schematron"}))
 
 
 DEFAULT_TARGET = "orocos"
