@@ -203,6 +203,10 @@ def test_ros1_catkin_lint_no_error(case: Path, tmp_path: Path) -> None:
     proc = subprocess.run([lint, "-W2", str(tmp_path / case.name)], env=_ros_env(), capture_output=True, text=True)
     errors = [line for line in proc.stdout.splitlines() + proc.stderr.splitlines() if ": error:" in line]
     assert not errors, "\n".join(errors)
+    # and no warning (-W1): the atomic-code library is an imported target, not an include
+    # folder outside the package (issue 10 item 7)
+    warnings = [line for line in proc.stdout.splitlines() + proc.stderr.splitlines() if ": warning:" in line]
+    assert not warnings, "\n".join(warnings)
 
 
 @pytest.mark.parametrize("case", CASES, ids=[c.name for c in CASES])
@@ -291,3 +295,21 @@ def test_ros1_pid_runs_under_roscore(catkin_ws: Path) -> None:
                 except subprocess.TimeoutExpired:
                     os.killpg(proc.pid, signal.SIGKILL)
                     proc.wait()
+
+
+def test_ros1_package_moved_away_names_the_option_then_configures(tmp_path: Path) -> None:
+    """A package copied into a workspace failed with an unexplained NOTFOUND (issue 10 item 7)."""
+    cmake = _need("cmake")
+    _need("catkin_make")
+    generate(ROOT / "fixtures" / "cases" / "pid" / "model.xmi", tmp_path / "out" / "pid", "ros1")
+    moved = tmp_path / "ws" / "src" / "deeper" / "pid"
+    shutil.copytree(tmp_path / "out" / "pid", moved)
+    args = [cmake, "-S", str(moved), "-DPYTHON_EXECUTABLE=/usr/bin/python3"]
+    lost = subprocess.run(args + ["-B", str(tmp_path / "b1")], env=_ros_env(), capture_output=True, text=True)
+    assert lost.returncode != 0
+    assert "atomic-code library pid_atomic: no directory" in lost.stderr
+    assert "give its place with -DPID_PID_ATOMIC_DIR=DIR" in " ".join(lost.stderr.split())
+    atomic = ROOT / "fixtures" / "cases" / "pid" / "atomic"
+    found = subprocess.run(args + ["-B", str(tmp_path / "b2"), f"-DPID_PID_ATOMIC_DIR={atomic}"],
+                           env=_ros_env(), capture_output=True, text=True)
+    assert found.returncode == 0, found.stderr[-2000:]

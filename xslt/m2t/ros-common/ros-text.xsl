@@ -168,6 +168,10 @@
         '# library is searched in the folder, its lib/ and build/.',
         concat('set(', $lib/@cmake-var, ' &quot;', fp:library-dir($lib), '&quot; CACHE PATH'),
         concat('    &quot;Directory of the atomic-code library ', $lib/@name, '&quot;)'),
+        concat('if(NOT IS_DIRECTORY &quot;', $v, '&quot;)'),
+        concat('  message(FATAL_ERROR &quot;atomic-code library ', $lib/@name, ': no directory ', $v,
+               '; give its place with -D', $lib/@cmake-var, '=DIR&quot;)'),
+        'endif()',
         concat('if(EXISTS &quot;', $v, '/CMakeLists.txt&quot;)'),
         '  include(ExternalProject)',
         concat('  set(', $var, '_LIBRARY'),
@@ -183,14 +187,35 @@
         concat('  find_library(', $var, '_LIBRARY NAMES ', $lib/@target),
         concat('    PATHS &quot;', $v, '&quot; &quot;', $v, '/lib&quot; &quot;', $v, '/build&quot; NO_DEFAULT_PATH)'),
         concat('  set(', $var, '_DEPENDS &quot;&quot;)'),
+        concat('  if(NOT ', $var, '_LIBRARY)'),
+        concat('    message(FATAL_ERROR &quot;atomic-code library ', $lib/@name, ': neither a CMakeLists.txt nor a built library ',
+               $lib/@target, ' in ', $v, '; give its place with -D', $lib/@cmake-var, '=DIR&quot;)'),
+        '  endif()',
         'endif()',
-        concat('include_directories(&quot;', $v, '/', $lib/@include-dir, '&quot; &quot;', $v, '&quot;)')"/>
+        '# an imported target: the library and its include folders travel with the link,',
+        '# and no include folder outside the package is added to the package itself',
+        concat('set(', $var, '_INCLUDE_DIRS &quot;&quot;)'),
+        concat('foreach(dir &quot;', $v, '/', $lib/@include-dir, '&quot; &quot;', $v, '&quot;)'),
+        '  if(IS_DIRECTORY &quot;${dir}&quot;)',
+        concat('    list(APPEND ', $var, '_INCLUDE_DIRS &quot;${dir}&quot;)'),
+        '  endif()',
+        'endforeach()',
+        concat('add_library(', fp:library-target($lib), ' INTERFACE IMPORTED)'),
+        concat('set_target_properties(', fp:library-target($lib), ' PROPERTIES'),
+        concat('  INTERFACE_INCLUDE_DIRECTORIES &quot;${', $var, '_INCLUDE_DIRS}&quot;'),
+        concat('  INTERFACE_LINK_LIBRARIES &quot;${', $var, '_LIBRARY}&quot;)')"/>
+  </xsl:function>
+
+  <!-- the imported CMake target of an atomic-code library -->
+  <xsl:function name="fp:library-target" as="xs:string">
+    <xsl:param name="lib" as="element(r:library)"/>
+    <xsl:sequence select="concat('${PROJECT_NAME}::', $lib/@target)"/>
   </xsl:function>
 
   <!-- the link items and the build dependencies of the libraries -->
   <xsl:function name="fp:library-vars" as="xs:string*">
     <xsl:param name="p" as="element(r:package)"/>
-    <xsl:sequence select="$p/r:library ! (concat('${', replace(@cmake-var, '_DIR$', '_LIBRARY'), '}'))"/>
+    <xsl:sequence select="$p/r:library ! fp:library-target(.)"/>
   </xsl:function>
 
   <xsl:function name="fp:library-depends" as="xs:string*">
