@@ -150,3 +150,16 @@ def test_a_package_name_that_is_rewritten_says_so(capsys: pytest.CaptureFixture[
     code, _, err = run(capsys, "generate", str(CASES / "headlamp" / "model.xmi"), "-o", str(tmp_path / "p"),
                        "--package-name", "my_lamp")
     assert code == 0 and "PKG001" not in err
+
+
+def test_package_xml_says_who_and_which_license(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    """package.xml said license TODO and a placeholder maintainer, hard-coded (issue 10 item 7)."""
+    code, _, err = run(capsys, "generate", str(CASES / "pid" / "model.xmi"), "-o", str(tmp_path / "a"),
+                       "--maintainer", "Jane Roe & Co <jane@example.org>", "--license", "Apache-2.0",
+                       "--package-version", "1.2.3")
+    assert code == 0 and "PKG002" not in err
+    text = (tmp_path / "a" / "package.xml").read_text()
+    assert "<version>1.2.3</version>" in text and "<license>Apache-2.0</license>" in text
+    assert '<maintainer email="jane@example.org">Jane Roe &amp; Co</maintainer>' in text
+    code, _, err = run(capsys, "generate", str(CASES / "pid" / "model.xmi"), "-o", str(tmp_path / "b"))
+    assert code == 0 and "[PKG002] package.xml names a placeholder maintainer and license" in err

@@ -109,7 +109,8 @@ def test_a_model_deployed_elsewhere_is_generated_with_a_located_warning(
         tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     model = _mutated(tmp_path, "meka", 'name="OROCOS"', 'name="ROS"')
     # named on purpose: without --target, generate picks the model's own middleware (ROS)
-    code, err = _generate(capsys, model, tmp_path / "out", "--target", "orocos")
+    code, err = _generate(capsys, model, tmp_path / "out", "--target", "orocos",
+                          "--maintainer", "A B <a@b.org>", "--license", "MIT")
     line, column = _line_of(model, 'name="ROS"')
     assert code == 0
     assert err[0].startswith(f"{model}:{line}:{column}: warning: [ORO006] ") and "generating all 6" in err[0]

@@ -16,7 +16,7 @@ from robomda.engine import Engine
 from robomda.output import WriteReport, write_fileset
 from robomda.resources import available_targets, pipeline_path
 
-__all__ = ["generate", "import_model", "check", "targets", "default_targets", "Generated", "Checked"]
+__all__ = ["generate", "import_model", "check", "targets", "default_targets", "Generated", "Checked", "PackageInfo"]
 
 _ENGINE: Engine | None = None
 
@@ -125,7 +125,23 @@ def _external_entities(model: Path) -> list[Diagnostic]:
     return found
 
 
-def _context(model: Path, out: Path | None, package_name: str, type_map: Path | None = None) -> dict[str, str]:
+@dataclass(frozen=True)
+class PackageInfo:
+    """What package.xml says of a generated package: empty fields are placeholders (PKG002)."""
+
+    version: str = ""
+    maintainer: str = ""  # "Name <e-mail>"
+    license: str = ""
+
+    def context(self) -> dict[str, str]:
+        found = re.fullmatch(r"\s*(.*?)\s*<([^<>]*)>\s*", self.maintainer)
+        name, email = (found.group(1), found.group(2)) if found else (self.maintainer.strip(), "")
+        return {"package-version": self.version, "maintainer-name": name, "maintainer-email": email,
+                "license": self.license}
+
+
+def _context(model: Path, out: Path | None, package_name: str, type_map: Path | None = None,
+             package: PackageInfo | None = None) -> dict[str, str]:
     model_dir = model.resolve().parent
     rel = os.path.relpath(model_dir, out.resolve()) if out is not None else "."
     return {
@@ -133,6 +149,7 @@ def _context(model: Path, out: Path | None, package_name: str, type_map: Path | 
         "model-dir-from-output": Path(rel).as_posix(),
         "package-name": package_name,
         "type-map": type_map.resolve().as_uri() if type_map is not None else "",
+        **(package or PackageInfo()).context(),
     }
 
 
@@ -288,7 +305,7 @@ def _package_name_note(asked: str, psm: str | None, model: Path) -> list[Diagnos
 
 
 def generate(model: Path | str, out: Path | str | None, target: str | None = None, *, package_name: str = "",
-             type_map: Path | str | None = None, write: bool = True) -> Generated:
+             type_map: Path | str | None = None, write: bool = True, package: PackageInfo | None = None) -> Generated:
     """Run ``target``'s chain on ``model`` and write its files into ``out``.
 
     Without a ``target``: the one middleware the model deploys on (Orocos
@@ -309,9 +326,14 @@ def generate(model: Path | str, out: Path | str | None, target: str | None = Non
     _check_readable(model)
     out_path = Path(out) if out is not None else None
     chain = pipelines.load(pipeline_path(target))
-    context = _context(model, out_path, package_name, _type_map(type_map))
+    context = _context(model, out_path, package_name, _type_map(type_map), package)
     result = _run(chain, model, context)
     warnings = result.warnings + _package_name_note(package_name, result.stages.get("psm"), model)
+    missing = [opt for opt, key in (("--maintainer", "maintainer-email"), ("--license", "license")) if not context[key]]
+    if missing and chain.yields == "files":
+        warnings.append(Diagnostic("warning", "PKG002", f"package.xml names a placeholder {' and '.join(m[2:] for m in missing)}: "
+                                   f"give {' and '.join(missing)} (a package cannot be released as it is)",
+                                   file=str(model)))
     report = None
     if write and out_path is not None and chain.yields == "files" and result.tree is not None:
         report = write_fileset(result.tree, out_path)

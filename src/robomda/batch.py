@@ -125,9 +125,10 @@ def find_models(folder: Path, exclude: Path | None = None) -> list[Path]:
     return found
 
 
-def toolchain_hash(target: str | None, package_name: str, type_map: Path | None = None) -> str:
+def toolchain_hash(target: str | None, package_name: str, type_map: Path | None = None,
+                   package: tuple[str, str, str] = ("", "", "")) -> str:
     """A hash of everything besides the model that decides the output."""
-    digest = hashlib.sha256(f"robomda {__version__} {target} {package_name}".encode())
+    digest = hashlib.sha256(f"robomda {__version__} {target} {package_name} {package}".encode())
     if type_map is not None:
         digest.update(type_map.read_bytes())
     root = resource_root()
@@ -154,14 +155,16 @@ def _outputs_intact(dest: Path) -> bool:
         return False
 
 
-def _generate_one(model: str, out: str, target: str | None, package_name: str, type_map: str | None) -> ModelResult:
+def _generate_one(model: str, out: str, target: str | None, package_name: str, type_map: str | None,
+                  package: tuple[str, str, str] = ("", "", "")) -> ModelResult:
     """Worker: one model (the process's engine is reused across calls)."""
-    from robomda.api import generate
+    from robomda.api import PackageInfo, generate
 
     started = time.perf_counter()
     result = ModelResult(model=model, status="ok")
     try:
-        done = generate(model, out, target, package_name=package_name, type_map=type_map)
+        done = generate(model, out, target, package_name=package_name, type_map=type_map,
+                        package=PackageInfo(*package))
         result.files_written = len(done.report.written) if done.report else 0
         result.diagnostics = [w.format() for w in done.warnings]
     except RobomdaError as exc:
@@ -183,13 +186,13 @@ def _read_state(out: Path) -> dict[str, dict[str, str]]:
 
 
 def run_batch(folder: Path, out: Path, target: str | None = None, *, package_name: str = "", jobs: int | None = None,
-              force: bool = False, type_map: Path | None = None,
+              force: bool = False, type_map: Path | None = None, package: tuple[str, str, str] = ("", "", ""),
               progress: Callable[[int, int, ModelResult], None] | None = None) -> BatchReport:
     """Generate every model under ``folder`` into ``out``; never raises for one model's failure."""
     started = time.perf_counter()
     folder, out = folder.resolve(), out.resolve()
     models = find_models(folder, exclude=out)
-    tools = toolchain_hash(target, package_name, type_map)
+    tools = toolchain_hash(target, package_name, type_map, package)
     map_arg = str(type_map.resolve()) if type_map is not None else None
     state = _read_state(out)
     results: list[ModelResult] = []
@@ -214,7 +217,7 @@ def run_batch(folder: Path, out: Path, target: str | None = None, *, package_nam
     try:
         if todo and workers == 1:
             for model, dest, digest in todo:
-                result = _generate_one(str(model), str(dest), target, package_name, map_arg)
+                result = _generate_one(str(model), str(dest), target, package_name, map_arg, package)
                 done_count += 1
                 results.append(_finish(result, model, folder, digest, progress, done_count, total))
         elif todo:
@@ -222,7 +225,7 @@ def run_batch(folder: Path, out: Path, target: str | None = None, *, package_nam
             pool = ProcessPoolExecutor(max_workers=workers, mp_context=get_context("spawn"),
                                        initializer=_worker_init)
             try:
-                futures = {pool.submit(_generate_one, str(m), str(d), target, package_name, map_arg): (m, dg)
+                futures = {pool.submit(_generate_one, str(m), str(d), target, package_name, map_arg, package): (m, dg)
                            for m, d, dg in todo}
                 for future in as_completed(futures):
                     model, digest = futures[future]

@@ -10,7 +10,7 @@ from pathlib import Path
 from lxml import etree
 
 from robomda import __version__
-from robomda.api import check, generate, import_model, targets
+from robomda.api import PackageInfo, check, generate, import_model, targets
 from robomda.batch import ProgressBar, run_batch
 from robomda.diagnostics import EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, Diagnostic, RobomdaError
 from robomda.formats import FORMATS, render
@@ -52,6 +52,10 @@ def _parser() -> argparse.ArgumentParser:
                      help="folder mode: models generated in parallel (default: number of CPUs)")
     gen.add_argument("--force", action="store_true",
                      help="folder mode: regenerate models whose input and stylesheets did not change")
+    gen.add_argument("--maintainer", default="", metavar="'NAME <E-MAIL>'",
+                     help="the package maintainer written in package.xml")
+    gen.add_argument("--license", default="", metavar="LICENSE", help="the package license (e.g. Apache-2.0)")
+    gen.add_argument("--package-version", default="", metavar="X.Y.Z", help="the package version (default 0.0.0)")
     gen.add_argument("-t", "--target", default=None, choices=targets(),
                      help="middleware target (default: the one the model deploys on; Orocos if it deploys on none)")
     gen.add_argument("--package-name", default="", metavar="NAME",
@@ -119,6 +123,7 @@ def _batch(args: argparse.Namespace) -> int:
         print("robomda: -j needs a positive number", file=sys.stderr)
         return EXIT_INPUT
     report = run_batch(args.model, args.output, args.target, package_name=args.package_name, jobs=args.jobs,
+                       package=(args.package_version, args.maintainer, args.license),
                        force=args.force, type_map=args.type_map, progress=ProgressBar())
     for result in report.results:
         for line in result.diagnostics:
@@ -190,7 +195,8 @@ def _main(args: argparse.Namespace, fmt: str) -> int:
             return _check(args)
         if args.command == "generate":
             done = generate(args.model, args.output, args.target, package_name=args.package_name,
-                            type_map=args.type_map)
+                            type_map=args.type_map,
+                            package=PackageInfo(args.package_version, args.maintainer, args.license))
             _report(fmt, done.warnings, EXIT_OK)
             if args.save_stages:
                 for name, text in done.stages.items():

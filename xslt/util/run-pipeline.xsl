@@ -51,6 +51,19 @@
     <!-- ROS targets: absolute URI of a user type map; empty = none -->
   </xsl:param>
 
+  <xsl:param name="package-version" as="xs:string" select="''">
+    <!-- the package's version; empty = 0.0.0 -->
+  </xsl:param>
+  <xsl:param name="maintainer-name" as="xs:string" select="''">
+    <!-- the package maintainer's name; empty = a placeholder -->
+  </xsl:param>
+  <xsl:param name="maintainer-email" as="xs:string" select="''">
+    <!-- the package maintainer's e-mail address; empty = a placeholder -->
+  </xsl:param>
+  <xsl:param name="license" as="xs:string" select="''">
+    <!-- the package's license; empty = TODO -->
+  </xsl:param>
+
   <xsl:global-context-item as="document-node(element(p:pipeline))"/>
 
   <!-- Every step of a manifest, includes expanded, with absolute URIs. -->
@@ -78,6 +91,10 @@
       else if ($param/@from = 'model-dir-from-output') then $model-dir-from-output
       else if ($param/@from = 'package-name') then $package-name
       else if ($param/@from = 'type-map') then $type-map
+      else if ($param/@from = 'package-version') then $package-version
+      else if ($param/@from = 'maintainer-name') then $maintainer-name
+      else if ($param/@from = 'maintainer-email') then $maintainer-email
+      else if ($param/@from = 'license') then $license
       else ''"/>
   </xsl:function>
 

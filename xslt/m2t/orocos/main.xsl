@@ -32,6 +32,7 @@
     exclude-result-prefixes="#all">
 
   <xsl:include href="../../common/indent.xsl"/>
+  <xsl:include href="../common/package-manifest.xsl"/>
   <xsl:include href="params.xsl"/>
   <xsl:include href="orocos-text.xsl"/>
   <xsl:include href="orocos-cpp.xsl"/>
