@@ -313,3 +313,22 @@ def test_ros1_package_moved_away_names_the_option_then_configures(tmp_path: Path
     found = subprocess.run(args + ["-B", str(tmp_path / "b2"), f"-DPID_PID_ATOMIC_DIR={atomic}"],
                            env=_ros_env(), capture_output=True, text=True)
     assert found.returncode == 0, found.stderr[-2000:]
+
+
+def test_ros1_tuned_parameters_in_the_user_file_win(tmp_path: Path) -> None:
+    """Tuning on the robot meant editing a generated file, which then blocked regeneration (issue 10 item 6)."""
+    _need("roslaunch")
+    ws = tmp_path / "ws"
+    pkg = ws / "src" / "pid"
+    generate(ROOT / "fixtures" / "cases" / "pid" / "model.xmi", pkg, "ros1")
+    user = pkg / "config" / "PIDController.user.yaml"
+    assert "This file is yours" in user.read_text()
+    user.write_text(user.read_text().replace("{}", "kp: 42.5"))
+    env = _ros_env(ROS_PACKAGE_PATH=str(ws / "src") + ":/usr/share")
+    dump = subprocess.run(["roslaunch", "--dump-params", str(pkg / "launch" / "pid.launch")], env=env,
+                          capture_output=True, text=True)
+    assert dump.returncode == 0, dump.stderr
+    assert "/PIDController/kp: 42.5" in dump.stdout and "/PIDController/ki: 0.5" in dump.stdout
+    # regeneration keeps the tuned value and rewrites the generated files
+    done = generate(ROOT / "fixtures" / "cases" / "pid" / "model.xmi", pkg, "ros1")
+    assert "kp: 42.5" in user.read_text() and "config/PIDController.user.yaml" in done.report.kept_user

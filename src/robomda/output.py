@@ -92,9 +92,9 @@ def _user_drift(out: Path, nodes: list[etree._Element]) -> tuple[list[Diagnostic
             continue
         node = now.get(rel)
         if node is None:
-            moved = [n.get("path") for n in nodes if n.get("implements") == was.get("implements")
+            moved = [n.get("path") for n in nodes if was.get("implements") and n.get("implements") == was.get("implements")
                      and Path(n.get("path")).suffix == Path(rel).suffix]
-            what = f"{was.get('name', '?')} ({was.get('implements', '?')})"
+            what = f"{was['name']} ({was['implements']})" if was.get("implements") else "an element of the model"
             hint = (f"it is now {moved[0]}: move your code there (rename the class too), then remove {rel}"
                     if moved else "no user file implements it any more (it is gone from the model, or got a realizing "
                     "class): move your code out of the package or remove the file")
@@ -270,7 +270,7 @@ def write_fileset(files: etree._Element, out: Path) -> WriteReport:
             report.kept_stale.append(rel)
     report.warnings.extend(drift)
     users = {n.get("path"): {"implements": n.get("implements", ""), "name": n.get("implements-name", ""),
-                             "signature": n.get("signature", "")} for n in user_nodes if n.get("implements")}
+                             "signature": n.get("signature", "")} for n in user_nodes}
     payload = {"generator": "robomda", "files": dict(sorted(new_state.items())), "user": dict(sorted(users.items()))}
     writes[STATE_FILE.as_posix()] = (json.dumps(payload, indent=1) + "\n").encode("utf-8")
     _swap_in(out, writes, drops)

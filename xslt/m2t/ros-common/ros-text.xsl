@@ -63,6 +63,20 @@
     <xsl:sequence select="fp:cpp-string($s)"/>
   </xsl:function>
 
+  <!-- a user-owned parameter file, loaded after the generated one: the place
+       for the values tuned on the robot (it starts empty; its values win) -->
+  <xsl:function name="fp:user-params-yaml" as="xs:string">
+    <xsl:param name="what" as="xs:string"/>
+    <xsl:param name="generated" as="xs:string"/>
+    <xsl:param name="stylesheet" as="xs:string"/>
+    <xsl:sequence select="fp:lines((
+        fp:banner('# ', $stylesheet, $what, true()),
+        concat('# The launch files load it after ', $generated, ': a parameter set here wins over the'),
+        '# generated value, so tuning on the robot never means editing a generated file. Write',
+        '# the same keys as there, in place of the empty mapping below.',
+        '{}'))"/>
+  </xsl:function>
+
   <xsl:function name="fp:banner" as="xs:string+">
     <xsl:param name="prefix" as="xs:string"/>
     <xsl:param name="stylesheet" as="xs:string"/>

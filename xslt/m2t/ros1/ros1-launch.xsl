@@ -40,6 +40,7 @@
           concat('  &lt;node pkg=&quot;', $p/@name, '&quot; type=&quot;', $i/@executable, '&quot; name=&quot;', $i/@name,
                '&quot; machine=&quot;', fp:xml-text($h/@machine), '&quot; output=&quot;screen&quot;&gt;'),
           concat('    &lt;rosparam command=&quot;load&quot; file=&quot;$(find ', $p/@name, ')/config/', $i/@name, '.yaml&quot;/&gt;'),
+          concat('    &lt;rosparam command=&quot;load&quot; file=&quot;$(find ', $p/@name, ')/config/', $i/@name, '.user.yaml&quot;/&gt;'),
           $i/r:remap ! (concat('    &lt;remap from=&quot;', @from, '&quot; to=&quot;', @to, '&quot;/&gt;')),
           '  &lt;/node&gt;'),
         '&lt;/launch&gt;'))"/>

@@ -72,6 +72,8 @@
                                       fp:ros2-host-launch($p, .))"/>
       </xsl:for-each>
       <xsl:sequence select="fp:file('config/params.yaml', 'generated', $fp:launch-xsl, fp:ros2-params-yaml(.))"/>
+      <xsl:sequence select="fp:file('config/params.user.yaml', 'user', $fp:launch-xsl,
+          fp:user-params-yaml('the tuned parameters of every node', 'config/params.yaml', $fp:launch-xsl))"/>
     </xsl:variable>
     <fs:files target="ros2">
       <xsl:call-template name="t:indented-content">

@@ -35,6 +35,7 @@
         for $i in $p/r:instance[@host eq $h/@name] return (
           concat('  &lt;node pkg=&quot;', $p/@name, '&quot; exec=&quot;', $i/@executable, '&quot; name=&quot;', $i/@name, '&quot; output=&quot;screen&quot;&gt;'),
           concat('    &lt;param from=&quot;$(find-pkg-share ', $p/@name, ')/config/params.yaml&quot;/&gt;'),
+          concat('    &lt;param from=&quot;$(find-pkg-share ', $p/@name, ')/config/params.user.yaml&quot;/&gt;'),
           $i/r:remap ! (concat('    &lt;remap from=&quot;', @from, '&quot; to=&quot;', @to, '&quot;/&gt;')),
           '  &lt;/node&gt;'),
         '&lt;/launch&gt;'))"/>
