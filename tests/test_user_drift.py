@@ -73,7 +73,7 @@ def test_a_removed_component_with_user_code_stops_too(tmp_path: Path) -> None:
     # OUT003 for the user source; the user header also stands where the new wrapper header goes (OUT001)
     assert {d.code for d in refused.value.diagnostics} == {"OUT001", "OUT003"}
     orphan = next(d for d in refused.value.diagnostics if d.code == "OUT003" and "src/RobotInterface.cpp" in d.message)
-    assert "no longer builds" in orphan.message
+    assert "which the new package no longer uses" in orphan.message
 
 
 def test_a_changed_signature_names_the_user_file_and_the_changes(tmp_path: Path) -> None:

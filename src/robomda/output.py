@@ -96,11 +96,11 @@ def _user_drift(out: Path, nodes: list[etree._Element]) -> tuple[list[Diagnostic
                      and Path(n.get("path")).suffix == Path(rel).suffix]
             what = f"{was['name']} ({was['implements']})" if was.get("implements") else "an element of the model"
             hint = (f"it is now {moved[0]}: move your code there (rename the class too), then remove {rel}"
-                    if moved else "no user file implements it any more (it is gone from the model, or got a realizing "
-                    "class): move your code out of the package or remove the file")
+                    if moved else "nothing in the new package takes its place (the element is gone or renamed, or "
+                    "got a realizing class): move your work out of the package or remove the file")
             errors.append(Diagnostic(
-                "error", "OUT003", f"user file {rel} holds the code of {what}, which the new package no longer "
-                f"builds: {hint}; nothing was written", file=str(out / rel)))
+                "error", "OUT003", f"user file {rel} holds your work on {what}, which the new package no longer "
+                f"uses: {hint}; nothing was written", file=str(out / rel)))
             continue
         old_items = set(filter(None, str(was.get("signature", "")).split("\n")))
         new_items = set(filter(None, (node.get("signature") or "").split("\n")))
