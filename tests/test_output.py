@@ -25,8 +25,10 @@ def test_first_run_writes_everything_and_records_generated_files(tmp_path: Path)
     report = write_fileset(fileset(("src/a.cpp", "A\n", "generated"), ("src/u.cpp", "U\n", "user")), tmp_path)
     assert sorted(report.written) == ["src/a.cpp", "src/u.cpp"]
     assert (tmp_path / "src/a.cpp").read_text() == "A\n"
-    state = (tmp_path / STATE_FILE).read_text()
-    assert "src/a.cpp" in state and "src/u.cpp" not in state
+    import json
+    state = json.loads((tmp_path / STATE_FILE).read_text())
+    # generated files by hash; user files only as what they hold (never overwritten, so no hash)
+    assert "src/a.cpp" in state["files"] and "src/u.cpp" not in state["files"] and "src/u.cpp" in state["user"]
 
 
 def test_second_run_rewrites_generated_and_keeps_user_edits(tmp_path: Path) -> None:
