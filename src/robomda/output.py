@@ -182,12 +182,16 @@ def _exchange(a: Path, b: Path) -> bool:
     raise OSError(err, os.strerror(err), str(b))
 
 
-def _carry_over(out: Path, staging: Path, replaced: set[str]) -> None:
-    """Recreate ``out`` in ``staging`` without the paths in ``replaced``: hard links, else copies."""
+def _carry_over(out: Path, staging: Path, replaced: set[str]) -> list[tuple[str, Path]]:
+    """Recreate ``out`` in ``staging`` without the paths in ``replaced``: hard links, else copies.
+
+    Returns (folder of ``out``, its copy) pairs: their modes are copied once the new files are in.
+    """
+    folders: list[tuple[str, Path]] = []
     for top, dirs, names in os.walk(out):
         rel_dir = Path(top).relative_to(out)
         (staging / rel_dir).mkdir(exist_ok=True)
-        shutil.copymode(top, staging / rel_dir)
+        folders.append((top, staging / rel_dir))
         for name in dirs + names:
             src, rel = Path(top) / name, (rel_dir / name).as_posix()
             dst = staging / rel
@@ -207,6 +211,7 @@ def _carry_over(out: Path, staging: Path, replaced: set[str]) -> None:
                     os.link(src, dst)
                 except OSError:
                     shutil.copy2(src, dst)
+    return folders
 
 
 def write_fileset(files: etree._Element, out: Path) -> WriteReport:
@@ -283,14 +288,16 @@ def _swap_in(out: Path, writes: dict[str, bytes], drops: set[str]) -> None:
     out.parent.mkdir(parents=True, exist_ok=True)
     staging.mkdir()
     try:
-        if out.exists():
-            _carry_over(out, staging, set(writes) | drops)
+        folders = _carry_over(out, staging, set(writes) | drops) if out.exists() else []
         state = writes[STATE_FILE.as_posix()]
         for rel, data in writes.items():
             if rel != STATE_FILE.as_posix():
                 path = staging / rel
                 path.parent.mkdir(parents=True, exist_ok=True)
                 path.write_bytes(data)
+        # the folders' modes last: a read-only folder of the user's is filled first
+        for src_dir, dst_dir in reversed(folders):
+            shutil.copymode(src_dir, dst_dir)
         (staging / STATE_FILE).parent.mkdir(parents=True, exist_ok=True)
         (staging / STATE_FILE).write_bytes(state)  # last: the staging folder is complete
     except BaseException:
