@@ -29,9 +29,13 @@ def test_the_finder_sees_a_copied_block(tmp_path) -> None:
     assert [p[1:] for p in places] == [(2, 7), (2, 7)]
 
 
-def test_closing_tags_and_short_lines_do_not_make_a_block(tmp_path) -> None:
+def test_closing_tags_short_lines_and_declarations_do_not_make_a_block(tmp_path) -> None:
     body = "\n".join(["</xsl:if>", "</xsl:when>", "</xsl:choose>", "<xsl:otherwise/>", "</xsl:for-each>",
-                      "</xsl:template>", "</xsl:if>"] * 2)
+                      "</xsl:template>", "</xsl:if>"] * 2
+                     + ['xmlns:xsl="http://www.w3.org/1999/XSL/Transform"', 'xmlns:xs="http://www.w3.org/2001/XMLSchema"',
+                        'xmlns:f="urn:robomda:xslt:function"', 'xmlns:fp="urn:robomda:xslt:function:private"',
+                        '<xsl:include href="../../common/indent.xsl"/>', '<xsl:include href="../common/naming.xsl"/>',
+                        'exclude-result-prefixes="#all">'])
     for n in range(2):
         (tmp_path / f"s{n}.xsl").write_text(body + "\n", encoding="utf-8")
     assert dup.find_blocks(tmp_path) == {}

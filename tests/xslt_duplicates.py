@@ -7,8 +7,10 @@ it for ``tests/test_xslt_duplicates.py`` and for developers::
     python tests/xslt_duplicates.py --update   # accept today's set as the baseline
 
 A line counts when, stripped of indentation, it says something: blank lines,
-lone closing tags (``</xsl:if>``) and lines shorter than 12 characters are
-passed over, so that six closing tags in a row are not a duplicate. Six
+lone closing tags (``</xsl:if>``), lines shorter than 12 characters and
+declarations (namespace declarations, ``xsl:include`` / ``xsl:import``,
+``exclude-result-prefixes``) are passed over, so that six closing tags or the
+namespaces every stylesheet declares are not a duplicate. Six
 counting lines in a row that stand, to the letter, in another place (another
 file, or elsewhere in the same file) are a duplicate block. Each block is
 known by the hash of its text; ``tests/data/xslt-duplicates.txt`` lists the
@@ -29,7 +31,7 @@ __all__ = ["WINDOW", "find_blocks", "baseline", "runs", "BASELINE"]
 ROOT = Path(__file__).resolve().parents[1]
 BASELINE = ROOT / "tests" / "data" / "xslt-duplicates.txt"
 WINDOW = 6
-_TRIVIAL = re.compile(r"^(</[\w:.-]+>|)$")
+_TRIVIAL = re.compile(r"^(</[\w:.-]+>|xmlns(:[\w.-]+)?=.*|<xsl:(include|import) .*|exclude-result-prefixes=.*)$")
 
 
 def _counting_lines(path: Path) -> list[tuple[int, str]]:
