@@ -397,3 +397,53 @@ def test_text_build_defaults_and_relocation():
         var = lib.get("cmake-var")
         assert f"give its place with -D{var}=DIR" in cmake and "message(WARNING" not in cmake
         assert f'install(DIRECTORY "${{{var}}}/{lib.get("include-dir")}/" DESTINATION include/orocos/{psm.get("package")}' in cmake
+
+
+def test_text_user_tuned_values_file_per_instance_with_properties():
+    """Tuning on the robot meant editing generated deployment files, which then blocked
+    regeneration (issue 10 item 6): every instance with properties gets a .cpf of the user's,
+    written once and loaded after the model's values by all three deployment formats."""
+    _, _, files = case("composite")
+    cpf = files["deploy/vision.user.cpf"]
+    assert cpf.get("mode") == "user" and cpf.get("implements") and "property debug boolean" in cpf.get("signature")
+    root = ET.fromstring(cpf.text.encode())
+    assert root.tag == "properties" and len(root) == 0  # empty: changes nothing until the user fills it
+    assert '<simple name="debug" type="boolean"><value>1</value></simple>' in cpf.text  # in the comment, to copy
+    with_props = {i for i, f in files.items() if i.endswith(".user.cpf")}
+    xml = ET.fromstring(files["deploy/headlamp_assembly.xml"].text.encode())
+    update = "simple[@name='UpdateProperties']"
+    assert with_props == {"deploy/" + s.find(update + "/value").text
+                          for s in xml.findall("struct") if s.find(update) is not None}
+    for s in xml.findall("struct"):  # after the model's values: the deployer applies Properties first
+        names = [c.get("name") for c in s]
+        if "UpdateProperties" in names:
+            assert names.index("Properties") < names.index("UpdateProperties")
+    ops = files["deploy/headlamp_assembly.ops"].text
+    assert ('loadService("vision", "marshalling")\nif ( !vision.marshalling.updateProperties("vision.user.cpf") ) then {'
+            in ops)
+    assert ops.index("vision.debug = true") < ops.index('updateProperties("vision.user.cpf")') < ops.index("vision.configure()")
+    lua = files["deploy/headlamp_assembly.lua"].text
+    assert ('getOperation("updateProperties")(here .. "/vision.user.cpf"), "load vision.user.cpf")' in lua)
+    check = files["deploy/headlamp_assembly-check.lua"].text
+    assert 'want("vision", "debug", true)' in check and '.user.cpf' in check
+
+
+def test_tuned_values_survive_regeneration_and_misspelt_ones_are_named(tmp_path):
+    from robomda.api import generate
+    model = ROOT / "fixtures" / "cases" / "tuned" / "model.xmi"
+    out = tmp_path / "tuned"
+    generate(model, out, "orocos")
+    cpf = out / "deploy" / "controller.user.cpf"
+    cpf.write_text(cpf.read_text().replace(
+        "<properties>\n", '<properties>\n  <simple name="stiffness" type="long"><value>700</value></simple>\n'
+        '  <simple name="stifness" type="long"><value>1</value></simple>\n'
+        '  <simple name="damping" type="double"><value>3.5</value></simple>\n'))
+    tuned = cpf.read_text()
+    again = generate(model, out, "orocos")
+    assert cpf.read_text() == tuned  # never overwritten
+    out005 = [w for w in again.warnings if w.code == "OUT005"]
+    assert [(w.line, "property 'stifness'" in w.message, "property 'damping'" in w.message) for w in out005] == \
+        [(tuned.splitlines().index('  <simple name="stifness" type="long"><value>1</value></simple>') + 1, True, False),
+         (tuned.splitlines().index('  <simple name="damping" type="double"><value>3.5</value></simple>') + 1, False, True)]
+    assert all(w.file == str(cpf) for w in out005)
+    assert "'long'" in out005[1].message and "refuses" in out005[1].message

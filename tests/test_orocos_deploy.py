@@ -9,9 +9,11 @@ these tests run every fixture through the helpers of that folder's env.sh:
 - build the package (``oro_build_pkg``, cmake + make + install);
 - deploy its XML, .ops and Lua files with ``oro_deploy_verify`` (every
   component Running, no undeclared property, clean shutdown) under
-  ``oro_verdict`` (no ERROR line), run from a folder that holds a folder
-  named like the package (RTT's import() used to take that folder instead of
-  RTT_COMPONENT_PATH);
+  ``oro_verdict`` (no ERROR line): XML and .ops in their own folder, Lua from
+  a folder that holds a folder named like the package (RTT's import() used to
+  take that folder instead of RTT_COMPONENT_PATH);
+- the user's tuned values (``deploy/<instance>.user.cpf``) win over the
+  model's in every format, and XML / .ops run elsewhere fail loudly;
 - run the generated ``-check.lua`` (modelled periods, CPU affinity and
   property values read back) and require no warning in the RTT log;
 - the broken variant (a configure() that fails on a property value) must
@@ -77,14 +79,21 @@ def tmp_root(tmp_path_factory) -> Path:
     return tmp_path_factory.mktemp("orocos")
 
 
+def _deployment(out: Path, fmt: str) -> Path:
+    return next(p for p in (out / "deploy").glob(f"*.{fmt}") if not p.name.endswith("-check.lua"))
+
+
 @pytest.mark.parametrize("model", MODELS)
 @pytest.mark.parametrize("fmt", ["xml", "ops", "lua"])
-def test_deploys_from_the_folder_above_the_package(model: str, fmt: str, tmp_root: Path) -> None:
+def test_deploys_every_format(model: str, fmt: str, tmp_root: Path) -> None:
+    """XML and .ops run in their own folder (the user's tuned values are read from the working
+    directory); the Lua deployment runs from the folder above the package, which holds a folder
+    named like the package (RTT's import() used to take it instead of RTT_COMPONENT_PATH)."""
     out, pkg = _built(model, tmp_root)
-    deploy = next((out / "deploy").glob(f"*.{fmt}")) if fmt != "lua" else \
-        next(p for p in (out / "deploy").glob("*.lua") if not p.name.endswith("-check.lua"))
+    deploy = _deployment(out, fmt)
     log = out.parent / f"{fmt}.log"
-    run = _bash(f"oro_add_prefix {out}/install && ORO_RUN_IN_CWD=1 ORO_LOGFILE={log} "
+    where = "ORO_RUN_IN_CWD=1 " if fmt == "lua" else ""
+    run = _bash(f"oro_add_prefix {out}/install && {where}ORO_LOGFILE={log} "
                 f"oro_verdict oro_deploy_verify {deploy} 2", out.parent)
     assert run.returncode == 0 and "oro_verdict: OK" in run.stdout, run.stdout[-4000:]
     assert (out.parent / pkg).is_dir()  # the folder RTT's import() would have taken
@@ -103,8 +112,8 @@ def test_self_check_reads_back_the_modelled_values(model: str, tmp_root: Path) -
 @pytest.mark.parametrize("fmt", ["xml", "ops", "lua"])
 def test_a_failing_configure_fails_every_format(fmt: str, tmp_root: Path) -> None:
     out, _ = _built("tuned/broken/model.xmi", tmp_root)
-    deploy = next(p for p in (out / "deploy").glob(f"*.{fmt}") if not p.name.endswith("-check.lua"))
-    run = _bash(f"oro_add_prefix {out}/install && ORO_RUN_IN_CWD=1 oro_verdict oro_deploy_verify {deploy} 2", out.parent)
+    deploy = _deployment(out, fmt)
+    run = _bash(f"oro_add_prefix {out}/install && oro_verdict oro_deploy_verify {deploy} 2", out.parent)
     assert run.returncode != 0, run.stdout[-3000:]
     assert "oro_verdict: FAILED" in run.stdout, run.stdout[-3000:]
     # the deployment itself says what failed, as an RTT ERROR line
@@ -131,3 +140,49 @@ def test_a_downstream_package_builds_against_the_installed_headers(tmp_root: Pat
         "ORO_CREATE_COMPONENT(User)\n", encoding="utf-8")
     run = _bash(f"oro_add_prefix {out}/install && oro_build_pkg {down}", tmp_root)
     assert run.returncode == 0, run.stdout[-4000:] + run.stderr[-4000:]
+
+
+# reads one property back after running a deployment file the way `deployer -s FILE` does
+_READBACK = """require("rttlib")
+local tc = rtt.getTC()
+local depl = tc:getName() == "Deployer" and tc or tc:getPeer("Deployer")
+local file = os.getenv("DEPLOY_FILE")
+local ok
+if file:match("%.xml$") then ok = depl:kickStart(file) else ok = depl:runScript(file) end
+local c = depl:getPeer("controller")
+print("READBACK " .. tostring(ok) .. " " .. tostring(c and c:getProperty("stiffness"):get())
+      .. " " .. tostring(c and c:getState()))
+for _, n in ipairs(depl:getPeers()) do local p = depl:getPeer(n); p:stop(); p:cleanup() end
+os.exit(0)
+"""
+
+
+@pytest.mark.parametrize("fmt", ["xml", "ops", "lua"])
+def test_tuned_values_of_the_user_file_win_in_every_format(fmt: str, tmp_root: Path) -> None:
+    """Tuning on the robot meant editing a generated file (issue 10 item 6): the user's
+    deploy/<instance>.user.cpf is loaded after the model's values by all three formats."""
+    out, _ = _built("tuned/model.xmi", tmp_root)
+    cpf = out / "deploy" / "controller.user.cpf"
+    pristine = cpf.read_text()
+    cpf.write_text(pristine.replace("<properties>\n",
+                                    '<properties>\n  <simple name="stiffness" type="long"><value>700</value></simple>\n'))
+    try:
+        (tmp_root / "readback.lua").write_text(_READBACK)
+        deploy = _deployment(out, fmt)
+        run = _bash(f"oro_add_prefix {out}/install && DEPLOY_FILE={deploy.name} timeout -s INT 120 "
+                    f"rttlua {tmp_root / 'readback.lua'} </dev/null", deploy.parent)
+        assert "READBACK true 700 Running" in run.stdout, run.stdout[-3000:] + run.stderr[-2000:]  # the model says 650
+        check = _bash(f"oro_add_prefix {out}/install && timeout -s INT 120 rttlua {out}/deploy/tuned-check.lua "
+                      "</dev/null", tmp_root)
+        assert check.returncode == 0 and "DEPLOY-RESULT: OK" in check.stdout, check.stdout[-3000:]
+        # run from another folder, XML and .ops cannot find the user file: they say so and start nothing
+        if fmt != "lua":
+            lost = _bash(f"oro_add_prefix {out}/install && DEPLOY_FILE={deploy} timeout -s INT 120 "
+                         f"rttlua {tmp_root / 'readback.lua'} </dev/null", tmp_root)
+            said = lost.stdout + lost.stderr
+            assert "Running" not in [line.split()[-1] for line in said.splitlines() if line.startswith("READBACK")], said
+            assert "Could not load controller.user.cpf" in said, said[-3000:]
+            if fmt == "ops":
+                assert "tuned.ops: controller.user.cpf not loaded (run from the folder of tuned.ops)" in said
+    finally:
+        cpf.write_text(pristine)

@@ -19,6 +19,9 @@ Rules (the file set's ``mode`` says which applies):
 - a user file whose element changed what the generated code requires of it
   (ports, operations, hooks: the file set's ``signature``) gets a warning
   naming the file and the changes (OUT004); its fresh copy goes beside it.
+- a user property file (``*.cpf``, Orocos tuned values) that sets a property
+  its instance does not declare, or gives one another type, gets a located
+  warning (OUT005): the deployer would ignore or refuse it.
 
 All or nothing, even when robomda is killed: the new package is built in a
 staging folder beside the output (``.<name>.robomda-new``): every file the
@@ -40,6 +43,7 @@ import errno
 import hashlib
 import json
 import os
+import re
 import shutil
 import stat
 import tempfile
@@ -82,6 +86,11 @@ def _read_state(out: Path, part: str = "files") -> dict:
         return {}
 
 
+def _signature_items(signature: str) -> list[str]:
+    """The items of a user file's signature, separated by "; " (by line ends in older states)."""
+    return [item for item in re.split(r"; |\n", signature) if item]
+
+
 def _user_drift(out: Path, nodes: list[etree._Element]) -> tuple[list[Diagnostic], list[Diagnostic]]:
     """(OUT003 errors for orphaned user files, OUT004 warnings for user files whose element changed)."""
     before = _read_state(out, "user")
@@ -102,8 +111,8 @@ def _user_drift(out: Path, nodes: list[etree._Element]) -> tuple[list[Diagnostic
                 "error", "OUT003", f"user file {rel} holds your work on {what}, which the new package no longer "
                 f"uses: {hint}; nothing was written", file=str(out / rel)))
             continue
-        old_items = set(filter(None, str(was.get("signature", "")).split("\n")))
-        new_items = set(filter(None, (node.get("signature") or "").split("\n")))
+        old_items = set(_signature_items(str(was.get("signature", ""))))
+        new_items = set(_signature_items(node.get("signature") or ""))
         if old_items != new_items:
             changes = [f"no more {i}" for i in sorted(old_items - new_items)] + [f"new {i}" for i in sorted(new_items - old_items)]
             warnings.append(Diagnostic(
@@ -111,6 +120,45 @@ def _user_drift(out: Path, nodes: list[etree._Element]) -> tuple[list[Diagnostic
                 f"({'; '.join(changes)}): update it (the fresh version is beside it as {rel}{NEW_SUFFIX})",
                 file=str(out / rel)))
     return errors, warnings
+
+
+def _user_cpf_names(out: Path, nodes: list[etree._Element]) -> list[Diagnostic]:
+    """OUT005 for each property a user's .cpf sets that its instance does not declare.
+
+    The deployer's UpdateProperties ignores such a property without a word, so
+    a misspelt tuned value would never reach the robot. The instance's
+    properties are the ``property NAME TYPE`` items of the file's signature.
+    """
+    found = []
+    for node in nodes:
+        rel = node.get("path") or ""
+        target = out / rel
+        if not rel.endswith(".cpf") or not target.is_file():
+            continue
+        declared = {}
+        for item in _signature_items(node.get("signature") or ""):
+            parts = item.split()
+            if len(parts) == 3 and parts[0] == "property":
+                declared[parts[1]] = parts[2]
+        try:
+            root = etree.parse(str(target), etree.XMLParser(resolve_entities=False, no_network=True,
+                                                             load_dtd=False)).getroot()
+        except (etree.XMLSyntaxError, OSError) as exc:
+            found.append(Diagnostic("warning", "OUT005", f"user file {rel} is not well-formed XML ({exc}): "
+                                    "the deployer will refuse it", file=str(target)))
+            continue
+        for prop in root.iterchildren("simple", "struct", "sequence"):
+            name, kind = prop.get("name"), prop.get("type")
+            if name not in declared:
+                found.append(Diagnostic(
+                    "warning", "OUT005", f"user file {rel} sets property '{name}', which "
+                    f"{node.get('implements-name')} does not have (it has: {', '.join(declared) or 'none'}): "
+                    "the deployer ignores it", file=str(target), line=prop.sourceline))
+            elif prop.tag == "simple" and kind != declared[name]:
+                found.append(Diagnostic(
+                    "warning", "OUT005", f"user file {rel} gives property '{name}' type '{kind}', but it is "
+                    f"'{declared[name]}': the deployer refuses the file", file=str(target), line=prop.sourceline))
+    return found
 
 
 def atomic_write(path: Path, data: bytes) -> None:
@@ -274,6 +322,7 @@ def write_fileset(files: etree._Element, out: Path) -> WriteReport:
         elif target.exists():
             report.kept_stale.append(rel)
     report.warnings.extend(drift)
+    report.warnings.extend(_user_cpf_names(out, user_nodes))
     users = {n.get("path"): {"implements": n.get("implements", ""), "name": n.get("implements-name", ""),
                              "signature": n.get("signature", "")} for n in user_nodes}
     payload = {"generator": "robomda", "files": dict(sorted(new_state.items())), "user": dict(sorted(users.items()))}

@@ -12,6 +12,8 @@
              src/components.cpp, CMakeLists.txt, package.xml
              deploy/<model>.xml, deploy/<model>.ops, deploy/<model>.lua,
              deploy/<model>-check.lua
+             deploy/<instance>.user.cpf (mode user) per instance with
+             properties: the user's tuned values, loaded after the model's
            One fs:file a line, as f:indent (common/indent.xsl) would indent
            the file set, written so directly (t:indented-content: no copy of
            all the text).
@@ -69,6 +71,9 @@
       <xsl:sequence select="fp:file(concat('deploy/', @deploy-name, '.ops'), 'generated', $fp:deploy-xsl, fp:deploy-ops(.))"/>
       <xsl:sequence select="fp:file(concat('deploy/', @deploy-name, '.lua'), 'generated', $fp:deploy-xsl, fp:deploy-lua(.))"/>
       <xsl:sequence select="fp:file(concat('deploy/', @deploy-name, '-check.lua'), 'generated', $fp:deploy-xsl, fp:deploy-check-lua(.))"/>
+      <xsl:for-each select="o:instance[o:property-value]">
+        <xsl:sequence select="fp:user-cpf-file(.)"/>
+      </xsl:for-each>
     </xsl:variable>
     <fs:files target="orocos">
       <xsl:call-template name="t:indented-content">
@@ -89,8 +94,19 @@
              signature="{string-join((
                  $tc/o:port ! concat('port ', @name, ' ', @direction, ' ', @cpp-type),
                  $tc/o:operation ! concat('operation ', @name, '(', string-join(o:parameter/@decl-type, ', '), ') ', @return-type),
-                 $tc/o:hook[@call] ! concat('hook ', @name)), '&#10;')}">
+                 $tc/o:hook[@call] ! concat('hook ', @name)), '; ')}">
       <xsl:value-of select="$text"/>
+    </fs:file>
+  </xsl:function>
+
+  <!-- the user's tuned property values of instance $i: what it implements
+       is the instance, its signature the properties it may set -->
+  <xsl:function name="fp:user-cpf-file" as="element(fs:file)">
+    <xsl:param name="i" as="element(o:instance)"/>
+    <fs:file path="deploy/{fp:user-cpf($i)}" mode="user" stylesheet="{$fp:deploy-xsl}" implements="{$i/@xmi-id}"
+             implements-name="{$i/@name}"
+             signature="{string-join($i/o:property-value ! concat('property ', @name, ' ', @xml-type), '; ')}">
+      <xsl:value-of select="fp:user-cpf-text($i)"/>
     </fs:file>
   </xsl:function>
 

@@ -10,8 +10,10 @@
            deploy/<model>.lua        the same deployment for `deployer -s` or
                                      `rttlua -i`: it keeps running
            deploy/<model>-check.lua  runs <model>.lua for a second, reads the
-                                     modelled values back, stops everything
-                                     and exits 0 / 1 with a verdict
+                                     modelled (or tuned) values back, stops
+                                     everything and exits 0 / 1 with a verdict
+           deploy/<instance>.user.cpf  the user's tuned values (fp:user-cpf-text,
+                                     a user file: main.xsl writes it once)
   Params:  none.  Errors: none.
 
   Choices
@@ -45,6 +47,13 @@
   - Peers only where the PSM lists them (a reader that may call operations
     of the interface's provider).
   - Properties: only names the component declares, with the model defaults.
+  - Then the user's tuned values, deploy/<instance>.user.cpf (written once,
+    empty): the XML's UpdateProperties (the deployer applies it after the
+    Properties struct), in .ops / Lua the marshalling service's
+    updateProperties before configure(). Neither the cpf format nor .ops can
+    name a file relative to themselves, so those two read it from the
+    working directory (run them from deploy/; elsewhere they fail loudly);
+    Lua finds it beside itself, and the check expects its values.
   - AutoConf and AutoStart are 1 (XML); .ops and Lua configure all, then
     start all, in instance order.
   - Deployment sequence (seed 002): the PSM's instance order is the start
@@ -126,6 +135,44 @@
         else string-join($constrained ! (concat(@name, ' after ', string-join(distinct-values(o:start-after/@instance), ', '))), '; ')"/>
   </xsl:function>
 
+  <!-- ================================================ user's tuned values -->
+  <!-- the file name of the user's tuned values of instance $i, in deploy/ -->
+  <xsl:function name="fp:user-cpf" as="xs:string">
+    <xsl:param name="i" as="element(o:instance)"/>
+    <xsl:sequence select="concat($i/@name, '.user.cpf')"/>
+  </xsl:function>
+
+  <!-- deploy/<instance>.user.cpf, written once: an empty property bag (the
+       deployer's UpdateProperties then changes nothing) and, in a comment,
+       every property of the instance with the model's value, to copy -->
+  <xsl:function name="fp:user-cpf-text" as="xs:string">
+    <xsl:param name="i" as="element(o:instance)"/>
+    <xsl:variable name="d" as="element(o:deployment)" select="$i/.."/>
+    <xsl:sequence select="fp:lines((
+        '&lt;?xml version=&quot;1.0&quot; encoding=&quot;UTF-8&quot;?&gt;',
+        '&lt;!--',
+        fp:indent(2, fp:banner('', $fp:deploy-xsl, fp:comment-text(concat('the tuned property values of instance ''', $i/@name,
+            ''' (', $i/@type-name, ') of model ''', $d/@model-name, '''')), true())),
+        concat('  The deployment files load it after the model''s values (', $d/@deploy-name, '.xml: UpdateProperties;'),
+        concat('  ', $d/@deploy-name, '.ops and ', $d/@deploy-name, '.lua: the marshalling service''s updateProperties), so a'),
+        '  property set here wins and tuning on the robot never means editing a generated file.',
+        concat('  ', $d/@deploy-name, '.lua finds this file beside itself; ', $d/@deploy-name, '.xml and ', $d/@deploy-name, '.ops in the'),
+        '  working directory: run them from this folder. A property the component does not',
+        '  declare is ignored by the deployer (robomda warns, OUT005). The properties and the',
+        '  model''s values; copy a line into the properties element below and change its value:',
+        $i/o:property-value ! concat('    ', fp:comment-text(fp:simple(@name, @xml-type, @value))),
+        '--&gt;',
+        '&lt;!DOCTYPE properties SYSTEM &quot;cpf.dtd&quot;&gt;',
+        '&lt;properties&gt;',
+        '&lt;/properties&gt;'))"/>
+  </xsl:function>
+
+  <!-- $s made safe inside an XML comment (no two hyphens in a row) -->
+  <xsl:function name="fp:comment-text" as="xs:string">
+    <xsl:param name="s" as="xs:string"/>
+    <xsl:sequence select="replace($s, '--', '- -')"/>
+  </xsl:function>
+
   <!-- ======================================================= XML -->
   <xsl:function name="fp:deploy-xml" as="xs:string">
     <xsl:param name="d" as="element(o:deployment)"/>
@@ -134,6 +181,9 @@
         '&lt;!--',
         fp:indent(2, fp:banner('', $fp:deploy-xsl, concat('the deployment of model ''', fp:xml-text($d/@model-name), ''''), false())),
         concat('  Run: deployer -s ', $d/@deploy-name, '.xml (add the check option to load, connect and configure only)'),
+        if ($d/o:instance/o:property-value)
+        then '  from this folder: the tuned values (*.user.cpf, yours) are read from the working directory.'
+        else (),
         '--&gt;',
         '&lt;!DOCTYPE properties SYSTEM &quot;cpf.dtd&quot;&gt;',
         '&lt;properties&gt;',
@@ -183,7 +233,9 @@
         if ($i/o:property-value) then (
           '    &lt;struct name=&quot;Properties&quot; type=&quot;PropertyBag&quot;&gt;',
           $i/o:property-value ! (concat('      ', fp:simple(@name, @xml-type, @value))),
-          '    &lt;/struct&gt;') else (),
+          '    &lt;/struct&gt;',
+          '    &lt;!-- then your tuned values (a file of yours, in the working directory) --&gt;',
+          concat('    ', fp:simple('UpdateProperties', 'string', fp:user-cpf($i)))) else (),
         '  &lt;/struct&gt;'"/>
   </xsl:function>
 
@@ -193,10 +245,14 @@
     <xsl:variable name="file" as="xs:string" select="concat($d/@deploy-name, '.ops')"/>
     <xsl:sequence select="fp:lines((
         fp:banner('// ', $fp:deploy-xsl, concat('the deployment of model ''', $d/@model-name, ''''), false()),
-        concat('// Run: deployer -s ', $file, ' (from any folder; RTT_COMPONENT_PATH must hold the installed package)'),
+        concat('// Run: deployer -s ', $file, if ($d/o:instance/o:property-value)
+               then ' from this folder (the tuned values, *.user.cpf, are read from the working directory);'
+               else ' (from any folder;'),
+        '// RTT_COMPONENT_PATH must hold the installed package.',
         '// A failing configure() or start() is logged as an [ ERROR ] line; nothing starts when a configure() failed.',
         'require(&quot;print&quot;)',
         concat('loadLibrary(', fp:cpp-string(fp:library($d)), ')'),
+        'var bool configured = true',
         '',
         $d/o:instance ! (concat('loadComponent(', fp:cpp-string(@name), ', ', fp:cpp-string(@type-name), ')')),
         '',
@@ -205,7 +261,15 @@
         if ($d/o:instance/o:peer) then ('', '// peers', $d/o:instance ! (for $p in o:peer return
             concat('addPeer(', fp:cpp-string(@name), ', ', fp:cpp-string($p/@instance), ')'))) else (),
         if ($d/o:instance/o:property-value) then ('', '// properties (R4)',
-            $d/o:instance ! (for $p in o:property-value return concat(@name, '.', $p/@name, ' = ', $p/@script-value))) else (),
+            $d/o:instance ! (for $p in o:property-value return concat(@name, '.', $p/@name, ' = ', $p/@script-value)),
+            '',
+            '// then your tuned values (files of yours, in the working directory)',
+            $d/o:instance[o:property-value] ! (
+              concat('loadService(', fp:cpp-string(@name), ', &quot;marshalling&quot;)'),
+              concat('if ( !', @name, '.marshalling.updateProperties(', fp:cpp-string(fp:user-cpf(.)), ') ) then {'),
+              concat('  print.log(Error, ', fp:cpp-string(concat($file, ': ', fp:user-cpf(.), ' not loaded (run from the folder of ', $file, ')')), ')'),
+              '  configured = false',
+              '}')) else (),
         $d/o:connection ! (
           '',
           concat('// connection point ', @name),
@@ -221,7 +285,6 @@
         '',
         '// lifecycle: configure all, then start all',
         fp:sequence-note($d) ! (concat('// in start order (deployment sequence: ', ., ')')),
-        'var bool configured = true',
         $d/o:instance ! (
           concat('if ( !', @name, '.configure() ) then {'),
           concat('  print.log(Error, ', fp:cpp-string(concat($file, ': ', @name, '.configure() failed')), ')'),
@@ -231,7 +294,7 @@
         $d/o:instance ! (concat('  if ( !', @name, '.start() ) then print.log(Error, ',
                                  fp:cpp-string(concat($file, ': ', @name, '.start() failed')), ')')),
         '} else {',
-        concat('  print.log(Error, ', fp:cpp-string(concat($file, ': not started, a component failed to configure')), ')'),
+        concat('  print.log(Error, ', fp:cpp-string(concat($file, ': not started, a step before the start failed')), ')'),
         '}'))"/>
   </xsl:function>
 
@@ -250,6 +313,10 @@
   </xsl:function>
 
   <!-- ======================================================= Lua -->
+  <!-- the Lua line that sets "here", the folder of the running script -->
+  <xsl:variable name="fp:lua-here" as="xs:string"
+      select="'local here = debug.getinfo(1, &quot;S&quot;).source:match(&quot;^@(.*)[/\\]&quot;) or &quot;.&quot;'"/>
+
   <xsl:function name="fp:lua-activity" as="xs:string+">
     <xsl:param name="i" as="element(o:instance)"/>
     <xsl:variable name="a" as="element(o:activity)" select="$i/o:activity"/>
@@ -286,6 +353,7 @@
         '  return cond',
         'end',
         '',
+        $fp:lua-here,
         'local tc = rtt.getTC()',
         'local depl',
         'if tc:getName() == &quot;Deployer&quot; then depl = tc else depl = tc:getPeer(&quot;Deployer&quot;) end',
@@ -307,7 +375,13 @@
         if ($d/o:instance/o:property-value) then ('', '  -- properties (R4)',
             $d/o:instance ! (for $p in o:property-value return
               concat('  check(pcall(function() comps[', fp:cpp-string(@name), ']:getProperty(', fp:cpp-string($p/@name),
-               '):set(', $p/@script-value, ') end), &quot;property ', @name, '.', $p/@name, '&quot;)'))) else (),
+               '):set(', $p/@script-value, ') end), &quot;property ', @name, '.', $p/@name, '&quot;)')),
+            '',
+            '  -- then your tuned values (files of yours, beside this file)',
+            $d/o:instance[o:property-value] ! (
+              concat('  check(depl:loadService(', fp:cpp-string(@name), ', &quot;marshalling&quot;), &quot;loadService ', @name, ' marshalling&quot;)'),
+              concat('  check(comps[', fp:cpp-string(@name), ']:provides(&quot;marshalling&quot;):getOperation(&quot;updateProperties&quot;)(here .. ',
+                     fp:cpp-string(concat('/', fp:user-cpf(.))), '), &quot;load ', fp:user-cpf(.), '&quot;)'))) else (),
         $d/o:connection ! (
           '',
           concat('  -- connection point ', @name),
@@ -353,7 +427,7 @@
         'require(&quot;rttlib&quot;)',
         'rttlib.color = false',
         '',
-        'local here = debug.getinfo(1, &quot;S&quot;).source:match(&quot;^@(.*)[/\\]&quot;) or &quot;.&quot;',
+        $fp:lua-here,
         concat('local loaded, deployment = pcall(dofile, here .. ', fp:cpp-string(concat('/', $d/@deploy-name, '.lua')), ')'),
         'local ok = loaded',
         'local function check(cond, what)',
@@ -374,6 +448,25 @@
         '  end',
         '  -- numbers read back as doubles (a float property to about 7 digits)',
         '  local function near(a, b) return math.abs(a - b) &lt;= 1e-6 * math.max(1, math.abs(b)) end',
+        '  -- the value a property should have: the tuned one of &lt;instance&gt;.user.cpf, else the model''s',
+        '  local tuned = {}',
+        '  for _, n in ipairs(names) do',
+        '    tuned[n] = {}',
+        '    local f = io.open(here .. &quot;/&quot; .. n .. &quot;.user.cpf&quot;)',
+        '    if f then',
+        '      local text = f:read(&quot;*a&quot;):gsub(&quot;&lt;!%-%-.-%-%-&gt;&quot;, &quot;&quot;)',
+        '      f:close()',
+        '      for p, v in text:gmatch(&quot;&lt;simple%s+name=\&quot;([^\&quot;]*)\&quot;[^&gt;]*&gt;%s*&lt;value&gt;(.-)&lt;/value&gt;&quot;) do tuned[n][p] = v end',
+        '    end',
+        '  end',
+        '  local function want(n, p, model)',
+        '    local v = tuned[n][p]',
+        '    if v == nil then return model end',
+        '    if type(model) == &quot;number&quot; then return tonumber(v) end',
+        '    if type(model) == &quot;boolean&quot; then return v == &quot;1&quot; or v == &quot;true&quot; end',
+        '    v = v:gsub(&quot;&amp;lt;&quot;, &quot;&lt;&quot;):gsub(&quot;&amp;gt;&quot;, &quot;&gt;&quot;):gsub(&quot;&amp;quot;&quot;, &quot;\&quot;&quot;):gsub(&quot;&amp;apos;&quot;, &quot;''&quot;)',
+        '    return (v:gsub(&quot;&amp;amp;&quot;, &quot;&amp;&quot;))',
+        '  end',
         $d/o:instance ! (
           concat('  check(near(comps[', fp:cpp-string(@name), ']:getPeriod(), ', fp:period(o:activity/@period), '), &quot;',
                  @name, ' period ', fp:period(o:activity/@period), ' (is &quot; .. tostring(comps[', fp:cpp-string(@name), ']:getPeriod()) .. &quot;)&quot;)'),
@@ -382,11 +475,12 @@
                  @name, ' ', fp:affinity-note(xs:integer(o:activity/@cpu-affinity)), ' (is &quot; .. tostring(comps[',
                  fp:cpp-string(@name), ']:getCpuAffinity()) .. &quot;)&quot;)'),
           for $p in o:property-value return
-          let $get := concat('comps[', fp:cpp-string(@name), ']:getProperty(', fp:cpp-string($p/@name), '):get()')
-          return concat('  check(', if ($p/@xml-type = ('double', 'float')) then concat('near(', $get, ', ', $p/@script-value, ')')
-                                     else concat($get, ' == ', $p/@script-value),
-                        ', ', fp:cpp-string(concat('property ', @name, '.', $p/@name, ' = ', $p/@script-value, ' (is ')),
-                        ' .. tostring(', $get, ') .. &quot;)&quot;)')),
+          let $get := concat('comps[', fp:cpp-string(@name), ']:getProperty(', fp:cpp-string($p/@name), '):get()'),
+              $want := concat('want(', fp:cpp-string(@name), ', ', fp:cpp-string($p/@name), ', ', $p/@script-value, ')')
+          return concat('  check(', if ($p/@xml-type = ('double', 'float')) then concat('near(', $get, ', ', $want, ')')
+                                     else concat($get, ' == ', $want),
+                        ', ', fp:cpp-string(concat('property ', @name, '.', $p/@name, ' = ')), ' .. tostring(', $want,
+                        ') .. &quot; (is &quot; .. tostring(', $get, ') .. &quot;)&quot;)')),
         '  for _, n in ipairs(names) do comps[n]:stop() end',
         '  for _, n in ipairs(names) do comps[n]:cleanup() end',
         '  for i = #names, 1, -1 do depl:unloadComponent(names[i]) end',
