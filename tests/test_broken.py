@@ -134,3 +134,20 @@ def test_sarif_names_the_qualified_name_and_keeps_the_xmi_id_apart(capsys) -> No
     for loc in logical:
         assert "::" in loc["fullyQualifiedName"] and loc["fullyQualifiedName"].endswith(loc["name"])
         assert loc["properties"]["xmiId"] and loc["properties"]["xmiId"] not in loc["fullyQualifiedName"]
+
+
+@pytest.mark.parametrize("case, kind", [("buffer-size-zero", "robomda:ConnectionPolicy"),
+                                        ("negative-period", "uml:Property 'sample'"),
+                                        ("priority-out-of-range", "uml:Property 'priority'")])
+def test_a_bad_value_is_located_where_it_is_written(case: str, kind: str, capsys) -> None:
+    """Errors pointed at the component or connector instead of the element holding the bad
+    value (a stereotype application's tag, a convention attribute): issue 10 item 9."""
+    code, out, err = _run(capsys, ["check", f"fixtures/broken/{case}/model.xmi"])
+    assert code != 0
+    line = next(line for line in (out + err).splitlines() if ": error: [" in line)
+    assert f"({kind}" in line, line
+    where = int(line.split(":")[1])
+    # the element's start tag, or its defaultValue just below
+    text = "\n".join((BROKEN / case / "model.xmi").read_text(encoding="utf-8").splitlines()[where - 1:where + 2])
+    bad = {"buffer-size-zero": 'size="0"', "negative-period": 'value="-0.01"', "priority-out-of-range": 'value="150"'}[case]
+    assert bad in text, text

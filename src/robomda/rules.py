@@ -62,7 +62,11 @@ def findings(rules: Path, phase: str | None, tree: etree._Element) -> list[Findi
         message = " ".join("".join(item.findtext(f"{{{_SVRL}}}text") or "").split())
         located = doc.xpath(item.get("location", "/")) if item.get("location") else []
         node = located[0] if located and isinstance(located[0], etree._Element) else None
-        result.append(Finding(item.get("id") or "RULE", severity, message, model_element_id(node)))
+        # a "-holder" diagnostic names the element that holds the bad value
+        holders = [" ".join("".join(d.itertext()).split()) for d in item.iter(f"{{{_SVRL}}}diagnostic-reference")
+                   if (d.get("diagnostic") or "").endswith("-holder")]
+        holder = next((h for h in holders if h), None)
+        result.append(Finding(item.get("id") or "RULE", severity, message, holder or model_element_id(node)))
     return result
 
 

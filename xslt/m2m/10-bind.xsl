@@ -274,6 +274,13 @@
     <xsl:sequence select="$e/pim:attribute[@name eq $name][@default][1]/@default ! string(.)"/>
   </xsl:function>
 
+  <!-- the id of the attribute holding that default value -->
+  <xsl:function name="fp:conv-holder" as="xs:string">
+    <xsl:param name="e" as="element()?"/>
+    <xsl:param name="name" as="xs:string"/>
+    <xsl:sequence select="string($e/pim:attribute[@name eq $name][@default][1]/@id)"/>
+  </xsl:function>
+
   <!-- ================================================= value parsing -->
   <xsl:function name="fp:strip" as="xs:string">
     <xsl:param name="v" as="xs:string"/>
@@ -752,6 +759,10 @@
 
   <!-- one activity value: (value, source) from stereotype tag, class
        convention, EE convention or default -->
+  <!-- (value, where it comes from, the id of the element that holds it or
+       '' for a default): the value sits on an Activity stereotype
+       application, a convention attribute of the realizing class or of the
+       execution environment; errors about it point at that element -->
   <xsl:function name="fp:activity-value" as="xs:string+">
     <xsl:param name="stereo-on" as="element()*"/>
     <xsl:param name="tag" as="xs:string"/>
@@ -763,10 +774,11 @@
     <xsl:variable name="c" as="xs:string?" select="fp:conv($r, $conv)[normalize-space(.)]"/>
     <xsl:variable name="e" as="xs:string?"
         select="if ($conv eq 'sample') then () else fp:conv($ee, $conv)[normalize-space(.)]"/>
-    <xsl:sequence select="if (exists($t)) then ($t, 'stereotype')
-                          else if (exists($c)) then ($c, 'realizing-class')
-                          else if (exists($e)) then ($e, 'execution-environment')
-                          else ($default, 'default')"/>
+    <xsl:sequence select="if (exists($t)) then ($t, 'stereotype',
+                              string(($stereo-on ! f:stereotype(., 'Activity'))[pim:tag[@name eq $tag][normalize-space(@value)]][1]/@id))
+                          else if (exists($c)) then ($c, 'realizing-class', fp:conv-holder($r, $conv))
+                          else if (exists($e)) then ($e, 'execution-environment', fp:conv-holder($ee, $conv))
+                          else ($default, 'default', '')"/>
   </xsl:function>
 
   <xsl:function name="fp:activity" as="element(pim:activity)">
@@ -780,10 +792,21 @@
     <xsl:variable name="cpu" as="xs:string+" select="fp:activity-value($stereo-on, 'cpuAffinity', $r, $ee, 'cpuAffinity', '0')"/>
     <xsl:variable name="s" as="xs:string"
         select="replace(replace(upper-case(fp:literal(fp:strip($sched[1]))), '^(ORO_)?SCHED_', ''), '^OTHERS$', 'OTHER')"/>
-    <pim:activity period="{fp:number($period[1], 'period', $id)}" period-source="{$period[2]}"
-                  priority="{fp:integer($prio[1], 'priority', $id)}" priority-source="{$prio[2]}"
-                  scheduler="{fp:enum($s, ('RT', 'OTHER'), 'scheduler', $id)}" scheduler-source="{$sched[2]}"
-                  cpu-affinity="{fp:integer($cpu[1], 'cpuAffinity', $id)}" cpu-affinity-source="{$cpu[2]}"/>
+    <pim:activity period="{fp:number($period[1], 'period', fp:holder($period, $id))}" period-source="{$period[2]}"
+                  priority="{fp:integer($prio[1], 'priority', fp:holder($prio, $id))}" priority-source="{$prio[2]}"
+                  scheduler="{fp:enum($s, ('RT', 'OTHER'), 'scheduler', fp:holder($sched, $id))}" scheduler-source="{$sched[2]}"
+                  cpu-affinity="{fp:integer($cpu[1], 'cpuAffinity', fp:holder($cpu, $id))}" cpu-affinity-source="{$cpu[2]}">
+      <xsl:if test="$period[3]"><xsl:attribute name="period-holder" select="$period[3]"/></xsl:if>
+      <xsl:if test="$prio[3]"><xsl:attribute name="priority-holder" select="$prio[3]"/></xsl:if>
+    </pim:activity>
+  </xsl:function>
+
+  <!-- the element an error about an fp:activity-value points at: the one
+       that holds the value, else $fallback -->
+  <xsl:function name="fp:holder" as="xs:string">
+    <xsl:param name="value" as="xs:string+"/>
+    <xsl:param name="fallback" as="xs:string"/>
+    <xsl:sequence select="($value[3][. ne ''], $fallback)[1]"/>
   </xsl:function>
 
   <!-- ============================================ components and ports -->
@@ -944,7 +967,8 @@
   <!-- the policy given by the ConnectionPolicy stereotype of $e -->
   <xsl:function name="fp:policy-of" as="element(pim:policy)">
     <xsl:param name="e" as="element()"/>
-    <xsl:variable name="id" as="xs:string?" select="$e/@id"/>
+    <!-- the stereotype application holds the values: errors point at it -->
+    <xsl:variable name="id" as="xs:string?" select="(f:stereotype($e, 'ConnectionPolicy')/@id, $e/@id)[1]"/>
     <xsl:variable name="default" as="element(pim:policy)" select="$fp:default-policy"/>
     <xsl:variable name="type" as="xs:string"
         select="fp:enum((fp:tag($e, 'ConnectionPolicy', 'type')[normalize-space(.)], $default/@type)[1],
@@ -959,7 +983,7 @@
         topic="{fp:tag($e, 'ConnectionPolicy', 'topic')}"
         source="{if ($e/self::pim:connector) then 'connector'
                  else if ($e/self::pim:port) then 'port' else 'interface'}"
-        source-element="{$e/@id}"/>
+        source-element="{$e/@id}" holder="{$id}"/>
   </xsl:function>
 
   <xsl:function name="fp:connection-name" as="xs:string">
