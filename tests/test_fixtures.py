@@ -768,11 +768,13 @@ def test_smoke_program(case: str, tmp_path: Path):
     assert p.returncode == 0, p.stdout
 
 
-def test_tuned_fixture_is_what_its_make_py_writes():
-    """fixtures/cases/tuned is headlamp with the listed edits only (rewrite with its make.py)."""
+@pytest.mark.parametrize("script", [CASES_DIR / "tuned" / "make.py", ROOT / "fixtures" / "ros" / "jointstate" / "make.py"],
+                         ids=["tuned", "jointstate"])
+def test_derived_fixture_is_what_its_make_py_writes(script: Path):
+    """A derived fixture is its source model with the edits its make.py lists, and nothing else."""
     import importlib.util
-    spec = importlib.util.spec_from_file_location("tuned_make", CASES_DIR / "tuned" / "make.py")
+    spec = importlib.util.spec_from_file_location(f"{script.parent.name}_make", script)
     make = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(make)
     for path, text in make.texts().items():
-        assert path.read_text(encoding="utf-8") == text, f"{path} is stale: run python {CASES_DIR / 'tuned' / 'make.py'}"
+        assert path.read_text(encoding="utf-8") == text, f"{path} is stale: run python {script}"

@@ -25,7 +25,9 @@ from lxml import etree
 from robomda.api import generate, import_model
 
 ROOT = Path(__file__).resolve().parent.parent
-CASES = sorted(p.parent for p in (ROOT / "fixtures" / "cases").glob("*/model.xmi"))
+# every case, and the ROS-only fixtures (fixtures/ros: models the Orocos target refuses)
+CASES = sorted(p.parent for p in [*(ROOT / "fixtures" / "cases").glob("*/model.xmi"),
+                                  *(ROOT / "fixtures" / "ros").glob("*/model.xmi")])
 TARGETS = ["ros1", "ros2"]
 FS = "{urn:robomda:fileset:1}"
 SYS_PY = "/usr/bin/python3"
@@ -118,6 +120,17 @@ def test_pid_ros2_mapping() -> None:
     assert register == ['rclcpp_components_register_nodes(${PROJECT_NAME}_components "pid::TrajectoryGenerator" '
                         '"pid::PIDController" "pid::RobotInterface")']
     assert "PIDController:\n  ros__parameters:\n    update_period: 0.01\n    kp: 20.0" in files["config/params.yaml"]
+
+
+def test_a_port_of_a_data_type_converts_to_the_users_type_in_the_global_namespace() -> None:
+    """ROS 1: inside namespace <pkg>, JointSample{...} named the generated message, not the user's
+    type, and the package did not compile (issue 10 item 8; catkin builds the fixture below)."""
+    for target in TARGETS:
+        files = _files(_run(ROOT / "fixtures/ros/jointstate", target))
+        assert "::SampledPIDController::setMeasuredPosition(::JointSample{(*msg).position, (*msg).velocity});" \
+            in files["src/PIDController.cpp"]
+        assert "const ::JointSample value = ::SimulatedJoint::getMeasuredPosition();" in files["src/RobotInterface.cpp"]
+        assert files["msg/JointSample.msg"].splitlines()[-2:] == ["float64 position", "float64 velocity"]
 
 
 def test_warnings() -> None:

@@ -269,7 +269,10 @@
                       and (every $a in $dt/pim:attribute satisfies exists(fp:type($a)[@msg-field ne '']))
                       and not($dp/@upper and not($dp/@upper = ('1', '')))">
         <xsl:variable name="n" as="xs:string" select="f:upper-camel($dt/@name)"/>
-        <r:message msg="{$n}" field="" cpp-type="{f:cpp-identifier($dt/@name)}" sample="{f:cpp-identifier($dt/@name) || '()'}"
+        <!-- the user's C++ type of the same name, in the global namespace
+             (qualified: inside the package's namespace the bare name is the
+             generated message) -->
+        <r:message msg="{$n}" field="" cpp-type="{'::' || f:cpp-identifier($dt/@name)}" sample="{'::' || f:cpp-identifier($dt/@name) || '()'}"
                    generated="true" type="{$dt/@id}">
           <xsl:for-each select="$dt/pim:attribute">
             <r:field name="{f:snake-case(@name)}" member="{f:cpp-identifier(@name)}" msg-field="{fp:type(.)/@msg-field}"/>
