@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import os
 import re
-from functools import lru_cache
+from collections.abc import Sequence
 from dataclasses import dataclass, field
+from functools import lru_cache
 from pathlib import Path
 
 from lxml import etree
@@ -141,7 +142,7 @@ class PackageInfo:
 
 
 def _context(model: Path, out: Path | None, package_name: str, type_map: Path | None = None,
-             package: PackageInfo | None = None) -> dict[str, str]:
+             package: PackageInfo | None = None, model_path: Sequence[Path] = ()) -> dict[str, str]:
     model_dir = model.resolve().parent
     rel = os.path.relpath(model_dir, out.resolve()) if out is not None else "."
     return {
@@ -149,11 +150,22 @@ def _context(model: Path, out: Path | None, package_name: str, type_map: Path | 
         "model-dir-from-output": Path(rel).as_posix(),
         "package-name": package_name,
         "type-map": type_map.resolve().as_uri() if type_map is not None else "",
+        "model-path": " ".join(d.resolve().as_uri().rstrip("/") + "/" for d in _model_path(model_path)),
         **(package or PackageInfo()).context(),
     }
 
 
-def import_model(model: Path | str, *, bind: bool = True, warnings: list[Diagnostic] | None = None) -> str:
+def _model_path(model_path: Sequence[Path | str]) -> list[Path]:
+    """The model path (folders that referenced model files may be read from), each an existing folder."""
+    for folder in model_path:
+        if not Path(folder).is_dir():
+            raise RobomdaError([Diagnostic("error", "IO001", f"--model-path {folder} is not a folder",
+                                           file=str(folder))], EXIT_INPUT)
+    return [Path(f) for f in model_path]
+
+
+def import_model(model: Path | str, *, bind: bool = True, warnings: list[Diagnostic] | None = None,
+                 model_path: Sequence[Path | str] = ()) -> str:
     """The PIM of ``model`` as XML text (bound to its platform unless ``bind`` is false).
 
     The warnings and notes of the run are appended to ``warnings`` when given.
@@ -163,7 +175,7 @@ def import_model(model: Path | str, *, bind: bool = True, warnings: list[Diagnos
     chain = pipelines.load(pipeline_path("import"))
     if not bind:
         chain = pipelines.Pipeline(chain.name, chain.yields, chain.description, chain.steps[:1], chain.manifest)
-    result = _run(chain, model, _context(model, None, ""))
+    result = _run(chain, model, _context(model, None, "", model_path=_model_path(model_path)))
     if warnings is not None:
         warnings.extend(result.warnings)
     return result.output
@@ -186,7 +198,7 @@ def _type_map(type_map: Path | str | None) -> Path | None:
 
 
 def check(model: Path | str, target: str | None = None, *, package_name: str = "",
-          type_map: Path | str | None = None) -> Checked:
+          type_map: Path | str | None = None, model_path: Sequence[Path | str] = ()) -> Checked:
     """Run the checks of ``model`` without generating anything.
 
     With a ``target``, everything ``generate`` would check for it: the import
@@ -202,7 +214,7 @@ def check(model: Path | str, target: str | None = None, *, package_name: str = "
     if target is not None:
         _usage_target(target)
     _check_readable(model)
-    context = _context(model, None, package_name, _type_map(type_map))
+    context = _context(model, None, package_name, _type_map(type_map), model_path=_model_path(model_path))
     diagnostics: list[Diagnostic] = []
     rule_sets: list[str] = []
     exit_code = EXIT_OK
@@ -274,11 +286,12 @@ def _targets_of(bound_pim: etree._Element | None) -> list[str]:
     return [t for m, t in _TARGET_OF_MIDDLEWARE.items() if m in deployed]
 
 
-def default_targets(model: Path | str) -> list[str]:
+def default_targets(model: Path | str, model_path: Sequence[Path | str] = ()) -> list[str]:
     """The targets ``generate`` and ``check`` use without ``--target``: the model's middlewares, else Orocos."""
     model = Path(model)
     _check_readable(model)
-    bound = _run(pipelines.load(pipeline_path("import")), model, _context(model, None, ""))
+    bound = _run(pipelines.load(pipeline_path("import")), model,
+                 _context(model, None, "", model_path=_model_path(model_path)))
     return _targets_of(bound.tree) or [DEFAULT_TARGET]
 
 
@@ -305,7 +318,8 @@ def _package_name_note(asked: str, psm: str | None, model: Path) -> list[Diagnos
 
 
 def generate(model: Path | str, out: Path | str | None, target: str | None = None, *, package_name: str = "",
-             type_map: Path | str | None = None, write: bool = True, package: PackageInfo | None = None) -> Generated:
+             type_map: Path | str | None = None, write: bool = True, package: PackageInfo | None = None,
+             model_path: Sequence[Path | str] = ()) -> Generated:
     """Run ``target``'s chain on ``model`` and write its files into ``out``.
 
     Without a ``target``: the one middleware the model deploys on (Orocos
@@ -316,7 +330,7 @@ def generate(model: Path | str, out: Path | str | None, target: str | None = Non
     """
     model = Path(model)
     if target is None:
-        found = default_targets(model)
+        found = default_targets(model, model_path)
         if len(found) > 1:
             raise RobomdaError([Diagnostic(
                 "error", "USAGE", f"the model deploys on several middlewares ({', '.join(found)}): "
@@ -326,7 +340,7 @@ def generate(model: Path | str, out: Path | str | None, target: str | None = Non
     _check_readable(model)
     out_path = Path(out) if out is not None else None
     chain = pipelines.load(pipeline_path(target))
-    context = _context(model, out_path, package_name, _type_map(type_map), package)
+    context = _context(model, out_path, package_name, _type_map(type_map), package, _model_path(model_path))
     result = _run(chain, model, context)
     warnings = result.warnings + _package_name_note(package_name, result.stages.get("psm"), model)
     missing = [opt for opt, key in (("--maintainer", "maintainer-email"), ("--license", "license")) if not context[key]]

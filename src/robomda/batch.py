@@ -19,6 +19,11 @@
   and every generated file its output folder's state lists is still there
   with the hash robomda wrote: a deleted or edited output is regenerated
   (and an edited one then refused with OUT001). ``force`` regenerates all.
+- A model file that another model of the folder references (a component,
+  service or type library of a model split over several files) is a
+  library: it is not generated on its own (status ``library``, with a note
+  naming a model that uses it), and a model's input hash covers the files it
+  references, so changing a library regenerates the models that use it.
 - A failing model is reported with its diagnostics and does not stop the
   others.
 - SIGINT (Ctrl-C) or SIGTERM stops the batch at once: queued models are
@@ -40,12 +45,12 @@ from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import dataclass, field
 from multiprocessing import get_context
 from pathlib import Path
-from typing import Callable
+from typing import Callable, Sequence
 
 from lxml import etree
 
 from robomda import __version__
-from robomda.diagnostics import EXIT_INTERNAL, EXIT_OK, Diagnostic, RobomdaError
+from robomda.diagnostics import EXIT_INTERNAL, EXIT_OK, Diagnostic, RobomdaError, linked_files
 from robomda.output import STATE_FILE as OUTPUT_STATE
 from robomda.output import atomic_write
 from robomda.resources import resource_root
@@ -64,7 +69,7 @@ class ModelResult:
     """What happened to one model."""
 
     model: str  # relative to the input folder
-    status: str  # "ok", "skipped" (unchanged) or "failed"
+    status: str  # "ok", "skipped" (unchanged), "library" (used by another model) or "failed"
     files_written: int = 0
     seconds: float = 0.0
     diagnostics: list[str] = field(default_factory=list)
@@ -156,7 +161,7 @@ def _outputs_intact(dest: Path) -> bool:
 
 
 def _generate_one(model: str, out: str, target: str | None, package_name: str, type_map: str | None,
-                  package: tuple[str, str, str] = ("", "", "")) -> ModelResult:
+                  package: tuple[str, str, str] = ("", "", ""), model_path: tuple[str, ...] = ()) -> ModelResult:
     """Worker: one model (the process's engine is reused across calls)."""
     from robomda.api import PackageInfo, generate
 
@@ -164,7 +169,7 @@ def _generate_one(model: str, out: str, target: str | None, package_name: str, t
     result = ModelResult(model=model, status="ok")
     try:
         done = generate(model, out, target, package_name=package_name, type_map=type_map,
-                        package=PackageInfo(*package))
+                        package=PackageInfo(*package), model_path=model_path)
         result.files_written = len(done.report.written) if done.report else 0
         result.diagnostics = [w.format() for w in done.warnings]
     except RobomdaError as exc:
@@ -185,8 +190,17 @@ def _read_state(out: Path) -> dict[str, dict[str, str]]:
         return {}
 
 
+def _input_hash(model: Path, linked: list[Path]) -> str:
+    """A hash of the model file and of every model file it references."""
+    digest = hashlib.sha256(model.read_bytes())
+    for path in linked:
+        digest.update(b"\0" + path.as_posix().encode() + b"\0" + path.read_bytes())
+    return digest.hexdigest()
+
+
 def run_batch(folder: Path, out: Path, target: str | None = None, *, package_name: str = "", jobs: int | None = None,
               force: bool = False, type_map: Path | None = None, package: tuple[str, str, str] = ("", "", ""),
+              model_path: Sequence[Path] = (),
               progress: Callable[[int, int, ModelResult], None] | None = None) -> BatchReport:
     """Generate every model under ``folder`` into ``out``; never raises for one model's failure."""
     started = time.perf_counter()
@@ -194,12 +208,22 @@ def run_batch(folder: Path, out: Path, target: str | None = None, *, package_nam
     models = find_models(folder, exclude=out)
     tools = toolchain_hash(target, package_name, type_map, package)
     map_arg = str(type_map.resolve()) if type_map is not None else None
+    search = tuple(Path(d).resolve() for d in model_path)
+    path_arg = tuple(str(d) for d in search)
+    links = {model: linked_files(model, search) for model in models}
+    used_by = {lib: model for model in models for lib in links[model]}
     state = _read_state(out)
     results: list[ModelResult] = []
     todo: list[tuple[Path, Path, str]] = []
     for model in models:
         rel = model.relative_to(folder).as_posix()
-        digest = hashlib.sha256(model.read_bytes()).hexdigest()
+        if model in used_by:
+            user = os.path.relpath(used_by[model], folder)
+            results.append(ModelResult(model=rel, status="library", diagnostics=[
+                f"{model}: note: a library of {Path(user).as_posix()} (it references this file): generated with it, "
+                "not on its own"]))
+            continue
+        digest = _input_hash(model, links[model])
         dest = _output_folder(model, folder, out)
         seen = state.get(rel, {})
         if (not force and seen.get("input") == digest and seen.get("toolchain") == tools
@@ -217,7 +241,7 @@ def run_batch(folder: Path, out: Path, target: str | None = None, *, package_nam
     try:
         if todo and workers == 1:
             for model, dest, digest in todo:
-                result = _generate_one(str(model), str(dest), target, package_name, map_arg, package)
+                result = _generate_one(str(model), str(dest), target, package_name, map_arg, package, path_arg)
                 done_count += 1
                 results.append(_finish(result, model, folder, digest, progress, done_count, total))
         elif todo:
@@ -225,7 +249,8 @@ def run_batch(folder: Path, out: Path, target: str | None = None, *, package_nam
             pool = ProcessPoolExecutor(max_workers=workers, mp_context=get_context("spawn"),
                                        initializer=_worker_init)
             try:
-                futures = {pool.submit(_generate_one, str(m), str(d), target, package_name, map_arg, package): (m, dg)
+                futures = {pool.submit(_generate_one, str(m), str(d), target, package_name, map_arg, package,
+                                       path_arg): (m, dg)
                            for m, d, dg in todo}
                 for future in as_completed(futures):
                     model, digest = futures[future]
@@ -245,7 +270,7 @@ def _write_state(out: Path, target: str | None, tools: str, results: list[ModelR
     if not results:
         return
     new_state = {r.model: {"input": r.input_hash, "toolchain": tools}
-                 for r in sorted(results, key=lambda r: r.model) if r.status != "failed"}
+                 for r in sorted(results, key=lambda r: r.model) if r.status not in ("failed", "library")}
     payload = {"generator": f"robomda {__version__}", "target": target, "models": new_state}
     atomic_write(out / STATE, (json.dumps(payload, indent=1, sort_keys=True) + "\n").encode("utf-8"))
 

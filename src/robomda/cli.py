@@ -62,6 +62,9 @@ def _parser() -> argparse.ArgumentParser:
                      help="package / CMake project name (default: derived from the model name)")
     gen.add_argument("--type-map", type=Path, metavar="FILE",
                      help="ROS targets: your message type map (format of xslt/m2m/ros-types.xml); its entries win")
+    gen.add_argument("--model-path", type=Path, action="append", default=[], metavar="DIR",
+                     help="a folder of model files your model references (libraries kept elsewhere); "
+                          "repeat for several. Without it only files in the model's own folder are read")
     gen.add_argument("--save-stages", type=Path, metavar="DIR",
                      help="also write every intermediate model (PIM, PSM, file set) into DIR")
     gen.add_argument("--format", default="text", choices=FORMATS,
@@ -82,6 +85,7 @@ def _parser() -> argparse.ArgumentParser:
                      help="text on stderr (default), or a json / sarif document on stdout")
     chk.add_argument("--package-name", default="", metavar="NAME", help="as for generate")
     chk.add_argument("--type-map", type=Path, metavar="FILE", help="as for generate")
+    chk.add_argument("--model-path", type=Path, action="append", default=[], metavar="DIR", help="as for generate")
 
     imp = sub.add_parser(
         "import", help="write the platform-independent model (PIM) of an XMI model",
@@ -91,6 +95,7 @@ def _parser() -> argparse.ArgumentParser:
     imp.add_argument("model", type=Path, metavar="MODEL", help="the UML XMI file")
     imp.add_argument("-o", "--output", type=Path, required=True, metavar="OUT",
                      help="a file ending in .xml, or a folder that receives MODEL-NAME.pim.xml")
+    imp.add_argument("--model-path", type=Path, action="append", default=[], metavar="DIR", help="as for generate")
     imp.add_argument("--no-bind", action="store_true",
                      help="stop after the import proper (skip the platform binding)")
     return parser
@@ -124,7 +129,8 @@ def _batch(args: argparse.Namespace) -> int:
         return EXIT_INPUT
     report = run_batch(args.model, args.output, args.target, package_name=args.package_name, jobs=args.jobs,
                        package=(args.package_version, args.maintainer, args.license),
-                       force=args.force, type_map=args.type_map, progress=ProgressBar())
+                       force=args.force, type_map=args.type_map, model_path=args.model_path,
+                       progress=ProgressBar())
     for result in report.results:
         for line in result.diagnostics:
             print(line, file=sys.stderr)
@@ -133,8 +139,9 @@ def _batch(args: argparse.Namespace) -> int:
     print(f"{'model':<{width}}  {'status':<8} {'files':>5} {'seconds':>8}")
     for r in report.results:
         print(f"{r.model:<{width}}  {r.status:<8} {r.files_written:>5} {r.seconds:>8.2f}")
+    libraries = f", {report.count('library')} libraries" if report.count("library") else ""
     print(f"robomda: {len(report.results)} models: {report.count('ok')} ok, {report.count('skipped')} unchanged, "
-          f"{report.count('failed')} failed; {files} files written in {report.seconds:.1f} s")
+          f"{report.count('failed')} failed{libraries}; {files} files written in {report.seconds:.1f} s")
     if not report.results:
         print(f"robomda: no UML model found under {args.model}", file=sys.stderr)
         return EXIT_INPUT
@@ -151,7 +158,8 @@ def _report(fmt: str, diagnostics: list[Diagnostic], exit_code: int) -> None:
 
 
 def _check(args: argparse.Namespace) -> int:
-    done = check(args.model, args.target, package_name=args.package_name, type_map=args.type_map)
+    done = check(args.model, args.target, package_name=args.package_name, type_map=args.type_map,
+                 model_path=args.model_path)
     _report(args.format, done.diagnostics, done.exit_code)
     summary = (f"robomda: {args.model}: {done.count('error')} errors, {done.count('warning')} warnings, "
                f"{done.count('info')} notes (checked for {', '.join(done.targets)}; rules: "
@@ -195,7 +203,7 @@ def _main(args: argparse.Namespace, fmt: str) -> int:
             return _check(args)
         if args.command == "generate":
             done = generate(args.model, args.output, args.target, package_name=args.package_name,
-                            type_map=args.type_map,
+                            type_map=args.type_map, model_path=args.model_path,
                             package=PackageInfo(args.package_version, args.maintainer, args.license))
             _report(fmt, done.warnings, EXIT_OK)
             if args.save_stages:
@@ -211,7 +219,7 @@ def _main(args: argparse.Namespace, fmt: str) -> int:
                       file=sys.stdout if fmt == "text" else sys.stderr)
         else:
             found: list[Diagnostic] = []
-            text = import_model(args.model, bind=not args.no_bind, warnings=found)
+            text = import_model(args.model, bind=not args.no_bind, warnings=found, model_path=args.model_path)
             _report("text", found, EXIT_OK)
             dest = _pim_destination(args.model, args.output)
             _write_model_file(dest, text)

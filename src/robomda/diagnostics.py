@@ -12,6 +12,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
+from urllib.parse import unquote
 
 from lxml import etree
 
@@ -155,21 +156,61 @@ class _Where:
     qualified_name: str = ""
 
 
-class XmiLocator:
-    """Maps xmi:id values of one XMI file to line, column, kind and name.
+# an href to another file: its document part (before "#")
+_HREF = re.compile(rb"""\bhref\s*=\s*["']([^"'#]+)#""")
+_SCHEME = re.compile(r"^[A-Za-z][A-Za-z0-9+.\-]*:")
+_PROFILE = re.compile(r"\.profile\.(uml|xmi)$", re.I)
 
-    The file is read only when a diagnostic needs a location, so a clean run
-    pays nothing for it.
+
+def linked_files(model: Path, search: tuple[Path, ...] = ()) -> list[Path]:
+    """The model files ``model`` references through hrefs, and theirs, each once (breadth first).
+
+    The same files the import reads (xslt/import/files.xsl): relative or
+    file: references that are not profiles, inside the model's folder or a
+    ``search`` folder (the model path), that exist. Used only to locate
+    diagnostics; the import decides what the model holds.
+    """
+    roots = [model.resolve().parent, *(d.resolve() for d in search)]
+    seen, order, todo = {model.resolve()}, [], [model.resolve()]
+    while todo:
+        current = todo.pop(0)
+        try:
+            raw = current.read_bytes()
+        except OSError:
+            continue
+        for ref in dict.fromkeys(unquote(m.group(1).decode("utf-8", "replace")) for m in _HREF.finditer(raw)):
+            if _PROFILE.search(ref) or (_SCHEME.match(ref) and not ref.lower().startswith("file:")):
+                continue
+            target = Path(ref[5:].lstrip("/") if ref.lower().startswith("file:") else ref)
+            target = (Path("/") / target if ref.lower().startswith("file:") else current.parent / target).resolve()
+            if target in seen or not target.is_file() or not any(target.is_relative_to(r) for r in roots):
+                continue
+            seen.add(target)
+            order.append(target)
+            todo.append(target)
+    return order
+
+
+class XmiLocator:
+    """Maps xmi:id values of a model to file, line, column, kind and name.
+
+    The model is its file and the files it references (:func:`linked_files`):
+    an id is looked up in the model file first, then in the others. Files
+    are read only when a diagnostic needs a location, so a clean run pays
+    nothing for it.
     """
 
-    def __init__(self, path: Path) -> None:
+    def __init__(self, path: Path, search: tuple[Path, ...] = ()) -> None:
         self.path = path
+        self._search = search
         self._index: dict[str, _Where] | None = None
+        self._others: list[tuple[Path, dict[str, _Where] | None]] | None = None
 
-    def _build(self) -> dict[str, _Where]:
+    @staticmethod
+    def _build(path: Path) -> dict[str, _Where]:
         index: dict[str, _Where] = {}
         try:
-            raw = self.path.read_bytes()
+            raw = path.read_bytes()
             parser = etree.XMLParser(huge_tree=True, resolve_entities=False, no_network=True)
             root = etree.fromstring(raw, parser)
         except (OSError, etree.XMLSyntaxError):
@@ -183,22 +224,45 @@ class XmiLocator:
             index[xid] = _Where(line, _column(lines, line, xid), _kind(el), el.get("name", ""), _qualified_name(el))
         return index
 
-    def locate(self, xmi_id: str | None) -> _Where | None:
+    def find(self, xmi_id: str | None) -> tuple[Path, _Where | None]:
+        """The file that holds ``xmi_id`` and where in it (the model file and None when no file does)."""
         if not xmi_id:
-            return None
+            return self.path, None
         if self._index is None:
-            self._index = self._build()
-        return self._index.get(xmi_id)
+            self._index = self._build(self.path)
+        if xmi_id in self._index:
+            return self.path, self._index[xmi_id]
+        if self._others is None:
+            self._others = [(p, None) for p in linked_files(self.path, self._search)]
+        for i, (path, index) in enumerate(self._others):
+            if index is None:
+                index = self._build(path)
+                self._others[i] = (path, index)
+            if xmi_id in index:
+                return path, index[xmi_id]
+        return self.path, None
+
+    def _shown(self, path: Path) -> str:
+        """A linked file as the user would name it: beside the model file as the user named that."""
+        if path == self.path.resolve():
+            return str(self.path)
+        try:
+            return str(self.path.parent / path.relative_to(self.path.resolve().parent))
+        except ValueError:
+            return str(path)
+
+    def locate(self, xmi_id: str | None) -> _Where | None:
+        return self.find(xmi_id)[1]
 
     def diagnostic(self, code: str, message: str, xmi_id: str | None, *, severity: str = "error",
                    step: str | None = None, line: int | None = None, column: int | None = None) -> Diagnostic:
         """A diagnostic about the element with ``xmi_id`` (or at ``line``)."""
-        where = self.locate(xmi_id)
+        path, where = self.find(xmi_id)
         return Diagnostic(
             severity=severity,
             code=code,
             message=message,
-            file=str(self.path),
+            file=self._shown(path) if where else str(self.path),
             line=where.line if where else line,
             column=where.column if where else column,
             element_kind=where.kind if where else None,

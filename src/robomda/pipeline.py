@@ -14,6 +14,7 @@ import functools
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
+from urllib.parse import unquote, urlparse
 
 import xmlschema
 from lxml import etree
@@ -136,7 +137,7 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
     Every message a stylesheet writes becomes a diagnostic: ``warning:``,
     ``error:``, or a note (code NOTE).
     """
-    locator = XmiLocator(model)
+    locator = XmiLocator(model, tuple(Path(unquote(urlparse(u).path)) for u in context.get("model-path", "").split()))
     result = RunResult()
     chain = pipeline.steps[:steps]
     previous: Path | str | Tree = model.resolve()

@@ -19,7 +19,11 @@
            the XMI become "robomda.<path>" (xmi-common.xsl, fp:id).
   Params:  source-name (xs:string, default ''): the XMI file's name without
            directories; written to pim:model/@source.
+           model-path (xs:string, default ''): space-separated folder URIs
+           that referenced model files may be read from besides the model's
+           own folder (files.xsl: models split over several files).
   Modules: xmi-common.xsl (normalisation, keys, references, types),
+           files.xsl (models split over several files: IMP040, IMP041),
            check.xsl (dangling references), application.xsl, platform.xsl,
            stereotypes.xsl, dialect-*.xsl, ../common/profile.xsl (the
            robomda profile URI); data:
@@ -76,6 +80,7 @@
   <xsl:include href="../common/indent.xsl"/>
   <xsl:include href="../common/profile.xsl"/>
   <xsl:include href="xmi-common.xsl"/>
+  <xsl:include href="files.xsl"/>
   <xsl:include href="check.xsl"/>
   <xsl:include href="stereotypes.xsl"/>
   <xsl:include href="application.xsl"/>
@@ -93,6 +98,27 @@
   <xsl:param name="source-name" as="xs:string" select="''">
     <!-- the XMI file's name without directories; goes to pim:model/@source -->
   </xsl:param>
+  <xsl:param name="model-path" as="xs:string" select="''">
+    <!-- folders (URIs, space-separated) beside the model's own that model
+         files it references may be read from (files.xsl) -->
+  </xsl:param>
+
+  <!-- the folders files may be read from: the model's own and the model
+       path, as URIs ending in "/" -->
+  <xsl:function name="fp:sandbox" as="xs:string+">
+    <xsl:param name="doc" as="document-node()"/>
+    <xsl:param name="model-path" as="xs:string"/>
+    <xsl:sequence select="string(resolve-uri('.', base-uri($doc))),
+                          tokenize($model-path) ! (if (ends-with(., '/')) then . else . || '/')"/>
+  </xsl:function>
+
+  <!-- $doc normalised (mode mp:normalise of xmi-common.xsl) -->
+  <xsl:function name="fp:normalised" as="document-node()">
+    <xsl:param name="doc" as="document-node()"/>
+    <xsl:document>
+      <xsl:apply-templates select="$doc/*" mode="mp:normalise"/>
+    </xsl:document>
+  </xsl:function>
 
   <!-- ====================================================== entry -->
   <!-- Everything derives from the initial match item, not from global
@@ -102,12 +128,19 @@
     <xsl:variable name="src-root" as="element()" select="*"/>
     <xsl:variable name="src-model" as="element()?" select="fp:src-model($src-root)"/>
     <xsl:if test="fp:check-format($src-root, $src-model)">
-      <!-- the normalised copy every rule reads (see xmi-common.xsl) -->
-      <xsl:variable name="norm" as="document-node()">
+      <!-- the model files this one references (files.xsl), each once -->
+      <xsl:variable name="linked" as="xs:string*"
+          select="if (base-uri(.) = '') then () else fp:linked-files(., fp:sandbox(., $model-path))"/>
+      <!-- the normalised copy every rule reads (see xmi-common.xsl), with
+           the linked files merged in -->
+      <xsl:variable name="main-norm" as="document-node()">
         <xsl:document>
           <xsl:apply-templates select="$src-root" mode="mp:normalise"/>
         </xsl:document>
       </xsl:variable>
+      <xsl:variable name="norm" as="document-node()"
+          select="if (empty($linked)) then $main-norm
+                  else fp:merged($main-norm, $linked ! fp:normalised(doc(.)), (string(base-uri(.)), $linked))"/>
       <xsl:variable name="model-el" as="element()" select="fp:model-el($norm)"/>
       <xsl:variable name="root" as="element()" select="fp:model-root($model-el)"/>
       <xsl:if test="fp:check-model($norm, $model-el)">

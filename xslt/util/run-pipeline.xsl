@@ -14,6 +14,9 @@
                                   output folder ("." by default).
            package-name           package name ("" = derived from the model).
            type-map               ROS targets: URI of a user type map.
+           model-path             folder URIs (space-separated) that model
+                                  files the model references may be read
+                                  from besides its own folder.
   Errors:  RUN001 no model given; any error of a step's stylesheet
            (fn:transform passes it on unchanged).
 
@@ -49,6 +52,9 @@
   </xsl:param>
   <xsl:param name="type-map" as="xs:string" select="''">
     <!-- ROS targets: absolute URI of a user type map; empty = none -->
+  </xsl:param>
+  <xsl:param name="model-path" as="xs:string" select="''">
+    <!-- folder URIs, space-separated: where referenced model files may be -->
   </xsl:param>
 
   <xsl:param name="package-version" as="xs:string" select="''">
@@ -95,6 +101,7 @@
       else if ($param/@from = 'maintainer-name') then $maintainer-name
       else if ($param/@from = 'maintainer-email') then $maintainer-email
       else if ($param/@from = 'license') then $license
+      else if ($param/@from = 'model-path') then $model-path
       else ''"/>
   </xsl:function>
 
