@@ -17,6 +17,10 @@ style deployment-components, connectors under the model). For each model:
 - ``robomda check`` (import, bind, rules, PSM of the deployed targets) ends
   with 0, 1 or 2, never INTERNAL.
 
+Some models reference a second model file (types of attributes and ports in
+``lib.uml``, which references the model back): beside the model, missing
+(IMP041), or outside the model's folder (IMP040).
+
 CI runs a bounded number of examples (ROBOMDA_HYPOTHESIS_EXAMPLES, default
 100, derandomized: the same models each run, ~10 s); run more by hand with e.g.
 ``ROBOMDA_HYPOTHESIS_EXAMPLES=2000 ROBOMDA_HYPOTHESIS_RANDOM=1 pytest
@@ -63,6 +67,22 @@ PRIMITIVES = ["Integer", "Real", "Boolean", "String"]
 EA_BUILTINS = ["EAJava_int", "EAJava_double", "EAJava_boolean", "EAnone_float"]
 NAMES = ["", "a", "Camera", "ctrl_1", "x y", "int", "Node", "ÄÖ", "very_long_name_" * 3]
 MIDDLEWARES = ["OROCOS", "ROS", "ROS2", "rttVision", "", "Orocos RTT"]
+# the ids of the second model file (lib.uml), and one it does not have
+LIB_IDS = ["_libI", "_libC", "_libK", "_libNowhere"]
+LIB = ('<?xml version="1.0" encoding="UTF-8"?>\n'
+       '<uml:Model xmi:version="20131001" xmlns:xmi="http://www.omg.org/spec/XMI/20131001" '
+       'xmlns:uml="http://www.eclipse.org/uml2/5.0.0/UML" xmi:id="_libM" name="lib">'
+       '<packagedElement xmi:type="uml:Interface" xmi:id="_libI" name="ILib"><ownedAttribute xmi:id="_libA" name="v">'
+       '<type xmi:type="uml:PrimitiveType" href="pathmap://UML_LIBRARIES/UMLPrimitiveTypes.library.uml#Real"/>'
+       '</ownedAttribute></packagedElement>'
+       '<packagedElement xmi:type="uml:Class" xmi:id="_libC" name="LibClass"/>'
+       '<packagedElement xmi:type="uml:Component" xmi:id="_libK" name="LibComponent">'
+       '<ownedAttribute xmi:type="uml:Port" xmi:id="_libP" name="p" type="_libI" aggregation="composite"/>'
+       '</packagedElement>'
+       # a reference back into the model file: files that reference each other
+       '<packagedElement xmi:type="uml:Dependency" xmi:id="_libD" client="_libC">'
+       '<supplier xmi:type="uml:Class" href="model.xmi#_nothere"/></packagedElement>'
+       '</uml:Model>\n')
 
 
 class Model:
@@ -78,6 +98,9 @@ class Model:
         self.ids: dict[str, list[str]] = {}  # metaclass -> ids
         self.stereotypes: list[str] = []
         self.stray: list[str] = []  # elements written under the model root
+        # a second model file the model references (models split over
+        # several files): beside it, missing, or outside the sandbox
+        self.lib = draw(st.sampled_from(["none", "present", "missing", "outside"]))
 
     def new_id(self, meta: str) -> str:
         self.n += 1
@@ -119,6 +142,11 @@ class Model:
             return "", f'<type xmi:type="uml:PrimitiveType" {LIBRARY[self.d].format(self.pick(PRIMITIVES))}/>'
         elif kind == "href":
             return "", '<type xmi:type="uml:Class" href="other.uml#_elsewhere"/>'
+        elif kind == "lib":
+            if self.lib == "none":
+                return "", ""
+            where = "../outside/lib.uml" if self.lib == "outside" else "lib.uml"
+            return "", f'<type xmi:type="uml:Interface" href="{where}#{self.pick(LIB_IDS)}"/>'
         else:
             target = self.some(kind)
             if target is None:
@@ -204,7 +232,7 @@ class Model:
 
     def klass(self) -> str:
         xid = self.new_id("Class")
-        attrs = "".join(self.attribute(["library", "none", "Interface", "DataType", "Behavior", "Actor", "href"])
+        attrs = "".join(self.attribute(["library", "none", "Interface", "DataType", "Behavior", "Actor", "href", "lib"])
                         for _ in range(self.draw(st.integers(0, 3))))
         ops = "".join(self.operation() for _ in range(self.draw(st.integers(0, 2))))
         real = ""
@@ -220,7 +248,7 @@ class Model:
     def component(self, tag: str = "packagedElement") -> tuple[str, str]:
         xid = self.new_id("Component")
         port_types = ["Interface", "Interface", "Class", "DataType", "Signal", "Collaboration", "Actor", "Behavior",
-                      "library", "none", "href"] + (["dangling"] if self.maybe(0.1) and not self.sound else [])
+                      "library", "none", "href", "lib"] + (["dangling"] if self.maybe(0.1) and not self.sound else [])
         ports = "".join(self.port(port_types) for _ in range(self.draw(st.integers(0, 3))))
         attrs = "".join(self.attribute(["library", "none", "Behavior", "DataType", "Actor"])
                         for _ in range(self.draw(st.integers(0, 2))))
@@ -369,19 +397,25 @@ class Model:
 
 
 @st.composite
-def models(draw) -> tuple[str, str]:
+def models(draw) -> tuple[str, str, str]:
     dialect = draw(st.sampled_from(sorted(DIALECTS)))
-    return dialect, Model(draw, dialect).write()
+    model = Model(draw, dialect)
+    return dialect, model.write(), model.lib
 
 
 @settings(max_examples=EXAMPLES, derandomize=not RANDOM, deadline=None, database=None,
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
 @given(models())
-def test_random_models_never_crash_and_drop_nothing_in_silence(model: tuple[str, str]) -> None:
-    dialect, text = model
+def test_random_models_never_crash_and_drop_nothing_in_silence(model: tuple[str, str, str]) -> None:
+    dialect, text, lib = model
     with tempfile.TemporaryDirectory() as tmp:
-        path = Path(tmp) / ("model.xmi" if dialect != "eclipse" else "model.uml")
+        path = Path(tmp) / "m" / ("model.xmi" if dialect != "eclipse" else "model.uml")
+        path.parent.mkdir()
         path.write_text(text, encoding="utf-8")
+        if lib in ("present", "outside"):
+            where = path.parent / "lib.uml" if lib == "present" else Path(tmp) / "outside" / "lib.uml"
+            where.parent.mkdir(exist_ok=True)
+            where.write_text(LIB, encoding="utf-8")
         code, pim, messages = import_run(path)
         assert code in (0, 1, 2), f"{dialect}:\n" + "\n".join(messages) + "\n" + text
         codes = {m.split(":", 1)[0] for m in messages}

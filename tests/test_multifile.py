@@ -154,3 +154,16 @@ def test_batch_generates_the_system_once_and_reports_its_files_as_libraries(tmp_
     third = run_batch(tmp_path / "cases" / "split", out, "ros1", jobs=1)
     assert {r.model: r.status for r in third.results}["model.xmi"] == "ok"
     assert "kp: 25.0" in (out / "model.xmi" / "config" / "controller.yaml").read_text()
+
+
+def test_a_reference_over_the_network_is_never_followed(tmp_path: Path) -> None:
+    model = _copy(tmp_path) / "model.xmi"
+    _edit(model.parent / "components" / "PIDController.compdef.uml",
+          '<type xmi:type="uml:Interface" href="../services/joint.servicedef.uml#_spS1i"/>',
+          '<type xmi:type="uml:Interface" href="http://127.0.0.1:9/joint.servicedef.uml#_spS1i"/>')
+    warnings = []
+    try:
+        import_model(model, bind=False, warnings=warnings)
+    except RobomdaError as exc:
+        warnings = exc.diagnostics
+    assert not [w for w in warnings if w.code in ("IMP040", "IMP041", "INTERNAL")]
