@@ -133,3 +133,38 @@ def test_a_model_without_components_is_refused(tmp_path: Path, capsys: pytest.Ca
     # the component realizations that lost their component are named, not dropped in silence
     assert err[:-1] and all(": warning: [IMP112] ComponentRealization" in e for e in err[:-1])
     assert not (tmp_path / "out").exists()
+
+
+def test_every_bad_value_of_every_instance_is_reported_at_once(tmp_path: Path,
+                                                                capsys: pytest.CaptureFixture[str]) -> None:
+    """Bind stopped at the first bad value (BND010): a user fixed one, ran again, found the next."""
+    text = (CASES / "pid" / "model.xmi").read_text(encoding="utf-8")
+    for old, new in (('xmi:id="_pid009v" value="0.01"', 'xmi:id="_pid009v" value="-0.01"'),
+                     ('xmi:id="_pid033v" value="0.01"', 'xmi:id="_pid033v" value="fast"')):
+        assert text.count(old) == 1
+        text = text.replace(old, new)
+    (tmp_path / "model.xmi").write_text(text, encoding="utf-8")
+    code, err = _generate(capsys, tmp_path / "model.xmi", tmp_path / "out")
+    assert code == 1
+    found = [line for line in err if "[BND010]" in line]
+    assert len(found) == 2, err
+    assert any("'-0.01'" in line for line in found) and any("'fast'" in line for line in found)
+    assert not (tmp_path / "out").exists()
+
+
+def test_every_connector_that_joins_nothing_is_reported_at_once(tmp_path: Path,
+                                                                capsys: pytest.CaptureFixture[str]) -> None:
+    text = (CASES / "headlamp" / "model.xmi").read_text(encoding="utf-8")
+    # two connectors whose ends are swapped to the same side: each joins two inputs or two outputs
+    ends = re.findall(r'<end xmi:type="uml:ConnectorEnd" xmi:id="[^"]+" partWithPort="([^"]+)" role="([^"]+)"/>', text)
+    assert len(ends) >= 4
+    broken = text
+    for first, second in ((ends[0], ends[1]), (ends[2], ends[3])):
+        # the second end becomes a copy of the first: an output joined to itself, no input
+        old = f'partWithPort="{second[0]}" role="{second[1]}"/>'
+        new = f'partWithPort="{first[0]}" role="{first[1]}"/>'
+        broken = broken.replace(old, new, 1)
+    (tmp_path / "model.xmi").write_text(broken, encoding="utf-8")
+    code, err = _generate(capsys, tmp_path / "model.xmi", tmp_path / "out")
+    assert code == 1
+    assert len([line for line in err if "[BND007]" in line]) == 2, err

@@ -61,6 +61,17 @@
     </xsl:if>
   </xsl:function>
 
+  <!-- The map f:fail-all takes for an error f:fail raised and xsl:catch
+       caught: $description is its "CODE: message [xmi:id=ID]" -->
+  <xsl:function name="f:error-map" as="map(*)">
+    <xsl:param name="description" as="xs:string"/>
+    <xsl:sequence select="map {
+        'code': substring-before($description, ': '),
+        'id': if (matches($description, '\[xmi:id=[^\]]*\]$', 's'))
+              then replace($description, '^.*\[xmi:id=([^\]]*)\]$', '$1', 's') else '',
+        'message': replace(substring-after($description, ': '), '\s*\[xmi:id=[^\]]*\]$', '', 's') }"/>
+  </xsl:function>
+
   <!-- Report warning $code about the element with id $id; the run goes on.
        Written as xsl:message "warning: CODE: MESSAGE [xmi:id=ID]", which the
        driver collects and locates like an error; other engines print it. -->

@@ -100,6 +100,8 @@
     xmlns:m="urn:robomda:xslt:mode"
     xmlns:t="urn:robomda:xslt:template"
     xmlns:mp="urn:robomda:xslt:mode:private"
+    xmlns:re="urn:robomda:error"
+    xmlns:err="http://www.w3.org/2005/xqt-errors"
     exclude-result-prefixes="#all">
 
   <xsl:include href="../common/errors.xsl"/>
@@ -438,17 +440,26 @@
         <xsl:choose>
           <xsl:when test="exists($tops)">
             <xsl:for-each select="$tops/pim:part[key('fp:id', @type, $root)/self::pim:component]">
-              <xsl:sequence select="fp:instance(., key('fp:id', @type, $root), .., $ees, $hosts)"/>
+              <xsl:try>
+                <xsl:sequence select="fp:instance(., key('fp:id', @type, $root), .., $ees, $hosts)"/>
+                <xsl:catch errors="re:*"><fp:error description="{$err:description}"/></xsl:catch>
+              </xsl:try>
             </xsl:for-each>
           </xsl:when>
           <xsl:otherwise>
             <xsl:for-each select="$components[not(@abstract = ('true', '1'))][pim:port or pim:realization]">
-              <xsl:sequence select="fp:instance((), ., (), $ees, $hosts)"/>
+              <xsl:try>
+                <xsl:sequence select="fp:instance((), ., (), $ees, $hosts)"/>
+                <xsl:catch errors="re:*"><fp:error description="{$err:description}"/></xsl:catch>
+              </xsl:try>
             </xsl:for-each>
           </xsl:otherwise>
         </xsl:choose>
       </xsl:document>
     </xsl:variable>
+    <!-- an error of one instance (a bad value: BND010, BND006 ...) does not
+         hide those of the others: each was caught, all are raised here -->
+    <xsl:sequence select="f:fail-all($instance-tree/fp:error ! f:error-map(@description))"/>
     <xsl:variable name="instances" as="element(pim:instance)*" select="$instance-tree/pim:instance"/>
     <xsl:variable name="same-names" as="map(*)*">
       <xsl:for-each-group select="$instances" group-by="@name">
@@ -464,10 +475,15 @@
                           ! (let $c := ., $r := fp:realizing-class(.) return $c/pim:port ! fp:port-problems(., $c, $r)))"/>
     <xsl:variable name="bound-tree" as="document-node()">
       <xsl:document>
-        <xsl:sequence select="$components[exists(key('fp:instance-by-component', @id, $instance-tree))]
-                              ! fp:bound-component(.)"/>
+        <xsl:for-each select="$components[exists(key('fp:instance-by-component', @id, $instance-tree))]">
+          <xsl:try>
+            <xsl:sequence select="fp:bound-component(.)"/>
+            <xsl:catch errors="re:*"><fp:error description="{$err:description}"/></xsl:catch>
+          </xsl:try>
+        </xsl:for-each>
       </xsl:document>
     </xsl:variable>
+    <xsl:sequence select="f:fail-all($bound-tree/fp:error ! f:error-map(@description))"/>
     <xsl:variable name="bound" as="element(pim:bound-component)*" select="$bound-tree/pim:bound-component"/>
     <!-- working tree: one fp:ip per instance data port -->
     <xsl:variable name="work" as="document-node()">
@@ -1033,20 +1049,24 @@
             </xsl:for-each>
           </xsl:for-each>
         </xsl:variable>
-        <xsl:if test="empty($found)">
-          <xsl:sequence select="f:fail('BND007', $k/@id, 'connector ''' || $k/@name
-              || ''' joins no output port to an input port of the same data type')"/>
-        </xsl:if>
         <xsl:sequence select="$found"/>
       </xsl:for-each>
     </xsl:variable>
-    <xsl:for-each-group select="$pairs" group-by="@r-instance || '.' || @r-dp">
-      <xsl:if test="count(distinct-values(current-group()/(@w-instance || '.' || @w-dp))) gt 1">
-        <xsl:sequence select="f:fail('BND008', current-group()[1]/@r-port,
-            'input port ' || current-grouping-key() || ' is fed by several output ports ('
-            || string-join(distinct-values(current-group()/(@w-instance || '.' || @w-dp)), ', ') || ')')"/>
-      </xsl:if>
-    </xsl:for-each-group>
+    <!-- every connector that joins nothing and every input fed twice, at once -->
+    <xsl:variable name="problems" as="map(*)*">
+      <xsl:for-each select="$connectors[not(@id = $pairs/@connector)]">
+        <xsl:sequence select="map { 'code': 'BND007', 'id': string(@id), 'message': 'connector ''' || @name
+            || ''' joins no output port to an input port of the same data type' }"/>
+      </xsl:for-each>
+      <xsl:for-each-group select="$pairs" group-by="@r-instance || '.' || @r-dp">
+        <xsl:if test="count(distinct-values(current-group()/(@w-instance || '.' || @w-dp))) gt 1">
+          <xsl:sequence select="map { 'code': 'BND008', 'id': string(current-group()[1]/@r-port),
+              'message': 'input port ' || current-grouping-key() || ' is fed by several output ports ('
+              || string-join(distinct-values(current-group()/(@w-instance || '.' || @w-dp)), ', ') || ')' }"/>
+        </xsl:if>
+      </xsl:for-each-group>
+    </xsl:variable>
+    <xsl:sequence select="f:fail-all($problems)"/>
     <xsl:for-each-group select="$pairs" group-by="@w-instance || '.' || @w-dp">
       <xsl:variable name="g" as="element(fp:pair)+" select="current-group()"/>
       <xsl:variable name="ks" as="element(pim:connector)*"
