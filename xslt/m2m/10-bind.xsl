@@ -100,7 +100,6 @@
     xmlns:m="urn:robomda:xslt:mode"
     xmlns:t="urn:robomda:xslt:template"
     xmlns:mp="urn:robomda:xslt:mode:private"
-    xmlns:re="urn:robomda:error"
     xmlns:err="http://www.w3.org/2005/xqt-errors"
     exclude-result-prefixes="#all">
 
@@ -442,7 +441,7 @@
             <xsl:for-each select="$tops/pim:part[key('fp:id', @type, $root)/self::pim:component]">
               <xsl:try>
                 <xsl:sequence select="fp:instance(., key('fp:id', @type, $root), .., $ees, $hosts)"/>
-                <xsl:catch errors="re:*"><fp:error description="{$err:description}"/></xsl:catch>
+                <xsl:catch><xsl:sequence select="fp:caught($err:code, $err:description, $err:value)"/></xsl:catch>
               </xsl:try>
             </xsl:for-each>
           </xsl:when>
@@ -450,7 +449,7 @@
             <xsl:for-each select="$components[not(@abstract = ('true', '1'))][pim:port or pim:realization]">
               <xsl:try>
                 <xsl:sequence select="fp:instance((), ., (), $ees, $hosts)"/>
-                <xsl:catch errors="re:*"><fp:error description="{$err:description}"/></xsl:catch>
+                <xsl:catch><xsl:sequence select="fp:caught($err:code, $err:description, $err:value)"/></xsl:catch>
               </xsl:try>
             </xsl:for-each>
           </xsl:otherwise>
@@ -478,7 +477,7 @@
         <xsl:for-each select="$components[exists(key('fp:instance-by-component', @id, $instance-tree))]">
           <xsl:try>
             <xsl:sequence select="fp:bound-component(.)"/>
-            <xsl:catch errors="re:*"><fp:error description="{$err:description}"/></xsl:catch>
+            <xsl:catch><xsl:sequence select="fp:caught($err:code, $err:description, $err:value)"/></xsl:catch>
           </xsl:try>
         </xsl:for-each>
       </xsl:document>
@@ -520,6 +519,23 @@
       </xsl:for-each>
     </pim:binding>
   </xsl:template>
+
+  <!-- an error xsl:catch caught: ours (f:fail: a finding about the model)
+       as an fp:error element to raise with the others; anything else
+       (a bug) raised again as it was. No errors="re:*" on xsl:catch:
+       SaxonJS takes only QNames there -->
+  <xsl:function name="fp:caught" as="element(fp:error)">
+    <xsl:param name="code" as="xs:QName"/>
+    <xsl:param name="description" as="xs:string?"/>
+    <xsl:param name="value" as="item()*"/>
+    <xsl:sequence select="if (namespace-uri-from-QName($code) eq 'urn:robomda:error')
+                          then fp:error-element($description) else error($code, string($description), $value)"/>
+  </xsl:function>
+
+  <xsl:function name="fp:error-element" as="element(fp:error)">
+    <xsl:param name="description" as="xs:string?"/>
+    <fp:error description="{$description}"/>
+  </xsl:function>
 
   <!-- ============================================ deployment sequence -->
   <!-- the deployment-sequence dependencies of the model -->
