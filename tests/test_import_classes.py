@@ -174,6 +174,17 @@ def test_components_nested_in_an_ea_node() -> None:
     _one(doc, "//p:platform/p:node[@id='EAID_NODE']")
 
 
+def test_a_component_nested_in_a_node_runs_on_it() -> None:
+    """A component owned by a Node (no Deployment) was imported but deployed nowhere (BND006 with
+    two execution environments): it runs on the node that owns it."""
+    doc, found = _pim("nested-deployed.uml")
+    assert _one(doc, "//p:application//p:component[@id='ndC1']").get("node") == "ndN1"
+    placed = {i.get("name"): (i.get("host"), i.get("execution-environment"))
+              for i in doc.xpath("//p:binding/p:instance", namespaces=NS)}
+    assert placed == {"Tracker": ("ndN1", "ndE1"), "Viewer": ("ndN2", "ndE2")}
+    assert not [d for d in found if d.severity == "error"]
+
+
 # ------------------------------------------------------------ class 6
 def test_a_middleware_stereotype_means_its_default_kind() -> None:
     done = check(DATA / "middleware-default.uml", "orocos")

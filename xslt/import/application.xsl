@@ -184,6 +184,11 @@
     <xsl:variable name="c" as="element()" select="."/>
     <pim:component id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}"
         abstract="{fp:bool(@isAbstract, false())}">
+      <!-- owned by a Node (EA nests components in the node they run on;
+           Visual Paradigm writes them as the node's deployments) -->
+      <xsl:for-each select="ancestor::*[@x:type = $node-metas][1]">
+        <xsl:attribute name="node" select="fp:id(.)"/>
+      </xsl:for-each>
       <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
       <xsl:variable name="realizations" as="element()*"
           select="realization[@x:type eq 'ComponentRealization']

@@ -758,7 +758,17 @@
     <xsl:variable name="artifact-ids" as="xs:string*"
         select="key('fp:manifestation-by-element', $ids, $root)/../@id ! string(.)"/>
     <xsl:sequence select="(key('fp:deployment-by-deployed', ($ids, $artifact-ids), $root) ! fp:deployment-ee(.),
+                           fp:owner-ee($c),
                            if (count($ees) eq 1) then $ees else ())[1]"/>
+  </xsl:function>
+
+  <!-- the execution environment of the node that owns component $c in
+       the XMI (EA nests a component in the node it runs on): the node
+       itself, else the first one nested in it -->
+  <xsl:function name="fp:owner-ee" as="element(pim:node)?">
+    <xsl:param name="c" as="element(pim:component)"/>
+    <xsl:variable name="node" as="element(pim:node)?" select="$c/@node ! key('fp:id', ., root($c))[self::pim:node]"/>
+    <xsl:sequence select="($node[@kind eq 'execution-environment'], $node//pim:node[@kind eq 'execution-environment'])[1]"/>
   </xsl:function>
 
   <!-- BND006 about the instance of $part / $c -->
