@@ -39,3 +39,19 @@ def test_closing_tags_short_lines_and_declarations_do_not_make_a_block(tmp_path)
     for n in range(2):
         (tmp_path / f"s{n}.xsl").write_text(body + "\n", encoding="utf-8")
     assert dup.find_blocks(tmp_path) == {}
+
+
+def test_no_private_function_is_defined_twice_under_xslt() -> None:
+    """A helper two stages need lives once (xslt/common/, xslt/m2t/common/): no fp: function is
+    declared in two stylesheet modules, even where the two never meet in one transform."""
+    import re
+    from collections import defaultdict
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[1] / "xslt"
+    where = defaultdict(list)
+    for path in sorted(root.rglob("*.xsl")):
+        for name in re.findall(r'<xsl:function\s+name="(fp:[^"]+)"', path.read_text(encoding="utf-8")):
+            where[name].append(path.relative_to(root).as_posix())
+    twice = {name: paths for name, paths in where.items() if len(paths) > 1}
+    assert not twice, twice

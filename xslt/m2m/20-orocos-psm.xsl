@@ -72,6 +72,7 @@
     exclude-result-prefixes="#all">
 
   <xsl:include href="../common/errors.xsl"/>
+  <xsl:include href="../common/literals.xsl"/>
   <xsl:include href="../common/indent.xsl"/>
   <xsl:include href="../common/naming.xsl"/>
   <xsl:include href="../common/profile.xsl"/>
@@ -192,7 +193,7 @@
           </xsl:perform-sort>
         </xsl:variable>
         <xsl:for-each select="$in-start-order">
-          <xsl:sequence select="fp:instance(., $pkg, $b, $task-contexts, $targets)"/>
+          <xsl:sequence select="fp:oro-instance(., $pkg, $b, $task-contexts, $targets)"/>
         </xsl:for-each>
       </xsl:variable>
       <xsl:call-template name="t:indented-content">
@@ -224,17 +225,17 @@
   </xsl:function>
 
   <!-- ============================================================ types -->
-  <xsl:function name="fp:type" as="element(ty:type)?">
+  <xsl:function name="fp:oro-type" as="element(ty:type)?">
     <xsl:param name="typed" as="element()"/>
     <xsl:sequence select="if ($typed/@upper and not($typed/@upper = ('1', '')))
                           then () else key('fp:type', string($typed/@primitive), $fp:types)"/>
   </xsl:function>
 
-  <xsl:function name="fp:required-type" as="element(ty:type)">
+  <xsl:function name="fp:oro-required-type" as="element(ty:type)">
     <xsl:param name="typed" as="element()"/>
     <xsl:param name="id" as="xs:string?"/>
     <xsl:param name="what" as="xs:string"/>
-    <xsl:variable name="t" as="element(ty:type)?" select="fp:type($typed)"/>
+    <xsl:variable name="t" as="element(ty:type)?" select="fp:oro-type($typed)"/>
     <xsl:sequence select="if (exists($t) and ($t/@primitive ne 'void' or $what eq 'result'))
         then $t
         else f:fail('ORO001', $id, $what || ' has type ''' || ($typed/@type-name, $typed/@primitive, '?')[1]
@@ -243,7 +244,7 @@
                      || string-join($fp:types//ty:type[@primitive ne 'void']/@primitive, ', ') || ')')"/>
   </xsl:function>
 
-  <xsl:function name="fp:doc" as="element(o:doc)?">
+  <xsl:function name="fp:oro-doc" as="element(o:doc)?">
     <xsl:param name="e" as="element()?"/>
     <xsl:for-each select="$e/pim:doc[normalize-space(.)]">
       <o:doc><xsl:value-of select="normalize-space(.)"/></o:doc>
@@ -262,7 +263,7 @@
     <o:task-context xmi-id="{$c/@id}" name="{$c/@name}" class="{$class}" namespace="{$pkg}"
                     type-name="{$pkg}::{$class}" kind="{if ($r) then 'wrapper' else 'base'}"
                     generated-class="{if ($r) then $class else $class || 'Base'}">
-      <xsl:sequence select="fp:doc($c)"/>
+      <xsl:sequence select="fp:oro-doc($c)"/>
       <xsl:if test="$r">
         <xsl:variable name="n" as="xs:string"
             select="string-join(tokenize($bc/@cpp-name, '::')[normalize-space(.)] ! f:cpp-identifier(.), '::')"/>
@@ -286,7 +287,7 @@
       <xsl:for-each select="$bc/pim:data-port">
         <xsl:variable name="port" as="element(pim:port)" select="key('fp:id', @port, root($bc))"/>
         <xsl:variable name="t" as="element(ty:type)"
-            select="fp:required-type(., @port, 'port ''' || @port-name || ''' (datum ''' || @datum-name || ''' of interface ''' || @interface-name || ''')')"/>
+            select="fp:oro-required-type(., @port, 'port ''' || @port-name || ''' (datum ''' || @datum-name || ''' of interface ''' || @interface-name || ''')')"/>
         <xsl:variable name="acc" as="xs:string"
             select="(if (@direction eq 'out') then 'get' else 'set') || f:upper-first(f:cpp-identifier(@datum-name))"/>
         <!-- an input port triggers updateHook (event port) only where some
@@ -298,7 +299,7 @@
                 name="{@name}" member="port_{@name}" interface="{@interface-name}" datum="{@datum-name}"
                 accessor="{$acc}" accessor-declared="{exists($callable[@name eq $acc])}"
                 primitive="{$t/@primitive}" cpp-type="{$t/@cpp}" xml-type="{$t/@xml}" sample="{$t/@sample}">
-          <xsl:sequence select="fp:doc($port)"/>
+          <xsl:sequence select="fp:oro-doc($port)"/>
         </o:port>
       </xsl:for-each>
       <xsl:for-each select="$owner/pim:operation[@visibility eq 'protected'][not(@static = ('true', '1'))]
@@ -314,7 +315,7 @@
         <xsl:otherwise>
           <xsl:sequence select="$owner/pim:attribute[@visibility = ('public', 'protected')]
                                   [not(@static = ('true', '1'))][not(@read-only = ('true', '1'))]
-                                  [not(@name = $fp:convention-names)][exists(fp:type(.))][@primitive ne 'void']
+                                  [not(@name = $fp:convention-names)][exists(fp:oro-type(.))][@primitive ne 'void']
                                 ! fp:property(., false())"/>
         </xsl:otherwise>
       </xsl:choose>
@@ -330,34 +331,26 @@
                 else if ($op/@query = ('true', '1')) then 'RTT::ClientThread' else 'RTT::OwnThread'"/>
     <xsl:variable name="ret" as="element(pim:parameter)?" select="$op/pim:parameter[@direction eq 'return'][1]"/>
     <xsl:variable name="rt" as="element(ty:type)"
-        select="if ($ret) then fp:required-type($ret, $op/@id, 'result of operation ''' || $op/@name || '''')
+        select="if ($ret) then fp:oro-required-type($ret, $op/@id, 'result of operation ''' || $op/@name || '''')
                 else key('fp:type', 'void', $fp:types)"/>
     <o:operation xmi-id="{$op/@id}" name="{f:cpp-identifier($op/@name)}" thread="{$thread}"
                  return-type="{$rt/@cpp}" return-primitive="{$rt/@primitive}" return-sample="{$rt/@sample}">
-      <xsl:sequence select="fp:doc($op)"/>
+      <xsl:sequence select="fp:oro-doc($op)"/>
       <xsl:for-each select="$op/pim:parameter[@direction ne 'return']">
         <xsl:variable name="t" as="element(ty:type)"
-            select="fp:required-type(., @id, 'parameter ''' || @name || ''' of operation ''' || $op/@name || '''')"/>
+            select="fp:oro-required-type(., @id, 'parameter ''' || @name || ''' of operation ''' || $op/@name || '''')"/>
         <o:parameter xmi-id="{@id}" name="{f:cpp-identifier((@name[normalize-space(.)], 'arg' || position())[1])}"
                      direction="{@direction}" primitive="{$t/@primitive}" cpp-type="{$t/@cpp}" xml-type="{$t/@xml}"
                      decl-type="{if (@direction = ('out', 'inout')) then $t/@cpp || '&amp;'
                                  else if ($t/@pass eq 'cref') then 'const ' || $t/@cpp || '&amp;' else $t/@cpp}">
-          <xsl:sequence select="fp:doc(.)"/>
+          <xsl:sequence select="fp:oro-doc(.)"/>
         </o:parameter>
       </xsl:for-each>
     </o:operation>
   </xsl:function>
 
-  <!-- ================================================= property values -->
-  <xsl:function name="fp:cpp-string" as="xs:string">
-    <xsl:param name="v" as="xs:string"/>
-    <xsl:sequence select="'&quot;' || (if (contains($v, '\') or contains($v, '&quot;') or contains($v, '&#10;'))
-                                       then replace(replace(replace($v, '\\', '\\\\'), '&quot;', '\\&quot;'), '&#10;', '\\n')
-                                       else $v) || '&quot;'"/>
-  </xsl:function>
-
   <!-- (xml value, script literal, C++ literal) of a default value -->
-  <xsl:function name="fp:values" as="xs:string+">
+  <xsl:function name="fp:oro-values" as="xs:string+">
     <xsl:param name="v" as="xs:string"/>
     <xsl:param name="t" as="element(ty:type)"/>
     <xsl:param name="id" as="xs:string"/>
@@ -390,9 +383,9 @@
     <xsl:param name="a" as="element(pim:attribute)"/>
     <xsl:param name="explicit" as="xs:boolean"/>
     <xsl:variable name="t" as="element(ty:type)"
-        select="fp:required-type($a, $a/@id, 'property ''' || $a/@name || '''')"/>
+        select="fp:oro-required-type($a, $a/@id, 'property ''' || $a/@name || '''')"/>
     <xsl:variable name="vals" as="xs:string*"
-        select="if ($a/@default) then fp:values($a/@default, $t, $a/@id) else ()"/>
+        select="if ($a/@default) then fp:oro-values($a/@default, $t, $a/@id) else ()"/>
     <o:property xmi-id="{$a/@id}" name="{f:cpp-identifier($a/@name)}" member="{f:cpp-identifier($a/@name)}"
                 primitive="{$t/@primitive}" cpp-type="{$t/@cpp}" xml-type="{$t/@xml}"
                 cpp-default="{($vals[3], $t/@sample)[1]}">
@@ -400,12 +393,12 @@
         <xsl:attribute name="xml-default" select="$vals[1]"/>
         <xsl:attribute name="script-default" select="$vals[2]"/>
       </xsl:if>
-      <xsl:sequence select="fp:doc($a)"/>
+      <xsl:sequence select="fp:oro-doc($a)"/>
     </o:property>
   </xsl:function>
 
   <!-- ========================================================= instance -->
-  <xsl:function name="fp:instance" as="element(o:instance)">
+  <xsl:function name="fp:oro-instance" as="element(o:instance)">
     <xsl:param name="i" as="element(pim:instance)"/>
     <xsl:param name="pkg" as="xs:string"/>
     <xsl:param name="b" as="element(pim:binding)"/>

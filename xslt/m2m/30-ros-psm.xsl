@@ -95,7 +95,6 @@
   <xsl:key name="fp:id" match="*[@id]" use="@id"/>
   <xsl:key name="fp:type-by-primitive" match="ty:type[@primitive]" use="@primitive"/>
   <xsl:key name="fp:type-by-name" match="ty:type[@type-name]" use="@type-name"/>
-  <xsl:key name="fp:instance" match="pim:instance" use="@name"/>
   <xsl:key name="fp:instance-of" match="pim:instance" use="@component"/>
   <xsl:key name="fp:host" match="pim:host" use="@xmi-id"/>
   <xsl:key name="fp:connection-by-end" match="pim:connection"
@@ -203,7 +202,7 @@
           </r:topic>
         </xsl:for-each>
         <xsl:for-each select="$b/pim:instance">
-          <xsl:sequence select="fp:instance(., $nodes, $host-keys)"/>
+          <xsl:sequence select="fp:ros-instance(., $nodes, $host-keys)"/>
         </xsl:for-each>
       </xsl:variable>
       <xsl:call-template name="t:indented-content">
@@ -286,7 +285,7 @@
     </xsl:choose>
   </xsl:function>
 
-  <xsl:function name="fp:doc" as="element(r:doc)?">
+  <xsl:function name="fp:ros-doc" as="element(r:doc)?">
     <xsl:param name="e" as="element()?"/>
     <xsl:for-each select="$e/pim:doc[normalize-space(.)]">
       <r:doc><xsl:value-of select="normalize-space(.)"/></r:doc>
@@ -312,7 +311,7 @@
             kind="{if ($r) then 'wrapper' else 'base'}" generated-class="{if ($r) then $class else $class || 'Base'}"
             executable="{f:snake-case($c/@name)}_node" default-name="{f:snake-case($c/@name)}"
             period="{($instances/pim:activity/@period)[1]}">
-      <xsl:sequence select="fp:doc($c)"/>
+      <xsl:sequence select="fp:ros-doc($c)"/>
       <xsl:if test="$r">
         <xsl:variable name="n" as="xs:string"
             select="string-join(tokenize($bc/@cpp-name, '::')[normalize-space(.)] ! f:cpp-identifier(.), '::')"/>
@@ -340,7 +339,7 @@
                 member="{if (@direction eq 'out') then 'pub_' else 'sub_'}{@name}_"
                 interface="{@interface-name}" datum="{@datum-name}"
                 accessor="{$acc}" accessor-declared="{exists($callable[@name eq $acc])}">
-          <xsl:sequence select="fp:doc($port)"/>
+          <xsl:sequence select="fp:ros-doc($port)"/>
           <xsl:sequence select="fp:message(.)"/>
           <xsl:sequence select="fp:qos($links[1]/pim:policy)"/>
         </r:port>
@@ -388,7 +387,7 @@
       <xsl:when test="exists($srv)">
         <r:service xmi-id="{$op/@id}" name="{f:cpp-identifier($op/@name)}" srv="{$srv}"
                    returns-bool="{$bool-ret}" member="srv_{f:cpp-identifier($op/@name)}_">
-          <xsl:sequence select="fp:doc($op)"/>
+          <xsl:sequence select="fp:ros-doc($op)"/>
         </r:service>
       </xsl:when>
     </xsl:choose>
@@ -446,12 +445,12 @@
     <r:parameter xmi-id="{$a/@id}" name="{f:cpp-identifier($a/@name)}" member="{f:cpp-identifier($a/@name)}"
                  cpp-type="{$t/@cpp}" param1="{$t/@param1}" param2="{$t/@param2}"
                  cpp-default="{$vals[1]}" yaml-default="{$vals[2]}">
-      <xsl:sequence select="fp:doc($a)"/>
+      <xsl:sequence select="fp:ros-doc($a)"/>
     </r:parameter>
   </xsl:function>
 
   <!-- ========================================================= instance -->
-  <xsl:function name="fp:instance" as="element(r:instance)">
+  <xsl:function name="fp:ros-instance" as="element(r:instance)">
     <xsl:param name="i" as="element(pim:instance)"/>
     <xsl:param name="nodes" as="document-node()"/>
     <xsl:param name="host-keys" as="map(xs:string, xs:string)"/>

@@ -17,9 +17,10 @@
            One fs:file a line, as f:indent (common/indent.xsl) would indent
            the file set, written so directly (t:indented-content: no copy of
            all the text).
-  Params:  model-dir-from-output (xslt/m2t/orocos/params.xsl).
+  Params:  model-dir-from-output (xslt/m2t/common/text.xsl).
   Errors:  none (the PSM is complete and valid).
-  Modules: orocos-text.xsl (text helpers), orocos-cpp.xsl, orocos-build.xsl,
+  Modules: ../common/text.xsl (the text kit every target shares),
+           ../common/package-manifest.xsl, orocos-cpp.xsl, orocos-build.xsl,
            orocos-deploy.xsl.
 -->
 <xsl:stylesheet version="3.0"
@@ -34,14 +35,18 @@
     exclude-result-prefixes="#all">
 
   <xsl:include href="../../common/indent.xsl"/>
+  <xsl:include href="../common/text.xsl"/>
   <xsl:include href="../common/package-manifest.xsl"/>
-  <xsl:include href="params.xsl"/>
-  <xsl:include href="orocos-text.xsl"/>
   <xsl:include href="orocos-cpp.xsl"/>
   <xsl:include href="orocos-build.xsl"/>
   <xsl:include href="orocos-deploy.xsl"/>
 
   <xsl:output method="xml" indent="no" encoding="UTF-8" cdata-section-elements="fs:file"/>
+
+  <!-- the modules that write the files, as each file's banner names them -->
+  <xsl:variable name="fp:cpp-xsl" as="xs:string" select="'m2t/orocos/orocos-cpp.xsl'"/>
+  <xsl:variable name="fp:build-xsl" as="xs:string" select="'m2t/orocos/orocos-build.xsl'"/>
+  <xsl:variable name="fp:deploy-xsl" as="xs:string" select="'m2t/orocos/orocos-deploy.xsl'"/>
   <xsl:mode name="m:emit-files" on-no-match="fail"/>
 
   <!-- the file set comes out as f:indent (common/indent.xsl) would indent
@@ -110,13 +115,4 @@
     </fs:file>
   </xsl:function>
 
-  <xsl:function name="fp:file" as="element(fs:file)">
-    <xsl:param name="path" as="xs:string"/>
-    <xsl:param name="mode" as="xs:string"/>
-    <xsl:param name="stylesheet" as="xs:string"/>
-    <xsl:param name="text" as="xs:string"/>
-    <fs:file path="{$path}" mode="{$mode}" stylesheet="{$stylesheet}">
-      <xsl:value-of select="$text"/>
-    </fs:file>
-  </xsl:function>
 </xsl:stylesheet>

@@ -4,7 +4,7 @@
 
   Reads:   o:deployment of urn:robomda:psm-orocos:1.
   Writes:  strings (file contents), wrapped into fs:file by main.xsl.
-  Params:  model-dir-from-output (params.xsl).  Errors: none.
+  Params:  model-dir-from-output (../common/text.xsl).  Errors: none.
 
   The atomic-code library of each o:library is found through a cache
   variable <PKG>_<LIB>_DIR (PATH), defaulting to the artifact path: as is
@@ -28,19 +28,6 @@
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
     exclude-result-prefixes="#all">
-
-  <!-- "a/./b/" -> "a/b"; "." and "" -> "" -->
-  <xsl:function name="fp:clean-path" as="xs:string">
-    <xsl:param name="p" as="xs:string"/>
-    <xsl:sequence select="string-join(tokenize(translate($p, '\', '/'), '/')[position() eq 1 or . ne ''][. ne '.'], '/')"/>
-  </xsl:function>
-
-  <xsl:function name="fp:library-dir" as="xs:string">
-    <xsl:param name="lib" as="element(o:library)"/>
-    <xsl:variable name="base" as="xs:string" select="fp:clean-path($model-dir-from-output)"/>
-    <xsl:sequence select="if (xs:boolean($lib/@absolute)) then $lib/@path
-        else string-join(('${CMAKE_CURRENT_SOURCE_DIR}', $base[. ne ''], fp:clean-path($lib/@path)[. ne '']), '/')"/>
-  </xsl:function>
 
   <xsl:function name="fp:cmakelists" as="xs:string">
     <xsl:param name="d" as="element(o:deployment)"/>
@@ -73,7 +60,7 @@
         'include(${OROCOS-RTT_USE_FILE_PATH}/UseOROCOS-RTT.cmake)',
         '',
         'include_directories(${CMAKE_CURRENT_SOURCE_DIR}/include)',
-        $d/o:library ! fp:library-find(.),
+        $d/o:library ! fp:library-subdirectory(.),
         '',
         '# One component library with every component type (src/components.cpp).',
         concat('orocos_component(', $pkg, ' ', string-join($sources, ' '), ')'),
@@ -84,7 +71,7 @@
         'orocos_generate_package()'))"/>
   </xsl:function>
 
-  <xsl:function name="fp:library-find" as="xs:string*">
+  <xsl:function name="fp:library-subdirectory" as="xs:string*">
     <xsl:param name="lib" as="element(o:library)"/>
     <xsl:variable name="v" as="xs:string" select="concat('${', $lib/@cmake-var, '}')"/>
     <xsl:sequence select="

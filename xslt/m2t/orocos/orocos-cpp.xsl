@@ -26,23 +26,6 @@
     xmlns:fp="urn:robomda:xslt:function:private"
     exclude-result-prefixes="#all">
 
-  <xsl:function name="fp:guard" as="xs:string">
-    <xsl:param name="tc" as="element(o:task-context)"/>
-    <xsl:param name="class" as="xs:string"/>
-    <xsl:sequence select="concat(upper-case(concat($tc/@namespace, '_', replace(replace($class, '([a-z0-9])([A-Z])', '$1_$2'), '[^A-Za-z0-9_]', '_'))), '_HPP')"/>
-  </xsl:function>
-
-  <xsl:function name="fp:what" as="xs:string">
-    <xsl:param name="tc" as="element(o:task-context)"/>
-    <xsl:sequence select="concat('component ''', $tc/@name, ''' of model ''', $tc/../@model-name, '''')"/>
-  </xsl:function>
-
-  <xsl:function name="fp:doc-of" as="xs:string">
-    <xsl:param name="e" as="element()"/>
-    <xsl:param name="fallback" as="xs:string"/>
-    <xsl:sequence select="($e/o:doc/string(), $fallback)[1]"/>
-  </xsl:function>
-
   <xsl:function name="fp:signature" as="xs:string">
     <xsl:param name="op" as="element(o:operation)"/>
     <xsl:param name="with-names" as="xs:boolean"/>
@@ -104,7 +87,7 @@
   <xsl:function name="fp:cpp-header" as="xs:string">
     <xsl:param name="tc" as="element(o:task-context)"/>
     <xsl:variable name="cls" as="xs:string" select="$tc/@generated-class"/>
-    <xsl:variable name="guard" as="xs:string" select="fp:guard($tc, $cls)"/>
+    <xsl:variable name="guard" as="xs:string" select="fp:guard($tc/@namespace, $cls)"/>
     <xsl:variable name="wrapper" as="xs:boolean" select="$tc/@kind eq 'wrapper'"/>
     <xsl:sequence select="fp:lines((
         fp:banner('// ', $fp:cpp-xsl, fp:what($tc), false()),
@@ -224,7 +207,7 @@
   <xsl:function name="fp:user-header" as="xs:string">
     <xsl:param name="tc" as="element(o:task-context)"/>
     <xsl:variable name="cls" as="xs:string" select="$tc/@class"/>
-    <xsl:variable name="guard" as="xs:string" select="fp:guard($tc, $cls)"/>
+    <xsl:variable name="guard" as="xs:string" select="fp:guard($tc/@namespace, $cls)"/>
     <xsl:sequence select="fp:lines((
         fp:banner('// ', $fp:cpp-xsl, fp:what($tc), true()),
         concat('#ifndef ', $guard),

@@ -120,7 +120,7 @@
         ' type=&quot;', $type, '&quot;&gt;&lt;value&gt;', fp:xml-text($value), '&lt;/value&gt;&lt;/simple&gt;')"/>
   </xsl:function>
 
-  <xsl:function name="fp:ends" as="xs:string*">
+  <xsl:function name="fp:connection-ends" as="xs:string*">
     <xsl:param name="k" as="element(o:connection)"/>
     <xsl:sequence select="for $w in $k/o:writer, $r in $k/o:reader
                           return (concat($w/@instance, '.', $w/@port), concat($r/@instance, '.', $r/@port))"/>
@@ -279,7 +279,7 @@
           concat('cp_', @name, '.lock_policy = ', @lock-policy),
           concat('cp_', @name, '.init = ', @init),
           concat('cp_', @name, '.pull = ', @pull),
-          let $k := ., $e := fp:ends(.)
+          let $k := ., $e := fp:connection-ends(.)
           return for $j in 1 to count($e) idiv 2
                  return concat('connect(', fp:cpp-string($e[2 * $j - 1]), ', ', fp:cpp-string($e[2 * $j]), ', cp_', $k/@name, ')')),
         '',
@@ -392,7 +392,7 @@
           concat('    cp.lock_policy = rtt.globals.', @lock-policy),
           concat('    cp.init = ', @init),
           concat('    cp.pull = ', @pull),
-          let $e := fp:ends(.)
+          let $e := fp:connection-ends(.)
           return for $j in 1 to count($e) idiv 2
                  return concat('    check(depl:connect(', fp:cpp-string($e[2 * $j - 1]), ', ', fp:cpp-string($e[2 * $j]),
                          ', cp), &quot;connect ', $e[2 * $j - 1], ' -&gt; ', $e[2 * $j], '&quot;)'),

@@ -51,7 +51,7 @@
         ')',
         '',
         'include_directories(include ${catkin_INCLUDE_DIRS})',
-        $p/r:library ! fp:library-find(.),
+        $p/r:library ! fp:library-external-project(.),
         for $n in $p/r:node return (
           '',
           concat('# node of component ', $n/@name, ': executable ', $n/@executable),

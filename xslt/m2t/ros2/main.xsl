@@ -29,6 +29,7 @@
     exclude-result-prefixes="#all">
 
   <xsl:include href="../../common/indent.xsl"/>
+  <xsl:include href="../common/text.xsl"/>
   <xsl:include href="../common/package-manifest.xsl"/>
   <xsl:include href="../../common/naming.xsl"/>
   <xsl:include href="../ros-common/ros-text.xsl"/>

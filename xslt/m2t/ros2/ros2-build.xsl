@@ -46,7 +46,7 @@
           concat('rosidl_generate_interfaces(${PROJECT_NAME} ', string-join($p/r:message-file ! (concat('&quot;msg/', @name, '.msg&quot;')), ' '), ')'),
           'rosidl_get_typesupport_target(${PROJECT_NAME}_msgs_cpp ${PROJECT_NAME} &quot;rosidl_typesupport_cpp&quot;)')
         else (),
-        $p/r:library ! fp:library-find(.),
+        $p/r:library ! fp:library-external-project(.),
         '',
         '# every node class, as rclcpp components',
         concat('add_library(', $lib, ' SHARED ', string-join($p/r:node ! (concat('src/', @class, '.cpp')), ' '), ')'),
