@@ -14,6 +14,7 @@ from pathlib import Path
 
 import pytest
 
+from robomda.api import targets
 from robomda.cli import main
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -73,7 +74,7 @@ def test_json_and_sarif_carry_the_same_findings(case: str, capsys: pytest.Captur
 
 
 @pytest.mark.parametrize("case", CORPUS)
-@pytest.mark.parametrize("target", ["orocos", "ros1", "ros2"])
+@pytest.mark.parametrize("target", targets())
 def test_generate_never_crashes(case: str, target: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     code, out, err = _run(capsys, ["generate", f"fixtures/broken/{case}/model.xmi", "-o", str(tmp_path / "out"),
                                    "-t", target])

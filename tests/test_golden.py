@@ -15,11 +15,11 @@ from pathlib import Path
 import pytest
 from lxml import etree
 
-from robomda.api import generate
+from robomda.api import generate, targets
 
 ROOT = Path(__file__).resolve().parent.parent
 CASES = sorted(p.parent for p in (ROOT / "fixtures" / "cases").glob("*/model.xmi"))
-TARGETS = ["orocos", "ros1", "ros2"]
+TARGETS = targets()  # from the pipeline manifests
 FS = "{urn:robomda:fileset:1}"
 
 

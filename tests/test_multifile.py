@@ -16,7 +16,7 @@ from pathlib import Path
 import pytest
 from lxml import etree
 
-from robomda.api import generate, import_model
+from robomda.api import generate, import_model, targets
 from robomda.batch import run_batch
 from robomda.cli import main
 from robomda.diagnostics import RobomdaError
@@ -58,7 +58,7 @@ def test_the_system_keeps_its_connectors_and_parts_from_other_files() -> None:
                            "referenceTorqueConn": ({"controller"}, {"robot"})}
 
 
-@pytest.mark.parametrize("target", ["orocos", "ros1", "ros2"])
+@pytest.mark.parametrize("target", targets())
 def test_every_target_generates_the_split_model(target: str) -> None:
     done = generate(SPLIT / "model.xmi", SPLIT / "out", target, write=False)
     assert not [w for w in done.warnings if w.code.startswith("IMP")]

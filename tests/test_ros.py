@@ -22,13 +22,14 @@ import pytest
 import xmlschema
 from lxml import etree
 
-from robomda.api import generate, import_model
+from robomda.api import generate, import_model, targets
+from robomda.resources import target_of_middleware
 
 ROOT = Path(__file__).resolve().parent.parent
 # every case, and the ROS-only fixtures (fixtures/ros: models the Orocos target refuses)
 CASES = sorted(p.parent for p in [*(ROOT / "fixtures" / "cases").glob("*/model.xmi"),
                                   *(ROOT / "fixtures" / "ros").glob("*/model.xmi")])
-TARGETS = ["ros1", "ros2"]
+TARGETS = [t for t in targets() if any(m.startswith("ROS") for m, s in target_of_middleware().items() if s == t)]
 FS = "{urn:robomda:fileset:1}"
 SYS_PY = "/usr/bin/python3"
 REGEN = os.environ.get("ROBOMDA_REGEN_ROS") == "1"

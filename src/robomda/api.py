@@ -15,7 +15,7 @@ from robomda import pipeline as pipelines
 from robomda.diagnostics import EXIT_FINDINGS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, Diagnostic, RobomdaError
 from robomda.engine import Engine
 from robomda.output import WriteReport, write_fileset
-from robomda.resources import available_targets, pipeline_path
+from robomda.resources import available_targets, default_target, pipeline_path, target_of_middleware
 
 __all__ = ["generate", "import_model", "check", "targets", "default_targets", "Generated", "Checked", "PackageInfo"]
 
@@ -60,9 +60,6 @@ class Checked:
 
 
 # the middleware an instance is deployed on -> the target that generates for it
-_TARGET_OF_MIDDLEWARE = {"OROCOS": "orocos", "ROS": "ros1", "ROS2": "ros2"}
-
-
 def _check_readable(model: Path) -> None:
     """Fail with a diagnostic when ``model`` is not a file (well-formedness: :func:`_run`)."""
     if not model.is_file():
@@ -248,7 +245,7 @@ def check(model: Path | str, target: str | None = None, *, package_name: str = "
         shared = run_until_text("check")
         if shared is None:
             return Checked(diagnostics, ["model"], exit_code, rule_sets)
-        chosen = _targets_of(shared.tree) or [DEFAULT_TARGET]
+        chosen = _targets_of(shared.tree) or [default_target()]
         diagnostics.clear()  # the targets' runs repeat the shared findings
     for name in chosen:
         run_until_text(name)
@@ -275,15 +272,13 @@ def _rule_ids(rules: Path) -> frozenset[str]:
                                 namespaces={"sch": "http://purl.oclc.org/dsdl/schematron"}))
 
 
-DEFAULT_TARGET = "orocos"
-
-
 def _targets_of(bound_pim: etree._Element | None) -> list[str]:
     """The targets of the middlewares the instances of a bound PIM are deployed on, in target order."""
     if bound_pim is None:
         return []
     deployed = {i.get("middleware") for i in bound_pim.iter("{urn:robomda:pim:1}instance")}
-    return [t for m, t in _TARGET_OF_MIDDLEWARE.items() if m in deployed]
+    served = target_of_middleware()
+    return [t for t in available_targets() if any(served.get(m) == t for m in deployed)]
 
 
 def default_targets(model: Path | str, model_path: Sequence[Path | str] = ()) -> list[str]:
@@ -292,7 +287,7 @@ def default_targets(model: Path | str, model_path: Sequence[Path | str] = ()) ->
     _check_readable(model)
     bound = _run(pipelines.load(pipeline_path("import")), model,
                  _context(model, None, "", model_path=_model_path(model_path)))
-    return _targets_of(bound.tree) or [DEFAULT_TARGET]
+    return _targets_of(bound.tree) or [default_target()]
 
 
 def _add(into: list[Diagnostic], found: list[Diagnostic]) -> None:

@@ -8,9 +8,12 @@ paths hold.
 
 from __future__ import annotations
 
+import functools
 from pathlib import Path
 
-__all__ = ["resource_root", "pipeline_path", "available_targets"]
+from lxml import etree
+
+__all__ = ["resource_root", "pipeline_path", "available_targets", "target_of_middleware", "default_target"]
 
 
 def resource_root() -> Path:
@@ -27,7 +30,31 @@ def pipeline_path(name: str) -> Path:
     return resource_root() / "pipelines" / f"{name}.xml"
 
 
+_PIPELINE_NS = "{urn:robomda:pipeline:1}"
+
+
+@functools.lru_cache(maxsize=None)
+def _manifests() -> tuple[tuple[str, tuple[str, ...], bool], ...]:
+    """(name, middlewares served, default) of every target, by name: the pipelines that yield files."""
+    found = []
+    for path in sorted((resource_root() / "pipelines").glob("*.xml")):
+        root = etree.parse(str(path)).getroot()
+        if root.tag == f"{_PIPELINE_NS}pipeline" and root.get("yields") == "files":
+            found.append((path.stem, tuple((root.get("serves") or "").split()),
+                          root.get("default") in ("true", "1")))
+    return tuple(found)
+
+
 def available_targets() -> list[str]:
     """Targets = pipelines that yield files (not ``import`` or ``check``, which yield a model)."""
-    return sorted(p.stem for p in (resource_root() / "pipelines").glob("*.xml")
-                  if 'yields="files"' in p.read_text(encoding="utf-8"))
+    return [name for name, _, _ in _manifests()]
+
+
+def target_of_middleware() -> dict[str, str]:
+    """Middleware name (as the PIM writes it: OROCOS, ROS, ROS2 ...) -> the target that serves it."""
+    return {middleware: name for name, serves, _ in _manifests() for middleware in serves}
+
+
+def default_target() -> str:
+    """The target for a model deployed on no middleware a target serves (the manifest marked default)."""
+    return next(name for name, _, default in _manifests() if default)
