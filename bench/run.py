@@ -97,7 +97,10 @@ def _batch(count: int, java_models: int, workdir: Path) -> list[str]:
     from robomda import pipeline
     from robomda.resources import pipeline_path
 
-    cases = sorted((ROOT / "fixtures" / "cases").glob("*/model*.xmi"))
+    from robomda.diagnostics import linked_files
+
+    # models in one file: a copy alone in its folder is the whole model
+    cases = [m for m in sorted((ROOT / "fixtures" / "cases").glob("*/model*.xmi")) if not linked_files(m)]
     src = workdir / "batch"
     for i in range(count):
         model = cases[i % len(cases)]

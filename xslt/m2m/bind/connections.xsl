@@ -1,0 +1,141 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/m2m/bind/connections.xsl - bind (xslt/m2m/10-bind.xsl): connection points from assembly connectors or shared interfaces, with their policies.
+
+  Reads:   the PIM (urn:robomda:pim:1) and the working trees of fp:binding.
+  Writes:  parts of pim:binding (schemas/pim/1/binding.xsd), or values.
+  Params:  none.  Keys: those of 10-bind.xsl.
+  Provides: fp:policy, fp:policy-of, fp:connection-name, fp:connections-from-interfaces,
+           fp:connections-from-connectors.
+  Errors:  BND007 a connector that joins nothing, BND008 an input fed twice (raised together).
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:map="http://www.w3.org/2005/xpath-functions/map"
+    xmlns:pim="urn:robomda:pim:1"
+    xmlns:f="urn:robomda:xslt:function"
+    xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:m="urn:robomda:xslt:mode"
+    xmlns:t="urn:robomda:xslt:template"
+    xmlns:mp="urn:robomda:xslt:mode:private"
+    xmlns:err="http://www.w3.org/2005/xqt-errors"
+    exclude-result-prefixes="#all">
+
+  <!-- ==================================================== connections -->
+  <!-- the policy of a connection that no ConnectionPolicy stereotype
+       configures; its attributes are also the value of each tag a
+       stereotype leaves out -->
+  <xsl:variable name="fp:default-policy" as="element(pim:policy)">
+    <pim:policy type="DATA" size="1" lock-policy="LOCK_FREE" init="false" pull="false" topic="" source="default"/>
+  </xsl:variable>
+
+  <xsl:function name="fp:policy" as="element(pim:policy)">
+    <xsl:param name="candidates" as="element()*"/>
+    <xsl:variable name="e" as="element()?" select="$candidates[exists(f:stereotype(., 'ConnectionPolicy'))][1]"/>
+    <xsl:sequence select="if (empty($e)) then $fp:default-policy else fp:policy-of($e)"/>
+  </xsl:function>
+
+  <!-- the policy given by the ConnectionPolicy stereotype of $e -->
+  <xsl:function name="fp:policy-of" as="element(pim:policy)">
+    <xsl:param name="e" as="element()"/>
+    <!-- the stereotype application holds the values: errors point at it -->
+    <xsl:variable name="id" as="xs:string?" select="(f:stereotype($e, 'ConnectionPolicy')/@id, $e/@id)[1]"/>
+    <xsl:variable name="default" as="element(pim:policy)" select="$fp:default-policy"/>
+    <xsl:variable name="type" as="xs:string"
+        select="fp:enum((fp:tag($e, 'ConnectionPolicy', 'type')[normalize-space(.)], $default/@type)[1],
+                        ('DATA', 'BUFFER', 'CIRCULAR_BUFFER'), 'connection type', $id)"/>
+    <pim:policy type="{$type}"
+        size="{let $s := fp:tag($e, 'ConnectionPolicy', 'size')[normalize-space(.)]
+               return if (exists($s)) then fp:integer($s, 'size', $id) else $default/@size}"
+        lock-policy="{fp:enum((fp:tag($e, 'ConnectionPolicy', 'lockPolicy')[normalize-space(.)], $default/@lock-policy)[1],
+                             ('UNSYNC', 'LOCKED', 'LOCK_FREE'), 'lock policy', $id)}"
+        init="{fp:boolean((fp:tag($e, 'ConnectionPolicy', 'init')[normalize-space(.)], $default/@init)[1], 'init', $id)}"
+        pull="{fp:boolean((fp:tag($e, 'ConnectionPolicy', 'pull')[normalize-space(.)], $default/@pull)[1], 'pull', $id)}"
+        topic="{fp:tag($e, 'ConnectionPolicy', 'topic')}"
+        source="{if ($e/self::pim:connector) then 'connector'
+                 else if ($e/self::pim:port) then 'port' else 'interface'}"
+        source-element="{$e/@id}" holder="{$id}"/>
+  </xsl:function>
+
+  <xsl:function name="fp:connection-name" as="xs:string">
+    <xsl:param name="connector" as="element(pim:connector)?"/>
+    <xsl:param name="interface" as="element(pim:interface)"/>
+    <xsl:sequence select="if (normalize-space($connector/@name)) then f:cpp-identifier($connector/@name)
+                          else f:cpp-identifier($interface/@name || 'Conn')"/>
+  </xsl:function>
+
+  <!-- ball-and-socket: one connection point per interface -->
+  <xsl:function name="fp:connections-from-interfaces" as="element(pim:connection)*">
+    <xsl:param name="model" as="element(pim:model)"/>
+    <xsl:param name="work" as="document-node()"/>
+    <xsl:variable name="root" as="document-node()" select="root($model[1])"/>
+    <xsl:for-each select="$model/pim:application//pim:interface">
+      <xsl:variable name="ips" as="element(fp:ip)*" select="key('fp:ip-by-interface', @id, $work)"/>
+      <xsl:variable name="w" as="element(fp:ip)*" select="$ips[@direction eq 'out']"/>
+      <xsl:variable name="r" as="element(fp:ip)*" select="$ips[@direction eq 'in']"/>
+      <xsl:if test="exists($w) and exists($r)">
+        <pim:connection name="{fp:connection-name((), .)}" xmi-id="{@id}" interface="{@id}">
+          <xsl:sequence select="fp:policy((key('fp:id', ($w, $r)/@port, $root), .))"/>
+          <xsl:for-each select="$w"><pim:writer instance="{@instance}" port="{@port}" data-port="{@data-port}"/></xsl:for-each>
+          <xsl:for-each select="$r"><pim:reader instance="{@instance}" port="{@port}" data-port="{@data-port}"/></xsl:for-each>
+        </pim:connection>
+      </xsl:if>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- connector mode: writer->reader pairs grouped by writer port -->
+  <xsl:function name="fp:connections-from-connectors" as="element(pim:connection)*">
+    <xsl:param name="connectors" as="element(pim:connector)*"/>
+    <xsl:param name="work" as="document-node()"/>
+    <xsl:variable name="root" as="document-node()" select="root($connectors[1])"/>
+    <xsl:variable name="pairs" as="element(fp:pair)*">
+      <xsl:for-each select="$connectors">
+        <xsl:variable name="k" as="element(pim:connector)" select="."/>
+        <xsl:variable name="ips" as="element(fp:ip)*"
+            select="pim:end[@part] ! key('fp:ip-by-end', @part || '|' || @role, $work)"/>
+        <xsl:variable name="found" as="element(fp:pair)*">
+          <xsl:for-each select="$ips[@direction eq 'out']">
+            <xsl:variable name="wr" as="element(fp:ip)" select="."/>
+            <xsl:for-each select="$ips[@direction eq 'in'][@part ne $wr/@part or @port ne $wr/@port]
+                                      [@interface eq $wr/@interface or @type-key eq $wr/@type-key]">
+              <fp:pair connector="{$k/@id}" interface="{$wr/@interface}"
+                       w-instance="{$wr/@instance}" w-port="{$wr/@port}" w-dp="{$wr/@data-port}"
+                       r-instance="{@instance}" r-port="{@port}" r-dp="{@data-port}"/>
+            </xsl:for-each>
+          </xsl:for-each>
+        </xsl:variable>
+        <xsl:sequence select="$found"/>
+      </xsl:for-each>
+    </xsl:variable>
+    <!-- every connector that joins nothing and every input fed twice, at once -->
+    <xsl:variable name="problems" as="map(*)*">
+      <xsl:for-each select="$connectors[not(@id = $pairs/@connector)]">
+        <xsl:sequence select="map { 'code': 'BND007', 'id': string(@id), 'message': 'connector ''' || @name
+            || ''' joins no output port to an input port of the same data type' }"/>
+      </xsl:for-each>
+      <xsl:for-each-group select="$pairs" group-by="@r-instance || '.' || @r-dp">
+        <xsl:if test="count(distinct-values(current-group()/(@w-instance || '.' || @w-dp))) gt 1">
+          <xsl:sequence select="map { 'code': 'BND008', 'id': string(current-group()[1]/@r-port),
+              'message': 'input port ' || current-grouping-key() || ' is fed by several output ports ('
+              || string-join(distinct-values(current-group()/(@w-instance || '.' || @w-dp)), ', ') || ')' }"/>
+        </xsl:if>
+      </xsl:for-each-group>
+    </xsl:variable>
+    <xsl:sequence select="f:fail-all($problems)"/>
+    <xsl:for-each-group select="$pairs" group-by="@w-instance || '.' || @w-dp">
+      <xsl:variable name="g" as="element(fp:pair)+" select="current-group()"/>
+      <xsl:variable name="ks" as="element(pim:connector)*"
+          select="key('fp:id', distinct-values($g/@connector), $root)"/>
+      <xsl:variable name="iface" as="element(pim:interface)" select="key('fp:id', $g[1]/@interface, $root)"/>
+      <pim:connection name="{fp:connection-name($ks[1], $iface)}" xmi-id="{$ks[1]/@id}"
+                      interface="{$iface/@id}" connectors="{$ks/@id}">
+        <xsl:sequence select="fp:policy(($ks, key('fp:id', ($g[1]/@w-port, $g/@r-port), $root), $iface))"/>
+        <pim:writer instance="{$g[1]/@w-instance}" port="{$g[1]/@w-port}" data-port="{$g[1]/@w-dp}"/>
+        <xsl:for-each-group select="$g" group-by="@r-instance || '.' || @r-dp">
+          <pim:reader instance="{@r-instance}" port="{@r-port}" data-port="{@r-dp}"/>
+        </xsl:for-each-group>
+      </pim:connection>
+    </xsl:for-each-group>
+  </xsl:function>
+</xsl:stylesheet>

@@ -1,0 +1,214 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/m2m/bind/instances.xsl - bind (xslt/m2m/10-bind.xsl): hosts, atomic-code libraries and component instances with their activities.
+
+  Reads:   the PIM (urn:robomda:pim:1) and the working trees of fp:binding.
+  Writes:  parts of pim:binding (schemas/pim/1/binding.xsd), or values.
+  Params:  none.  Keys: those of 10-bind.xsl.
+  Provides: fp:host, fp:libraries, fp:instance, fp:instance-ee, fp:owner-ee,
+           fp:activity, fp:activity-value, fp:holder.
+  Errors:  BND006 an instance deployed to no execution environment; BND010.
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:map="http://www.w3.org/2005/xpath-functions/map"
+    xmlns:pim="urn:robomda:pim:1"
+    xmlns:f="urn:robomda:xslt:function"
+    xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:m="urn:robomda:xslt:mode"
+    xmlns:t="urn:robomda:xslt:template"
+    xmlns:mp="urn:robomda:xslt:mode:private"
+    xmlns:err="http://www.w3.org/2005/xqt-errors"
+    exclude-result-prefixes="#all">
+
+  <!-- ========================================================== hosts -->
+  <xsl:function name="fp:host" as="element(pim:host)">
+    <xsl:param name="n" as="element(pim:node)"/>
+    <xsl:param name="host-count" as="xs:integer"/>
+    <xsl:variable name="hn" as="xs:string?" select="fp:tag($n, 'Host', 'hostname')[normalize-space(.)]"/>
+    <xsl:variable name="ad" as="xs:string?" select="fp:tag($n, 'Host', 'address')[normalize-space(.)]"/>
+    <xsl:variable name="hostname" as="xs:string" select="($hn, string($n/@name))[1]"/>
+    <pim:host xmi-id="{$n/@id}" name="{$n/@name}" hostname="{$hostname}"
+              hostname-source="{if (exists($hn)) then 'stereotype' else 'name'}"
+              address="{if (exists($ad)) then $ad else if ($host-count eq 1) then 'localhost' else $hostname}"
+              address-source="{if (exists($ad)) then 'stereotype' else 'default'}"/>
+  </xsl:function>
+
+  <!-- ====================================================== libraries -->
+  <xsl:function name="fp:libraries" as="element(pim:library)*">
+    <xsl:param name="model" as="element(pim:model)"/>
+    <xsl:variable name="all" as="element(pim:artifact)*" select="$model/pim:platform//pim:artifact"/>
+    <xsl:variable name="profiled" as="element(pim:artifact)*" select="$all[exists(f:stereotype(., 'Library'))]"/>
+    <xsl:for-each select="if (exists($profiled)) then $profiled else $all">
+      <xsl:variable name="p" as="xs:string?" select="fp:tag(., 'Library', 'path')[normalize-space(.)]"/>
+      <xsl:variable name="t" as="xs:string?" select="fp:tag(., 'Library', 'target')[normalize-space(.)]"/>
+      <xsl:variable name="i" as="xs:string?" select="fp:tag(., 'Library', 'includeDir')[normalize-space(.)]"/>
+      <xsl:variable name="path" as="xs:string"
+          select="translate(($p, @file-name[normalize-space(.)], @name)[1], '\', '/')"/>
+      <pim:library xmi-id="{@id}" name="{@name}" path="{$path}"
+                   path-source="{if (exists($p)) then 'stereotype' else if (normalize-space(@file-name)) then 'file-name' else 'name'}"
+                   absolute="{starts-with($path, '/') or matches($path, '^[A-Za-z]:/')}"
+                   target="{($t, @name)[1]}"
+                   target-source="{if (exists($t)) then 'stereotype' else 'name'}"
+                   include-dir="{($i, 'include')[1]}">
+        <xsl:for-each select="pim:manifestation">
+          <pim:manifests element="{@element}"/>
+        </xsl:for-each>
+      </pim:library>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- ====================================================== instances -->
+  <xsl:function name="fp:instance" as="element(pim:instance)">
+    <xsl:param name="part" as="element(pim:part)?"/>
+    <xsl:param name="c" as="element(pim:component)"/>
+    <xsl:param name="top" as="element(pim:component)?"/>
+    <xsl:param name="ees" as="element(pim:node)*"/>
+    <xsl:param name="hosts" as="element(pim:node)*"/>
+    <xsl:variable name="root" as="document-node()" select="root($c)"/>
+    <xsl:variable name="r" as="element(pim:class)?" select="fp:realizing-class($c)"/>
+    <xsl:variable name="ids" as="xs:string*" select="($part/@id, $c/@id, $top/@id, $r/@id) ! string(.)"/>
+    <xsl:variable name="artifact-ids" as="xs:string*"
+        select="key('fp:manifestation-by-element', $ids, $root)/../@id ! string(.)"/>
+    <xsl:variable name="deployments" as="element(pim:deployment)*"
+        select="key('fp:deployment-by-deployed', ($ids, $artifact-ids), $root)"/>
+    <xsl:variable name="ee" as="element(pim:node)?" select="fp:instance-ee($part, $c, $top, $ees)"/>
+    <xsl:variable name="inst-id" as="xs:string" select="string(($part/@id, $c/@id)[1])"/>
+    <xsl:if test="empty($ee)">
+      <xsl:sequence select="f:fail-all(fp:no-ee-problem($part, $c, $ees))"/>
+    </xsl:if>
+    <xsl:variable name="host" as="element(pim:node)?"
+        select="(fp:host-of($ee, $deployments/.., $hosts), if (count($hosts) eq 1) then $hosts else ())[1]"/>
+    <pim:instance name="{f:cpp-identifier(($part/@name[normalize-space(.)], $c/@name)[1])}"
+                  xmi-id="{$inst-id}" component="{$c/@id}">
+      <xsl:if test="$top"><xsl:attribute name="composite" select="$top/@id"/></xsl:if>
+      <xsl:if test="$host"><xsl:attribute name="host" select="$host/@id"/></xsl:if>
+      <xsl:attribute name="execution-environment" select="$ee/@id"/>
+      <xsl:attribute name="middleware" select="fp:middleware($ee)"/>
+      <xsl:for-each select="fp:tag($ee, 'Middleware', 'version')[normalize-space(.)]">
+        <xsl:attribute name="middleware-version" select="."/>
+      </xsl:for-each>
+      <xsl:if test="$r"><xsl:attribute name="realization" select="$r/@id"/></xsl:if>
+      <!-- only the elements with an Activity stereotype can give a tag -->
+      <xsl:sequence select="fp:activity(($part, $c, $r)[exists(f:stereotype(., 'Activity'))], $r, $ee, $inst-id)"/>
+      <!-- every deployment that reaches the instance, so the deployment
+           rules (schemas/pim/1/pim.sch) can see one deployed twice -->
+      <xsl:for-each select="$deployments">
+        <xsl:variable name="d-ee" as="element(pim:node)?" select="fp:deployment-ee(.)"/>
+        <xsl:variable name="d-host" as="element(pim:node)?" select="fp:host-of($d-ee, .., $hosts)"/>
+        <pim:deployed-on deployment="{@id}">
+          <xsl:if test="$d-ee"><xsl:attribute name="execution-environment" select="$d-ee/@id"/></xsl:if>
+          <xsl:if test="$d-host"><xsl:attribute name="host" select="$d-host/@id"/></xsl:if>
+        </pim:deployed-on>
+      </xsl:for-each>
+    </pim:instance>
+  </xsl:function>
+
+  <!-- the execution environment of the instance of $part (or of
+       component $c when instances come from components), as fp:instance
+       finds it -->
+  <xsl:function name="fp:instance-ee" as="element(pim:node)?">
+    <xsl:param name="part" as="element(pim:part)?"/>
+    <xsl:param name="c" as="element(pim:component)"/>
+    <xsl:param name="top" as="element(pim:component)?"/>
+    <xsl:param name="ees" as="element(pim:node)*"/>
+    <xsl:variable name="root" as="document-node()" select="root($c)"/>
+    <xsl:variable name="r" as="element(pim:class)?" select="fp:realizing-class($c)"/>
+    <xsl:variable name="ids" as="xs:string*" select="($part/@id, $c/@id, $top/@id, $r/@id) ! string(.)"/>
+    <xsl:variable name="artifact-ids" as="xs:string*"
+        select="key('fp:manifestation-by-element', $ids, $root)/../@id ! string(.)"/>
+    <xsl:sequence select="(key('fp:deployment-by-deployed', ($ids, $artifact-ids), $root) ! fp:deployment-ee(.),
+                           fp:owner-ee($c),
+                           if (count($ees) eq 1) then $ees else ())[1]"/>
+  </xsl:function>
+
+  <!-- the execution environment of the node that owns component $c in
+       the XMI (EA nests a component in the node it runs on): the node
+       itself, else the first one nested in it -->
+  <xsl:function name="fp:owner-ee" as="element(pim:node)?">
+    <xsl:param name="c" as="element(pim:component)"/>
+    <xsl:variable name="node" as="element(pim:node)?" select="$c/@node ! key('fp:id', ., root($c))[self::pim:node]"/>
+    <xsl:sequence select="($node[@kind eq 'execution-environment'], $node//pim:node[@kind eq 'execution-environment'])[1]"/>
+  </xsl:function>
+
+  <!-- BND006 about the instance of $part / $c -->
+  <xsl:function name="fp:no-ee-problem" as="map(*)">
+    <xsl:param name="part" as="element(pim:part)?"/>
+    <xsl:param name="c" as="element(pim:component)"/>
+    <xsl:param name="ees" as="element(pim:node)*"/>
+    <xsl:sequence select="map { 'code': 'BND006', 'id': string(($part/@id, $c/@id)[1]), 'message':
+        'component instance ''' || ($part/@name, $c/@name)[1] || ''' is deployed to no execution environment'
+        || ' and the model has ' || count($ees) || ' of them' }"/>
+  </xsl:function>
+
+  <!-- the execution environment deployment $d reaches: its target, else
+       the first one nested in its target -->
+  <xsl:function name="fp:deployment-ee" as="element(pim:node)?">
+    <xsl:param name="d" as="element(pim:deployment)"/>
+    <xsl:sequence select="if ($d/../@kind eq 'execution-environment') then $d/..
+                          else ($d/..//pim:node[@kind eq 'execution-environment'])[1]"/>
+  </xsl:function>
+
+  <!-- the host of execution environment $ee (the nearest enclosing node
+       among $hosts), else the first of the deployment targets $targets that
+       is a host -->
+  <xsl:function name="fp:host-of" as="element(pim:node)?">
+    <xsl:param name="ee" as="element(pim:node)?"/>
+    <xsl:param name="targets" as="element()*"/>
+    <xsl:param name="hosts" as="element(pim:node)*"/>
+    <xsl:sequence select="($ee/ancestor::pim:node[. intersect $hosts][1], $targets[. intersect $hosts])[1]"/>
+  </xsl:function>
+
+  <!-- one activity value: (value, source) from stereotype tag, class
+       convention, EE convention or default -->
+  <!-- (value, where it comes from, the id of the element that holds it or
+       '' for a default): the value sits on an Activity stereotype
+       application, a convention attribute of the realizing class or of the
+       execution environment; errors about it point at that element -->
+  <xsl:function name="fp:activity-value" as="xs:string+">
+    <xsl:param name="stereo-on" as="element()*"/>
+    <xsl:param name="tag" as="xs:string"/>
+    <xsl:param name="r" as="element(pim:class)?"/>
+    <xsl:param name="ee" as="element(pim:node)?"/>
+    <xsl:param name="conv" as="xs:string"/>
+    <xsl:param name="default" as="xs:string"/>
+    <xsl:variable name="t" as="xs:string?" select="fp:first-tag($stereo-on, 'Activity', $tag)"/>
+    <xsl:variable name="c" as="xs:string?" select="fp:conv($r, $conv)[normalize-space(.)]"/>
+    <xsl:variable name="e" as="xs:string?"
+        select="if ($conv eq 'sample') then () else fp:conv($ee, $conv)[normalize-space(.)]"/>
+    <xsl:sequence select="if (exists($t)) then ($t, 'stereotype',
+                              string(($stereo-on ! f:stereotype(., 'Activity'))[pim:tag[@name eq $tag][normalize-space(@value)]][1]/@id))
+                          else if (exists($c)) then ($c, 'realizing-class', fp:conv-holder($r, $conv))
+                          else if (exists($e)) then ($e, 'execution-environment', fp:conv-holder($ee, $conv))
+                          else ($default, 'default', '')"/>
+  </xsl:function>
+
+  <xsl:function name="fp:activity" as="element(pim:activity)">
+    <xsl:param name="stereo-on" as="element()*"/>
+    <xsl:param name="r" as="element(pim:class)?"/>
+    <xsl:param name="ee" as="element(pim:node)?"/>
+    <xsl:param name="id" as="xs:string"/>
+    <xsl:variable name="period" as="xs:string+" select="fp:activity-value($stereo-on, 'period', $r, $ee, 'sample', '0')"/>
+    <xsl:variable name="prio" as="xs:string+" select="fp:activity-value($stereo-on, 'priority', $r, $ee, 'priority', '0')"/>
+    <xsl:variable name="sched" as="xs:string+" select="fp:activity-value($stereo-on, 'scheduler', $r, $ee, 'scheduler', 'OTHER')"/>
+    <xsl:variable name="cpu" as="xs:string+" select="fp:activity-value($stereo-on, 'cpuAffinity', $r, $ee, 'cpuAffinity', '0')"/>
+    <xsl:variable name="s" as="xs:string"
+        select="replace(replace(upper-case(fp:literal(fp:strip($sched[1]))), '^(ORO_)?SCHED_', ''), '^OTHERS$', 'OTHER')"/>
+    <pim:activity period="{fp:number($period[1], 'period', fp:holder($period, $id))}" period-source="{$period[2]}"
+                  priority="{fp:integer($prio[1], 'priority', fp:holder($prio, $id))}" priority-source="{$prio[2]}"
+                  scheduler="{fp:enum($s, ('RT', 'OTHER'), 'scheduler', fp:holder($sched, $id))}" scheduler-source="{$sched[2]}"
+                  cpu-affinity="{fp:integer($cpu[1], 'cpuAffinity', fp:holder($cpu, $id))}" cpu-affinity-source="{$cpu[2]}">
+      <xsl:if test="$period[3]"><xsl:attribute name="period-holder" select="$period[3]"/></xsl:if>
+      <xsl:if test="$prio[3]"><xsl:attribute name="priority-holder" select="$prio[3]"/></xsl:if>
+    </pim:activity>
+  </xsl:function>
+
+  <!-- the element an error about an fp:activity-value points at: the one
+       that holds the value, else $fallback -->
+  <xsl:function name="fp:holder" as="xs:string">
+    <xsl:param name="value" as="xs:string+"/>
+    <xsl:param name="fallback" as="xs:string"/>
+    <xsl:sequence select="($value[3][. ne ''], $fallback)[1]"/>
+  </xsl:function>
+</xsl:stylesheet>

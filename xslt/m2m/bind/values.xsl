@@ -1,0 +1,117 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/m2m/bind/values.xsl - bind (xslt/m2m/10-bind.xsl): tagged values of robomda stereotypes and the parsing of values written in a model.
+
+  Reads:   the PIM (urn:robomda:pim:1) and the working trees of fp:binding.
+  Writes:  parts of pim:binding (schemas/pim/1/binding.xsd), or values.
+  Params:  none.  Keys: those of 10-bind.xsl.
+  Provides: fp:tag, fp:first-tag, fp:conv, fp:conv-holder, fp:literal, fp:strip, fp:number,
+           fp:integer, fp:boolean, fp:enum.
+  Errors:  BND010 a value that is not a number, an integer, a boolean or one of
+           the allowed names.
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:map="http://www.w3.org/2005/xpath-functions/map"
+    xmlns:pim="urn:robomda:pim:1"
+    xmlns:f="urn:robomda:xslt:function"
+    xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:m="urn:robomda:xslt:mode"
+    xmlns:t="urn:robomda:xslt:template"
+    xmlns:mp="urn:robomda:xslt:mode:private"
+    xmlns:err="http://www.w3.org/2005/xqt-errors"
+    exclude-result-prefixes="#all">
+
+  <!-- ===================================================== stereotypes -->
+  <!-- a tag value of stereotype $stereo on $e; enumeration literals given by
+       reference resolve to their name; "Kind::LIT" / "Kind.LIT" -> "LIT" -->
+  <xsl:function name="fp:tag" as="xs:string?">
+    <xsl:param name="e" as="element()?"/>
+    <xsl:param name="stereo" as="xs:string"/>
+    <xsl:param name="tag" as="xs:string"/>
+    <xsl:variable name="t" as="element()?" select="f:stereotype($e, $stereo)/pim:tag[@name eq $tag][1]"/>
+    <xsl:sequence select="if (empty($t)) then ()
+        else if ($t/@ref = ('true', '1')) then string(key('fp:id', $t/@value, root($t))/@name)
+        else string($t/@value)"/>
+  </xsl:function>
+
+  <xsl:function name="fp:literal" as="xs:string">
+    <xsl:param name="v" as="xs:string"/>
+    <xsl:sequence select="if (contains($v, ':') or contains($v, '.'))
+                          then replace(normalize-space($v), '^.*(::|\.)([A-Za-z_][A-Za-z0-9_]*)$', '$2')
+                          else normalize-space($v)"/>
+  </xsl:function>
+
+  <!-- first tag value found on the elements $es, with its source -->
+  <xsl:function name="fp:first-tag" as="xs:string*">
+    <xsl:param name="es" as="element()*"/>
+    <xsl:param name="stereo" as="xs:string"/>
+    <xsl:param name="tag" as="xs:string"/>
+    <xsl:sequence select="(for $e in $es return fp:tag($e, $stereo, $tag))[normalize-space(.)][1]"/>
+  </xsl:function>
+
+  <!-- default value of the convention attribute $name of $e -->
+  <xsl:function name="fp:conv" as="xs:string?">
+    <xsl:param name="e" as="element()?"/>
+    <xsl:param name="name" as="xs:string"/>
+    <xsl:sequence select="$e/pim:attribute[@name eq $name][@default][1]/@default ! string(.)"/>
+  </xsl:function>
+
+  <!-- the id of the attribute holding that default value -->
+  <xsl:function name="fp:conv-holder" as="xs:string">
+    <xsl:param name="e" as="element()?"/>
+    <xsl:param name="name" as="xs:string"/>
+    <xsl:sequence select="string($e/pim:attribute[@name eq $name][@default][1]/@id)"/>
+  </xsl:function>
+
+  <!-- ================================================= value parsing -->
+  <xsl:function name="fp:strip" as="xs:string">
+    <xsl:param name="v" as="xs:string"/>
+    <xsl:sequence select="if (contains($v, '&quot;') or contains($v, ''''))
+                          then replace(normalize-space($v), '^[&quot;'']|[&quot;'']$', '')
+                          else normalize-space($v)"/>
+  </xsl:function>
+
+  <xsl:function name="fp:number" as="xs:double">
+    <xsl:param name="v" as="xs:string"/>
+    <xsl:param name="what" as="xs:string"/>
+    <xsl:param name="id" as="xs:string?"/>
+    <xsl:variable name="s" as="xs:string" select="replace(fp:strip($v), '[fFdD]$', '')"/>
+    <xsl:sequence select="if ($s castable as xs:double and number($s) ge 0) then number($s)
+        else f:fail('BND010', $id, $what || ': ''' || $v || ''' is not a non-negative number')"/>
+  </xsl:function>
+
+  <xsl:function name="fp:integer" as="xs:integer">
+    <xsl:param name="v" as="xs:string"/>
+    <xsl:param name="what" as="xs:string"/>
+    <xsl:param name="id" as="xs:string?"/>
+    <xsl:variable name="d" as="xs:double" select="fp:number($v, $what, $id)"/>
+    <xsl:sequence select="if ($d eq floor($d)) then xs:integer($d)
+        else f:fail('BND010', $id, $what || ': ''' || $v || ''' is not an integer')"/>
+  </xsl:function>
+
+  <xsl:function name="fp:boolean" as="xs:boolean">
+    <xsl:param name="v" as="xs:string"/>
+    <xsl:param name="what" as="xs:string"/>
+    <xsl:param name="id" as="xs:string?"/>
+    <xsl:variable name="s" as="xs:string" select="lower-case(fp:strip($v))"/>
+    <xsl:sequence select="if ($s = ('true', '1', 'yes')) then true()
+        else if ($s = ('false', '0', 'no')) then false()
+        else f:fail('BND010', $id, $what || ': ''' || $v || ''' is not a boolean')"/>
+  </xsl:function>
+
+  <xsl:function name="fp:enum" as="xs:string">
+    <xsl:param name="v" as="xs:string"/>
+    <xsl:param name="allowed" as="xs:string+"/>
+    <xsl:param name="what" as="xs:string"/>
+    <xsl:param name="id" as="xs:string?"/>
+    <xsl:variable name="s" as="xs:string"
+        select="upper-case(replace(fp:literal(fp:strip($v)), '[\s\-]', '_'))"/>
+    <xsl:variable name="hit" as="xs:string?"
+        select="$allowed[translate(., '_', '') eq translate($s, '_', '')][1]"/>
+    <xsl:sequence select="if (exists($hit)) then $hit
+        else f:fail('BND010', $id, $what || ': ''' || $v || ''' is not one of '
+                    || string-join($allowed, ', '))"/>
+  </xsl:function>
+</xsl:stylesheet>
