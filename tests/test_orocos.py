@@ -1,4 +1,4 @@
-"""Tests of the Orocos chain: 10-bind, 20-orocos-psm, m2t/orocos (one module each).
+"""Tests of the Orocos chain: bind, orocos-psm, m2t/orocos (one module each).
 
 Runs the stylesheets directly with saxonche on hand-written PIMs
 (tests/data/orocos/) and, when present, on the fixture models
@@ -52,9 +52,9 @@ def schema(rel: str) -> xmlschema.XMLSchema:
 
 
 def chain(pim_text: str, package: str = "", model_dir: str = "."):
-    bound = run("m2m/10-bind.xsl", pim_text)
+    bound = run("m2m/bind.xsl", pim_text)
     schema("pim/1/pim.xsd").validate(bound)
-    psm = run("m2m/20-orocos-psm.xsl", bound, **{"package-name": package})
+    psm = run("m2m/orocos-psm.xsl", bound, **{"package-name": package})
     schema("psm-orocos/1/psm-orocos.xsd").validate(psm)
     files = run("m2t/orocos/main.xsl", psm, **{"model-dir-from-output": model_dir})
     schema("fileset/1/fileset.xsd").validate(files)
@@ -134,14 +134,14 @@ def _mutate(name: str, old: str, new: str) -> str:
 ])
 def test_bind_errors(name, old, new, code):
     with pytest.raises(Exception) as exc:
-        run("m2m/10-bind.xsl", _mutate(name, old, new))
+        run("m2m/bind.xsl", _mutate(name, old, new))
     assert code in str(exc.value) and "xmi:id=" in str(exc.value)
 
 
 def test_bind_interface_without_datum():
     text = _mutate("unprofiled", '''      <pim:attribute id="IPos.a" name="screwPosition" qualified-name="IScrewPosition::screwPosition" type-name="double" type-library="c" primitive="float64" visibility="public"/>\n''', "")
     with pytest.raises(Exception) as exc:
-        run("m2m/10-bind.xsl", text)
+        run("m2m/bind.xsl", text)
     assert "BND004" in str(exc.value) and "IScrewPosition" in str(exc.value)
 
 
@@ -180,8 +180,8 @@ def test_psm_connections_and_instances():
 
 
 def test_psm_package_parameter():
-    bound = run("m2m/10-bind.xsl", DATA / "unprofiled.pim.xml")
-    psm = ET.fromstring(run("m2m/20-orocos-psm.xsl", bound, **{"package-name": "My Robot"}))
+    bound = run("m2m/bind.xsl", DATA / "unprofiled.pim.xml")
+    psm = ET.fromstring(run("m2m/orocos-psm.xsl", bound, **{"package-name": "My Robot"}))
     assert psm.get("package") == "my_robot"
     tc = [t for t in psm.iter(O + "task-context") if t.get("class") == "Prosilica"][0]
     # unprofiled R4: public/protected, not read-only, not a convention name, mappable type
@@ -193,7 +193,7 @@ def test_psm_unsupported_type():
     text = _mutate("unprofiled", 'type-name="double" type-library="c" primitive="float64" visibility="public"/>',
                    'type-name="Pose" type-library="c" visibility="public"/>')
     with pytest.raises(Exception) as exc:
-        run("m2m/20-orocos-psm.xsl", run("m2m/10-bind.xsl", text))
+        run("m2m/orocos-psm.xsl", run("m2m/bind.xsl", text))
     assert "ORO001" in str(exc.value) and "screws" in str(exc.value)
 
 
@@ -346,8 +346,8 @@ def test_text_library_paths():
 
 
 def test_deterministic():
-    a = run("m2m/10-bind.xsl", DATA / "composite.pim.xml")
-    assert a == run("m2m/10-bind.xsl", DATA / "composite.pim.xml")
+    a = run("m2m/bind.xsl", DATA / "composite.pim.xml")
+    assert a == run("m2m/bind.xsl", DATA / "composite.pim.xml")
 
 
 # ------------------------------------------------------------ fixtures
@@ -374,8 +374,8 @@ def test_fixture_chain(case_name):
 
 def test_text_multi_cpu_affinity_reaches_every_file():
     """A mask of several CPUs is set in XML, .ops and Lua alike (issue 17: it was XML only)."""
-    bound = run("m2m/10-bind.xsl", (DATA / "composite.pim.xml").read_text())
-    psm = run("m2m/20-orocos-psm.xsl", bound, **{"package-name": ""})
+    bound = run("m2m/bind.xsl", (DATA / "composite.pim.xml").read_text())
+    psm = run("m2m/orocos-psm.xsl", bound, **{"package-name": ""})
     psm = psm.replace('cpu-affinity="2"', 'cpu-affinity="6"')
     assert 'cpu-affinity="6"' in psm
     files = {f.get("path"): f.text for f in ET.fromstring(run("m2t/orocos/main.xsl", psm, **{"model-dir-from-output": "."})).iter(FS + "file")}

@@ -339,7 +339,9 @@ def generate(model: Path | str, out: Path | str | None, target: str | None = Non
     result = _run(chain, model, context)
     warnings = result.warnings + _package_name_note(package_name, result.stages.get("psm"), model)
     missing = [opt for opt, key in (("--maintainer", "maintainer-email"), ("--license", "license")) if not context[key]]
-    if missing and write and out_path is not None and chain.yields == "files":
+    writes_manifest = result.tree is not None and any(
+        f.get("path") == "package.xml" for f in result.tree.iter("{urn:robomda:fileset:1}file"))
+    if missing and write and out_path is not None and chain.yields == "files" and writes_manifest:
         warnings.append(Diagnostic("warning", "PKG002", f"package.xml names a placeholder {' and '.join(m[2:] for m in missing)}: "
                                    f"give {' and '.join(missing)} (a package cannot be released as it is)",
                                    file=str(model)))

@@ -1,10 +1,10 @@
 <?xml version="1.0" encoding="UTF-8"?>
 <!--
-  xslt/m2m/bind/connections.xsl - bind (xslt/m2m/10-bind.xsl): connection points from assembly connectors or shared interfaces, with their policies.
+  xslt/m2m/bind/connections.xsl - bind (xslt/m2m/bind.xsl): connection points from assembly connectors or shared interfaces, with their policies.
 
   Reads:   the PIM (urn:robomda:pim:1) and the working trees of fp:binding.
   Writes:  parts of pim:binding (schemas/pim/1/binding.xsd), or values.
-  Params:  none.  Keys: those of 10-bind.xsl.
+  Params:  none.  Keys: those of bind.xsl.
   Provides: fp:policy, fp:policy-of, fp:connection-name, fp:connections-from-interfaces,
            fp:connections-from-connectors.
   Errors:  BND007 a connector that joins nothing, BND008 an input fed twice (raised together).

@@ -1,10 +1,10 @@
 <?xml version="1.0" encoding="UTF-8"?>
 <!--
-  xslt/m2m/bind/instances.xsl - bind (xslt/m2m/10-bind.xsl): hosts, atomic-code libraries and component instances with their activities.
+  xslt/m2m/bind/instances.xsl - bind (xslt/m2m/bind.xsl): hosts, atomic-code libraries and component instances with their activities.
 
   Reads:   the PIM (urn:robomda:pim:1) and the working trees of fp:binding.
   Writes:  parts of pim:binding (schemas/pim/1/binding.xsd), or values.
-  Params:  none.  Keys: those of 10-bind.xsl.
+  Params:  none.  Keys: those of bind.xsl.
   Provides: fp:host, fp:libraries, fp:instance, fp:instance-ee, fp:owner-ee,
            fp:activity, fp:activity-value, fp:holder.
   Errors:  BND006 an instance deployed to no execution environment; BND010.

@@ -1,10 +1,10 @@
 <?xml version="1.0" encoding="UTF-8"?>
 <!--
-  xslt/m2m/bind/lookups.xsl - bind (xslt/m2m/10-bind.xsl): look-ups in the PIM: realizing classes, middlewares, hosts.
+  xslt/m2m/bind/lookups.xsl - bind (xslt/m2m/bind.xsl): look-ups in the PIM: realizing classes, middlewares, hosts.
 
   Reads:   the PIM (urn:robomda:pim:1) and the working trees of fp:binding.
   Writes:  parts of pim:binding (schemas/pim/1/binding.xsd), or values.
-  Params:  none.  Keys: those of 10-bind.xsl.
+  Params:  none.  Keys: those of bind.xsl.
   Provides: the functions of the model look-ups section.
   Errors:  BND003 unknown middleware name.
 -->

@@ -1,10 +1,10 @@
 <?xml version="1.0" encoding="UTF-8"?>
 <!--
-  xslt/m2m/bind/ports.xsl - bind (xslt/m2m/10-bind.xsl): bound components and their data ports (seed 000 R2).
+  xslt/m2m/bind/ports.xsl - bind (xslt/m2m/bind.xsl): bound components and their data ports (seed 000 R2).
 
   Reads:   the PIM (urn:robomda:pim:1) and the working trees of fp:binding.
   Writes:  parts of pim:binding (schemas/pim/1/binding.xsd), or values.
-  Params:  none.  Keys: those of 10-bind.xsl.
+  Params:  none.  Keys: those of bind.xsl.
   Provides: fp:bound-component, fp:port-interfaces, fp:data-ports, fp:port-problems.
   Errors:  BND002, BND004, BND005 (as data for f:fail-all), BND011.
 -->

@@ -1,10 +1,10 @@
 <?xml version="1.0" encoding="UTF-8"?>
 <!--
-  xslt/m2m/bind/sequence.xsl - bind (xslt/m2m/10-bind.xsl): the deployment sequence (seed 002): StartAfter constraints and the start order.
+  xslt/m2m/bind/sequence.xsl - bind (xslt/m2m/bind.xsl): the deployment sequence (seed 002): StartAfter constraints and the start order.
 
   Reads:   the PIM (urn:robomda:pim:1) and the working trees of fp:binding.
   Writes:  parts of pim:binding (schemas/pim/1/binding.xsd), or values.
-  Params:  none.  Keys: those of 10-bind.xsl.
+  Params:  none.  Keys: those of bind.xsl.
   Provides: fp:start-after-dependencies, fp:sequence.
   Errors:  BND012 a StartAfter dependency between elements that are not parts.
 -->

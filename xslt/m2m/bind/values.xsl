@@ -1,10 +1,10 @@
 <?xml version="1.0" encoding="UTF-8"?>
 <!--
-  xslt/m2m/bind/values.xsl - bind (xslt/m2m/10-bind.xsl): tagged values of robomda stereotypes and the parsing of values written in a model.
+  xslt/m2m/bind/values.xsl - bind (xslt/m2m/bind.xsl): tagged values of robomda stereotypes and the parsing of values written in a model.
 
   Reads:   the PIM (urn:robomda:pim:1) and the working trees of fp:binding.
   Writes:  parts of pim:binding (schemas/pim/1/binding.xsd), or values.
-  Params:  none.  Keys: those of 10-bind.xsl.
+  Params:  none.  Keys: those of bind.xsl.
   Provides: fp:tag, fp:first-tag, fp:conv, fp:conv-holder, fp:literal, fp:strip, fp:number,
            fp:integer, fp:boolean, fp:enum.
   Errors:  BND010 a value that is not a number, an integer, a boolean or one of

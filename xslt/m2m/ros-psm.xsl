@@ -1,8 +1,8 @@
 <?xml version="1.0" encoding="UTF-8"?>
 <!--
-  xslt/m2m/30-ros-psm.xsl - bound PIM -> ROS PSM (ROS 1 roscpp / ROS 2 rclcpp).
+  xslt/m2m/ros-psm.xsl - bound PIM -> ROS PSM (ROS 1 roscpp / ROS 2 rclcpp).
 
-  Reads:   a bound PIM, urn:robomda:pim:1 with pim:binding (xslt/m2m/10-bind.xsl).
+  Reads:   a bound PIM, urn:robomda:pim:1 with pim:binding (xslt/m2m/bind.xsl).
   Writes:  urn:robomda:psm-ros:1 (schemas/psm-ros/1/psm-ros.xsd),
            indented as f:indent (common/indent.xsl) indents it, through its
            rules (t:indented-content) in the same pass.
@@ -45,7 +45,7 @@
     ROS001  a port, service or Configurable parameter has a type the type
             map cannot map (names the element)
     ROS002  a parameter default is not valid for its type
-    ROS003  the input has no pim:binding (run xslt/m2m/10-bind.xsl first)
+    ROS003  the input has no pim:binding (run xslt/m2m/bind.xsl first)
     ROS004  two component types map to the same C++ class name
     ROS005  a ConnectionPolicy topic is not a valid ROS graph name
     ROS006  parameter ros-version is neither '1' nor '2'
@@ -123,7 +123,7 @@
   </xsl:template>
 
   <xsl:template match="pim:model[empty(pim:binding)]" mode="m:to-psm" as="empty-sequence()">
-    <xsl:sequence select="f:fail('ROS003', @id, 'the model has no platform binding: run xslt/m2m/10-bind.xsl first')"/>
+    <xsl:sequence select="f:fail('ROS003', @id, 'the model has no platform binding: run xslt/m2m/bind.xsl first')"/>
   </xsl:template>
 
   <xsl:template match="pim:model" mode="m:to-psm" as="element(r:package)">

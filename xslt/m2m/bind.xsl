@@ -1,6 +1,6 @@
 <?xml version="1.0" encoding="UTF-8"?>
 <!--
-  xslt/m2m/10-bind.xsl - resolve the platform binding of a PIM.
+  xslt/m2m/bind.xsl - resolve the platform binding of a PIM.
 
   Reads:   a PIM, urn:robomda:pim:1 (schemas/pim/1/pim.xsd), as written by
            xslt/import/import.xsl; an existing pim:binding is replaced.

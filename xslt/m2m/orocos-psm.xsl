@@ -1,8 +1,8 @@
 <?xml version="1.0" encoding="UTF-8"?>
 <!--
-  xslt/m2m/20-orocos-psm.xsl - bound PIM -> Orocos RTT 2.x PSM (seed 000 R1-R5).
+  xslt/m2m/orocos-psm.xsl - bound PIM -> Orocos RTT 2.x PSM (seed 000 R1-R5).
 
-  Reads:   a bound PIM, urn:robomda:pim:1 with pim:binding (xslt/m2m/10-bind.xsl).
+  Reads:   a bound PIM, urn:robomda:pim:1 with pim:binding (xslt/m2m/bind.xsl).
   Writes:  urn:robomda:psm-orocos:1 (schemas/psm-orocos/1/psm-orocos.xsd),
            indented as f:indent (common/indent.xsl) indents it, through its
            rules (t:indented-content) in the same pass.
@@ -49,7 +49,7 @@
     ORO001  a port, operation parameter or Configurable property has a type
             robomda cannot map to C++ / cpf XML (names the element)
     ORO002  a property default value is not valid for its type
-    ORO003  the input has no pim:binding (run xslt/m2m/10-bind.xsl first)
+    ORO003  the input has no pim:binding (run xslt/m2m/bind.xsl first)
     ORO004  two component types map to the same C++ class name
     ORO005  nothing to generate: the model has no component instance
   Warnings (f:warn):
@@ -114,7 +114,7 @@
   </xsl:template>
 
   <xsl:template match="pim:model[empty(pim:binding)]" mode="m:to-psm" as="empty-sequence()">
-    <xsl:sequence select="f:fail('ORO003', @id, 'the model has no platform binding: run xslt/m2m/10-bind.xsl first')"/>
+    <xsl:sequence select="f:fail('ORO003', @id, 'the model has no platform binding: run xslt/m2m/bind.xsl first')"/>
   </xsl:template>
 
   <xsl:template match="pim:model" mode="m:to-psm" as="element(o:deployment)">
