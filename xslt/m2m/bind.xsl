@@ -266,51 +266,8 @@
     <xsl:variable name="hosts" as="element(pim:node)*" select="fp:hosts($root)"/>
     <!-- instances and bound components live in documents of their own, so
          that keys find them (temporary trees, copied to the result) -->
-    <!-- every instance without an execution environment (BND006) and
-         every environment of an unknown middleware (BND003) at once -->
-    <xsl:variable name="instance-ees" as="element(pim:node)*">
-      <xsl:choose>
-        <xsl:when test="exists($tops)">
-          <xsl:for-each select="$tops/pim:part[key('fp:id', @type, $root)/self::pim:component]">
-            <xsl:sequence select="fp:instance-ee(., key('fp:id', @type, $root), .., $ees)"/>
-          </xsl:for-each>
-        </xsl:when>
-        <xsl:otherwise>
-          <xsl:for-each select="$components[not(@abstract = ('true', '1'))][pim:port or pim:realization]">
-            <xsl:sequence select="fp:instance-ee((), ., (), $ees)"/>
-          </xsl:for-each>
-        </xsl:otherwise>
-      </xsl:choose>
-    </xsl:variable>
-    <xsl:sequence select="f:fail-all((
-        if (exists($tops)) then $tops/pim:part[key('fp:id', @type, $root)/self::pim:component]
-                                  [empty(fp:instance-ee(., key('fp:id', @type, $root), .., $ees))]
-                                ! fp:no-ee-problem(., key('fp:id', @type, $root), $ees)
-        else $components[not(@abstract = ('true', '1'))][pim:port or pim:realization]
-                        [empty(fp:instance-ee((), ., (), $ees))] ! fp:no-ee-problem((), ., $ees),
-        ($instance-ees/.) ! fp:middleware-problems(.)))"/>
-    <xsl:variable name="instance-tree" as="document-node()">
-      <xsl:document>
-        <xsl:choose>
-          <xsl:when test="exists($tops)">
-            <xsl:for-each select="$tops/pim:part[key('fp:id', @type, $root)/self::pim:component]">
-              <xsl:try>
-                <xsl:sequence select="fp:instance(., key('fp:id', @type, $root), .., $ees, $hosts)"/>
-                <xsl:catch><xsl:sequence select="fp:caught($err:code, $err:description, $err:value)"/></xsl:catch>
-              </xsl:try>
-            </xsl:for-each>
-          </xsl:when>
-          <xsl:otherwise>
-            <xsl:for-each select="$components[not(@abstract = ('true', '1'))][pim:port or pim:realization]">
-              <xsl:try>
-                <xsl:sequence select="fp:instance((), ., (), $ees, $hosts)"/>
-                <xsl:catch><xsl:sequence select="fp:caught($err:code, $err:description, $err:value)"/></xsl:catch>
-              </xsl:try>
-            </xsl:for-each>
-          </xsl:otherwise>
-        </xsl:choose>
-      </xsl:document>
-    </xsl:variable>
+    <xsl:sequence select="f:fail-all(fp:deployment-problems($tops, $components, $ees))"/>
+    <xsl:variable name="instance-tree" as="document-node()" select="fp:instance-tree($tops, $components, $ees, $hosts)"/>
     <!-- an error of one instance (a bad value: BND010, BND006 ...) does not
          hide those of the others: each was caught, all are raised here -->
     <xsl:sequence select="f:fail-all($instance-tree/fp:error ! f:error-map(@description))"/>
@@ -327,33 +284,11 @@
     <!-- every port problem of every instantiated component at once -->
     <xsl:sequence select="f:fail-all($components[exists(key('fp:instance-by-component', @id, $instance-tree))]
                           ! (let $c := ., $r := fp:realizing-class(.) return $c/pim:port ! fp:port-problems(., $c, $r)))"/>
-    <xsl:variable name="bound-tree" as="document-node()">
-      <xsl:document>
-        <xsl:for-each select="$components[exists(key('fp:instance-by-component', @id, $instance-tree))]">
-          <xsl:try>
-            <xsl:sequence select="fp:bound-component(.)"/>
-            <xsl:catch><xsl:sequence select="fp:caught($err:code, $err:description, $err:value)"/></xsl:catch>
-          </xsl:try>
-        </xsl:for-each>
-      </xsl:document>
-    </xsl:variable>
+    <xsl:variable name="bound-tree" as="document-node()" select="fp:bound-tree($components, $instance-tree)"/>
     <xsl:sequence select="f:fail-all($bound-tree/fp:error ! f:error-map(@description))"/>
     <xsl:variable name="bound" as="element(pim:bound-component)*" select="$bound-tree/pim:bound-component"/>
     <!-- working tree: one fp:ip per instance data port -->
-    <xsl:variable name="work" as="document-node()">
-      <xsl:document>
-        <fp:work>
-          <xsl:for-each select="$instances">
-            <xsl:variable name="inst" as="element(pim:instance)" select="."/>
-            <xsl:for-each select="key('fp:bc', $inst/@component, $bound-tree)/pim:data-port">
-              <fp:ip instance="{$inst/@name}" part="{$inst/@xmi-id}" port="{@port}" data-port="{@name}"
-                     direction="{@direction}" interface="{@interface}"
-                     type-key="{(@primitive, @type)[1]}"/>
-            </xsl:for-each>
-          </xsl:for-each>
-        </fp:work>
-      </xsl:document>
-    </xsl:variable>
+    <xsl:variable name="work" as="document-node()" select="fp:work($instances, $bound-tree)"/>
     <xsl:variable name="connectors" as="element(pim:connector)*"
         select="$tops/pim:connector[not(@kind eq 'delegation')][count(pim:end[@part]) ge 2]"/>
     <xsl:variable name="raw-connections" as="element(pim:connection)*"
@@ -374,6 +309,90 @@
       </xsl:for-each>
     </pim:binding>
   </xsl:template>
+
+  <!-- every instance without an execution environment (BND006) and every
+       environment of an unknown middleware (BND003), as maps for
+       f:fail-all: all of them at once -->
+  <xsl:function name="fp:deployment-problems" as="map(*)*">
+    <xsl:param name="tops" as="element(pim:component)*"/>
+    <xsl:param name="components" as="element(pim:component)*"/>
+    <xsl:param name="ees" as="element(pim:node)*"/>
+    <!-- the part (if any), component and top composite of each instance -->
+    <xsl:variable name="placed" as="map(*)*"
+        select="if (exists($tops))
+                then $tops/pim:part[key('fp:id', @type, root(.))/self::pim:component]
+                     ! map { 'part': ., 'component': key('fp:id', @type, root(.)), 'top': .. }
+                else $components[not(@abstract = ('true', '1'))][pim:port or pim:realization]
+                     ! map { 'component': . }"/>
+    <xsl:variable name="found" as="element(pim:node)*"
+        select="$placed ! fp:instance-ee(?part, ?component, ?top, $ees)"/>
+    <xsl:sequence select="$placed[empty(fp:instance-ee(?part, ?component, ?top, $ees))]
+                            ! fp:no-ee-problem(?part, ?component, $ees),
+                          ($found/.) ! fp:middleware-problems(.)"/>
+  </xsl:function>
+
+  <!-- the instances, in a document of their own (keys find them there):
+       the parts of the top composites, else one per component with ports
+       or a realization; an instance that fails is an fp:error element -->
+  <xsl:function name="fp:instance-tree" as="document-node()">
+    <xsl:param name="tops" as="element(pim:component)*"/>
+    <xsl:param name="components" as="element(pim:component)*"/>
+    <xsl:param name="ees" as="element(pim:node)*"/>
+    <xsl:param name="hosts" as="element(pim:node)*"/>
+    <xsl:document>
+      <xsl:choose>
+        <xsl:when test="exists($tops)">
+          <xsl:for-each select="$tops/pim:part[key('fp:id', @type, root(.))/self::pim:component]">
+            <xsl:try>
+              <xsl:sequence select="fp:instance(., key('fp:id', @type, root(.)), .., $ees, $hosts)"/>
+              <xsl:catch><xsl:sequence select="fp:caught($err:code, $err:description, $err:value)"/></xsl:catch>
+            </xsl:try>
+          </xsl:for-each>
+        </xsl:when>
+        <xsl:otherwise>
+          <xsl:for-each select="$components[not(@abstract = ('true', '1'))][pim:port or pim:realization]">
+            <xsl:try>
+              <xsl:sequence select="fp:instance((), ., (), $ees, $hosts)"/>
+              <xsl:catch><xsl:sequence select="fp:caught($err:code, $err:description, $err:value)"/></xsl:catch>
+            </xsl:try>
+          </xsl:for-each>
+        </xsl:otherwise>
+      </xsl:choose>
+    </xsl:document>
+  </xsl:function>
+
+  <!-- the bound components of the instantiated components, in a document
+       of their own; a component that fails is an fp:error element -->
+  <xsl:function name="fp:bound-tree" as="document-node()">
+    <xsl:param name="components" as="element(pim:component)*"/>
+    <xsl:param name="instance-tree" as="document-node()"/>
+    <xsl:document>
+      <xsl:for-each select="$components[exists(key('fp:instance-by-component', @id, $instance-tree))]">
+        <xsl:try>
+          <xsl:sequence select="fp:bound-component(.)"/>
+          <xsl:catch><xsl:sequence select="fp:caught($err:code, $err:description, $err:value)"/></xsl:catch>
+        </xsl:try>
+      </xsl:for-each>
+    </xsl:document>
+  </xsl:function>
+
+  <!-- the working tree of the connections: one fp:ip per data port of an instance -->
+  <xsl:function name="fp:work" as="document-node()">
+    <xsl:param name="instances" as="element(pim:instance)*"/>
+    <xsl:param name="bound-tree" as="document-node()"/>
+    <xsl:document>
+      <fp:work>
+        <xsl:for-each select="$instances">
+          <xsl:variable name="inst" as="element(pim:instance)" select="."/>
+          <xsl:for-each select="key('fp:bc', $inst/@component, $bound-tree)/pim:data-port">
+            <fp:ip instance="{$inst/@name}" part="{$inst/@xmi-id}" port="{@port}" data-port="{@name}"
+                   direction="{@direction}" interface="{@interface}"
+                   type-key="{(@primitive, @type)[1]}"/>
+          </xsl:for-each>
+        </xsl:for-each>
+      </fp:work>
+    </xsl:document>
+  </xsl:function>
 
   <!-- an error xsl:catch caught: ours (f:fail: a finding about the model)
        as an fp:error element to raise with the others; anything else
