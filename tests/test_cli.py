@@ -138,9 +138,9 @@ def test_check_runs_what_generate_runs_and_names_the_rule_sets(capsys: pytest.Ca
     assert gen_code == 1 and code == 1
     assert "nothing to generate" in gen_err and "nothing to generate" in err
     # ORO005 comes from the PSM stylesheet: the PSM rules never ran, and the summary says so
-    assert "checked for orocos; rules: pim.sch (model))" in out
+    assert "checked for orocos; rules: pim.sch)" in out
     code, out, _ = run(capsys, "check", str(CASES / "pid" / "model.xmi"))
-    assert code == 0 and "checked for ros1; rules: pim.sch (model), pim.sch (ros), psm-ros.sch" in out
+    assert code == 0 and "checked for ros1; rules: pim.sch, ros-limits.sch, psm-ros.sch" in out
 
 
 def test_a_package_name_that_is_rewritten_says_so(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:

@@ -1,4 +1,4 @@
-"""Tests of the Orocos chain: bind, orocos-psm, m2t/orocos (one module each).
+"""Tests of the Orocos chain: bind, m2m/orocos/psm, m2t/orocos (one module each).
 
 Runs the stylesheets directly with saxonche on hand-written PIMs
 (tests/data/orocos/) and, when present, on the fixture models
@@ -54,7 +54,7 @@ def schema(rel: str) -> xmlschema.XMLSchema:
 def chain(pim_text: str, package: str = "", model_dir: str = "."):
     bound = run("m2m/bind.xsl", pim_text)
     schema("pim/1/pim.xsd").validate(bound)
-    psm = run("m2m/orocos-psm.xsl", bound, **{"package-name": package})
+    psm = run("m2m/orocos/psm.xsl", bound, **{"package-name": package})
     schema("psm-orocos/1/psm-orocos.xsd").validate(psm)
     files = run("m2t/orocos/main.xsl", psm, **{"model-dir-from-output": model_dir})
     schema("fileset/1/fileset.xsd").validate(files)
@@ -181,7 +181,7 @@ def test_psm_connections_and_instances():
 
 def test_psm_package_parameter():
     bound = run("m2m/bind.xsl", DATA / "unprofiled.pim.xml")
-    psm = ET.fromstring(run("m2m/orocos-psm.xsl", bound, **{"package-name": "My Robot"}))
+    psm = ET.fromstring(run("m2m/orocos/psm.xsl", bound, **{"package-name": "My Robot"}))
     assert psm.get("package") == "my_robot"
     tc = [t for t in psm.iter(O + "task-context") if t.get("class") == "Prosilica"][0]
     # unprofiled R4: public/protected, not read-only, not a convention name, mappable type
@@ -193,7 +193,7 @@ def test_psm_unsupported_type():
     text = _mutate("unprofiled", 'type-name="double" type-library="c" primitive="float64" visibility="public"/>',
                    'type-name="Pose" type-library="c" visibility="public"/>')
     with pytest.raises(Exception) as exc:
-        run("m2m/orocos-psm.xsl", run("m2m/bind.xsl", text))
+        run("m2m/orocos/psm.xsl", run("m2m/bind.xsl", text))
     assert "ORO001" in str(exc.value) and "screws" in str(exc.value)
 
 
@@ -375,7 +375,7 @@ def test_fixture_chain(case_name):
 def test_text_multi_cpu_affinity_reaches_every_file():
     """A mask of several CPUs is set in XML, .ops and Lua alike (issue 17: it was XML only)."""
     bound = run("m2m/bind.xsl", (DATA / "composite.pim.xml").read_text())
-    psm = run("m2m/orocos-psm.xsl", bound, **{"package-name": ""})
+    psm = run("m2m/orocos/psm.xsl", bound, **{"package-name": ""})
     psm = psm.replace('cpu-affinity="2"', 'cpu-affinity="6"')
     assert 'cpu-affinity="6"' in psm
     files = {f.get("path"): f.text for f in ET.fromstring(run("m2t/orocos/main.xsl", psm, **{"model-dir-from-output": "."})).iter(FS + "file")}

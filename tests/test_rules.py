@@ -30,6 +30,7 @@ CASES = ROOT / "fixtures" / "cases"
 PIM_RULES = ROOT / "schemas" / "pim" / "1" / "pim.sch"
 OROCOS_RULES = ROOT / "schemas" / "psm-orocos" / "1" / "psm-orocos.sch"
 ROS_RULES = ROOT / "schemas" / "psm-ros" / "1" / "psm-ros.sch"
+ROS_LIMITS = ROOT / "schemas" / "psm-ros" / "1" / "ros-limits.sch"
 PID_PIM = CASES / "pid" / "expected" / "bind.xml"
 MEKA_PSM = CASES / "meka" / "expected" / "orocos" / "psm.xml"
 PID_ROS = CASES / "pid" / "expected" / "ros1" / "psm.xml"
@@ -72,14 +73,14 @@ CASES_BY_RULE: dict[str, tuple[Path, str | None, Path, list[tuple[str, str]]]] =
                                           r'\1>\n      <pim:start-after instance="RobotInterface" xmi-id="_d1"/>'),
                                          (r'(<pim:instance name="RobotInterface"[^>]*?) start-order="3">',
                                           r'\1>\n      <pim:start-after instance="PIDController" xmi-id="_d2"/>')]),
-    "PLT011": (PIM_RULES, "ros", PID_PIM, [(r'(<pim:instance name="PIDController"[^>]*?>)',
+    "PLT011": (ROS_LIMITS, None, PID_PIM, [(r'(<pim:instance name="PIDController"[^>]*?>)',
                                            r'\1\n      <pim:start-after instance="TrajectoryGenerator" xmi-id="_d1"/>')]),
     "PLT001": (PIM_RULES, None, PID_PIM, [(r'(name="TrajectoryGenerator"[^>]*?)middleware="ROS"',
                                           r'\1middleware="OROCOS"'), ('period="0.01"', 'period="0"')]),
     "PLT002": (PIM_RULES, None, PID_PIM, [(r'(name="TrajectoryGenerator"[^>]*?)middleware="ROS"',
                                           r'\1middleware="OROCOS"'),
                                          ('period-source="realizing-class"', 'period-source="default"')]),
-    "PLT010": (PIM_RULES, "ros", PID_PIM, [('scheduler="OTHER"', 'scheduler="RT"')]),
+    "PLT010": (ROS_LIMITS, None, PID_PIM, [('scheduler="OTHER"', 'scheduler="RT"')]),
     "ORO101": (OROCOS_RULES, None, MEKA_PSM, [('priority="50" scheduler="ORO_SCHED_OTHER"',
                                               'priority="0" scheduler="ORO_SCHED_RT"')]),
     "ORO102": (OROCOS_RULES, None, MEKA_PSM, [('priority="50" scheduler="ORO_SCHED_OTHER"',

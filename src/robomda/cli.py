@@ -61,7 +61,7 @@ def _parser() -> argparse.ArgumentParser:
     gen.add_argument("--package-name", default="", metavar="NAME",
                      help="package / CMake project name (default: derived from the model name)")
     gen.add_argument("--type-map", type=Path, metavar="FILE",
-                     help="ROS targets: your message type map (format of xslt/m2m/ros-types.xml); its entries win")
+                     help="ROS targets: your message type map (format of xslt/m2m/ros/types.xml); its entries win")
     gen.add_argument("--model-path", type=Path, action="append", default=[], metavar="DIR",
                      help="a folder of model files your model references (libraries kept elsewhere); "
                           "repeat for several. Without it only files in the model's own folder are read")

@@ -215,28 +215,32 @@
 
   <!-- the pim:classifier-body group of the context classifier -->
   <xsl:template name="tp:classifier-body" as="element()*">
-    <xsl:param name="root" as="element()" tunnel="yes"/>
     <xsl:param name="decorate" as="xs:boolean" select="true()"/>
-    <xsl:param name="href-types" as="map(*)" tunnel="yes"/>
-    <xsl:variable name="c" as="element()" select="."/>
-    <xsl:variable name="id" as="xs:string" select="fp:id(.)"/>
-    <xsl:variable name="meta" as="xs:string" select="fp:meta(.)"/>
     <xsl:if test="$decorate">
       <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
     </xsl:if>
     <xsl:apply-templates select="generalization" mode="mp:feature"/>
-    <!-- provides: the realizations whose client is this classifier (the
-         client is the implementing classifier, wherever the XMI put the
-         element); an owned one without a client counts for its owner -->
+    <xsl:variable name="id" as="xs:string" select="fp:id(.)"/>
+    <xsl:call-template name="tp:classifier-provides"><xsl:with-param name="id" select="$id"/></xsl:call-template>
+    <xsl:call-template name="tp:classifier-requires"><xsl:with-param name="id" select="$id"/></xsl:call-template>
+    <xsl:call-template name="tp:classifier-features"><xsl:with-param name="id" select="$id"/></xsl:call-template>
+  </xsl:template>
+
+  <!-- pim:provides: the realizations whose client is this classifier (the
+       client is the implementing classifier, wherever the XMI put the
+       element; an owned one without a client counts for its owner), and
+       the provided interfaces of exposed ports -->
+  <xsl:template name="tp:classifier-provides" as="element(pim:provides)*">
+    <xsl:param name="id" as="xs:string"/>
     <xsl:variable name="realizations" as="element()*"
         select="interfaceRealization[empty(fp:ref-ids(., 'client'))]
                 | key('fp:dep-by-client', $id)[@x:type = ('InterfaceRealization', 'Realization')]"/>
     <xsl:for-each select="$realizations">
-      <xsl:variable name="r" as="element()" select="."/>
+      <xsl:variable name="realization" as="element()" select="."/>
       <xsl:for-each select="fp:realized-interfaces(.)">
-        <pim:provides id="{fp:nth-id($r, position())}" interface="{fp:id(.)}">
+        <pim:provides id="{fp:nth-id($realization, position())}" interface="{fp:id(.)}">
           <xsl:if test="position() eq 1">
-            <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="$r"/></xsl:call-template>
+            <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="$realization"/></xsl:call-template>
           </xsl:if>
         </pim:provides>
       </xsl:for-each>
@@ -247,16 +251,22 @@
         <pim:provides id="{fp:id($exposed)}" interface="{fp:id(.)}"/>
       </xsl:for-each>
     </xsl:for-each>
-    <!-- requires -->
+  </xsl:template>
+
+  <!-- pim:requires: the Usages whose client is this classifier (a Usage
+       with several clients gives each its own ids), and the required
+       interfaces of exposed ports -->
+  <xsl:template name="tp:classifier-requires" as="element(pim:requires)*">
+    <xsl:param name="id" as="xs:string"/>
     <xsl:for-each select="key('fp:dep-by-client', $id)[@x:type eq 'Usage']">
-      <xsl:variable name="u" as="element()" select="."/>
+      <xsl:variable name="usage" as="element()" select="."/>
       <xsl:variable name="clients" as="xs:string*" select="distinct-values(fp:ref-ids(., 'client'))"/>
       <xsl:variable name="offset" as="xs:integer"
           select="(index-of($clients, $id)[1] - 1) * count(fp:ref-ids(., 'supplier'))"/>
       <xsl:for-each select="fp:used-interfaces(.)">
-        <pim:requires id="{fp:nth-id($u, $offset + position())}" interface="{fp:id(.)}">
+        <pim:requires id="{fp:nth-id($usage, $offset + position())}" interface="{fp:id(.)}">
           <xsl:if test="position() eq 1 and $offset eq 0">
-            <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="$u"/></xsl:call-template>
+            <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="$usage"/></xsl:call-template>
           </xsl:if>
         </pim:requires>
       </xsl:for-each>
@@ -267,11 +277,19 @@
         <pim:requires id="{fp:id($exposed)}" interface="{fp:id(.)}"/>
       </xsl:for-each>
     </xsl:for-each>
-    <!-- structural features -->
-    <xsl:variable name="properties" as="element()*"
-        select="ownedAttribute[not(@x:type = 'Port')]"/>
+  </xsl:template>
+
+  <!-- the structural features: attributes, ports, parts (of a Class or a
+       Component), operations and connectors, including connectors a tool
+       wrote elsewhere (Visual Paradigm: under the Model) that belong to
+       the classifier owning the parts they join -->
+  <xsl:template name="tp:classifier-features" as="element()*">
+    <xsl:param name="root" as="element()" tunnel="yes"/>
+    <xsl:param name="href-types" as="map(*)" tunnel="yes"/>
+    <xsl:param name="id" as="xs:string"/>
+    <xsl:variable name="properties" as="element()*" select="ownedAttribute[not(@x:type = 'Port')]"/>
     <xsl:variable name="parts" as="element()*"
-        select="if ($meta = ('Class', 'Component')) then $properties[fp:is-part(.)] else ()"/>
+        select="if (fp:meta(.) = ('Class', 'Component')) then $properties[fp:is-part(.)] else ()"/>
     <xsl:apply-templates select="$properties except $parts" mode="mp:feature"/>
     <xsl:apply-templates select="(ownedAttribute | ownedPort)[@x:type eq 'Port']" mode="mp:feature"/>
     <xsl:for-each select="$parts">
@@ -283,11 +301,9 @@
     <xsl:apply-templates select="ownedOperation" mode="mp:feature"/>
     <xsl:apply-templates select="ownedConnector[not(end/role/@href or end/partWithPort/@href)]"
         mode="mp:feature"/>
-    <!-- connectors a tool wrote elsewhere (Visual Paradigm: under the
-         Model) belong to the classifier that owns the parts they join -->
     <xsl:apply-templates select="key('fp:stray-connector', $id)[not(end/role/@href or end/partWithPort/@href)]"
         mode="mp:feature">
-      <xsl:with-param name="owner" select="$c"/>
+      <xsl:with-param name="owner" select="."/>
     </xsl:apply-templates>
   </xsl:template>
 

@@ -3,7 +3,7 @@
   xslt/m2t/orocos/main.xsl - Orocos PSM -> file set (the Orocos package text).
 
   Reads:   urn:robomda:psm-orocos:1 (schemas/psm-orocos/1/psm-orocos.xsd),
-           from xslt/m2m/orocos-psm.xsl.
+           from xslt/m2m/orocos/psm.xsl.
   Writes:  urn:robomda:fileset:1 (schemas/fileset/1/fileset.xsd), target "orocos":
              include/<pkg>/<Class>.hpp, src/<Class>.cpp     per component (generated)
              include/<pkg>/<Class>Base.hpp, src/<Class>Base.cpp + user

@@ -3,7 +3,7 @@
   xslt/m2t/ros2/main.xsl - ROS PSM (ros-version 2) -> file set (a catkin package).
 
   Reads:   urn:robomda:psm-ros:1 (schemas/psm-ros/1/psm-ros.xsd), from
-           xslt/m2m/ros-psm.xsl with ros-version=1.
+           xslt/m2m/ros/psm.xsl with ros-version=1.
   Writes:  urn:robomda:fileset:1 (schemas/fileset/1/fileset.xsd), target "ros2":
              include/<pkg>/<Class>.hpp, src/<Class>.cpp, src/<exe>.cpp  per node
              msg/<Type>.msg          per generated message

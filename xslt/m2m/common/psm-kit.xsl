@@ -1,0 +1,222 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/m2m/common/psm-kit.xsl - what every PSM stage makes the same way from
+  a bound PIM: the component wrapper (realizing class, lifecycle hooks,
+  accessors, which operations and attributes a component offers), type
+  look-up helpers and the parsing of default values. Included by each
+  target's xslt/m2m/<target>/psm.xsl; a target formats what the kit finds.
+
+  Reads:   elements of a bound PIM (urn:robomda:pim:1, xslt/m2m/bind.xsl).
+  Writes:  elements in the including PSM's namespace, named by its globals
+           $fp:psm-namespace (the namespace URI) and $fp:psm-prefix (its
+           prefix), e.g. 'urn:robomda:psm-orocos:1' and 'o'; strings.
+  Params:  none (the globals above are the including stylesheet's).
+  Errors:  through f:fail, with the code the caller passes:
+           fp:check-class-names  two component types map to one C++ class
+           fp:parse-default      a default value is not valid for its kind
+
+  Functions
+    fp:package-name($requested, $model)  the package name ('' = from model)
+    fp:check-class-names($components, $code)
+    fp:is-array($typed)          multiplicity upper bound other than 1
+    fp:type-label($typed)        'Type' or 'Type[*]', for messages
+    fp:realization($bc)          the realizing class of a bound component
+    fp:owner($bc)                where operations and attributes are read
+    fp:callable($bc)             the non-private operations of the realization
+    fp:psm-realizing-class($bc)  <x:realizing-class> of a wrapper, or ()
+    fp:psm-hooks($bc)            <x:hook> per lifecycle hook, with call if any
+    fp:psm-library($library, $package)   <x:library> of a pim:library
+    fp:psm-doc($e)               <x:doc> of a model element's comment
+    fp:accessor($data-port)      get<Datum> (out) / set<Datum> (in)
+    fp:offered-operations($bc, $excluded)  protected, not static, not excluded
+    fp:configurable-attributes($bc)  the attributes stereotyped Configurable
+    fp:convention-attributes($bc)    without any: the convention's choice
+    fp:parse-default($value, $kind, $primitive, $id, $code)  see below
+    fp:decimal($number)          a number text with a '.0' where it has none
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:pim="urn:robomda:pim:1"
+    xmlns:f="urn:robomda:xslt:function"
+    xmlns:fp="urn:robomda:xslt:function:private"
+    exclude-result-prefixes="#all">
+
+  <!-- the lifecycle hooks a component may implement, in calling order -->
+  <xsl:variable name="fp:lifecycle" as="xs:string+" select="('configure', 'start', 'update', 'stop', 'cleanup')"/>
+  <!-- attribute names that configure the deployment, not the component
+       (the import reads them as activity settings) -->
+  <xsl:variable name="fp:convention-names" as="xs:string+" select="('sample', 'priority', 'scheduler', 'cpuAffinity')"/>
+
+  <xsl:key name="fp:kit-id" match="*[@id]" use="@id"/>
+
+  <!-- ========================================================== package -->
+  <xsl:function name="fp:package-name" as="xs:string">
+    <xsl:param name="requested" as="xs:string"/>
+    <xsl:param name="model" as="element(pim:model)"/>
+    <xsl:sequence select="f:snake-case(if (normalize-space($requested)) then $requested else $model/@name)"/>
+  </xsl:function>
+
+  <!-- fails with $code when two of $components map to one C++ class -->
+  <xsl:function name="fp:check-class-names" as="empty-sequence()">
+    <xsl:param name="components" as="element(pim:bound-component)*"/>
+    <xsl:param name="code" as="xs:string"/>
+    <xsl:for-each-group select="$components" group-by="f:upper-camel(@name)">
+      <xsl:if test="count(current-group()) gt 1">
+        <xsl:sequence select="f:fail($code, current-group()[2]/@component, 'components '''
+            || string-join(current-group()/@name, ''', ''') || ''' all map to C++ class ' || current-grouping-key())"/>
+      </xsl:if>
+    </xsl:for-each-group>
+  </xsl:function>
+
+  <!-- ============================================================ types -->
+  <xsl:function name="fp:is-array" as="xs:boolean">
+    <xsl:param name="typed" as="element()"/>
+    <xsl:sequence select="exists($typed/@upper) and not($typed/@upper = ('1', ''))"/>
+  </xsl:function>
+
+  <xsl:function name="fp:type-label" as="xs:string">
+    <xsl:param name="typed" as="element()"/>
+    <xsl:sequence select="($typed/@type-name, $typed/@primitive, '?')[1]
+                          || (if (fp:is-array($typed)) then '[' || $typed/@upper || ']' else '')"/>
+  </xsl:function>
+
+  <!-- ================================================ component wrapper -->
+  <xsl:function name="fp:realization" as="element(pim:class)?">
+    <xsl:param name="bc" as="element(pim:bound-component)"/>
+    <xsl:sequence select="key('fp:kit-id', $bc/@realization, root($bc))"/>
+  </xsl:function>
+
+  <!-- the realizing class, else the component itself (a "base" component) -->
+  <xsl:function name="fp:owner" as="element()">
+    <xsl:param name="bc" as="element(pim:bound-component)"/>
+    <xsl:sequence select="(fp:realization($bc), key('fp:kit-id', $bc/@component, root($bc)))[1]"/>
+  </xsl:function>
+
+  <xsl:function name="fp:callable" as="element(pim:operation)*">
+    <xsl:param name="bc" as="element(pim:bound-component)"/>
+    <xsl:sequence select="fp:realization($bc)/pim:operation[@visibility ne 'private']"/>
+  </xsl:function>
+
+  <xsl:function name="fp:psm-realizing-class" as="element()?">
+    <xsl:param name="bc" as="element(pim:bound-component)"/>
+    <xsl:for-each select="fp:realization($bc)">
+      <xsl:element name="{$fp:psm-prefix}:realizing-class" namespace="{$fp:psm-namespace}">
+        <xsl:attribute name="xmi-id" select="@id"/>
+        <xsl:attribute name="name" select="@name"/>
+        <xsl:attribute name="cpp-name"
+            select="'::' || string-join(tokenize($bc/@cpp-name, '::')[normalize-space(.)] ! f:cpp-identifier(.), '::')"/>
+        <xsl:attribute name="header" select="$bc/@header"/>
+      </xsl:element>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- one hook per lifecycle name; call / returns-bool / xmi-id where the
+       realizing class implements it -->
+  <xsl:function name="fp:psm-hooks" as="element()+">
+    <xsl:param name="bc" as="element(pim:bound-component)"/>
+    <xsl:variable name="callable" as="element(pim:operation)*" select="fp:callable($bc)"/>
+    <xsl:for-each select="$fp:lifecycle">
+      <xsl:variable name="hook" as="xs:string" select="."/>
+      <xsl:variable name="operation" as="element(pim:operation)?" select="$callable[@name eq $hook][1]"/>
+      <xsl:element name="{$fp:psm-prefix}:hook" namespace="{$fp:psm-namespace}">
+        <xsl:attribute name="name" select="$hook"/>
+        <xsl:if test="$operation">
+          <xsl:attribute name="call" select="$hook"/>
+          <xsl:attribute name="returns-bool" select="$operation/pim:parameter[@direction eq 'return']/@primitive = 'boolean'"/>
+          <xsl:attribute name="xmi-id" select="$operation/@id"/>
+        </xsl:if>
+      </xsl:element>
+    </xsl:for-each>
+  </xsl:function>
+
+  <xsl:function name="fp:psm-library" as="element()">
+    <xsl:param name="library" as="element(pim:library)"/>
+    <xsl:param name="package" as="xs:string"/>
+    <xsl:element name="{$fp:psm-prefix}:library" namespace="{$fp:psm-namespace}">
+      <xsl:sequence select="$library/@xmi-id, $library/@name, $library/@path, $library/@absolute,
+                            $library/@target, $library/@include-dir"/>
+      <xsl:attribute name="cmake-var" select="upper-case($package) || '_' || upper-case(f:snake-case($library/@name)) || '_DIR'"/>
+      <xsl:attribute name="build-dir" select="f:snake-case($library/@name) || '-build'"/>
+    </xsl:element>
+  </xsl:function>
+
+  <xsl:function name="fp:psm-doc" as="element()?">
+    <xsl:param name="e" as="element()?"/>
+    <xsl:for-each select="$e/pim:doc[normalize-space(.)]">
+      <xsl:element name="{$fp:psm-prefix}:doc" namespace="{$fp:psm-namespace}">
+        <xsl:value-of select="normalize-space(.)"/>
+      </xsl:element>
+    </xsl:for-each>
+  </xsl:function>
+
+  <xsl:function name="fp:accessor" as="xs:string">
+    <xsl:param name="data-port" as="element(pim:data-port)"/>
+    <xsl:sequence select="(if ($data-port/@direction eq 'out') then 'get' else 'set')
+                          || f:upper-first(f:cpp-identifier($data-port/@datum-name))"/>
+  </xsl:function>
+
+  <!-- the operations a component offers: the protected, non-static
+       operations of its owner (fp:owner) not named in $excluded -->
+  <xsl:function name="fp:offered-operations" as="element(pim:operation)*">
+    <xsl:param name="bc" as="element(pim:bound-component)"/>
+    <xsl:param name="excluded" as="xs:string*"/>
+    <xsl:sequence select="fp:owner($bc)/pim:operation[@visibility eq 'protected'][not(@static = ('true', '1'))]
+                                                     [not(@name = $excluded)]"/>
+  </xsl:function>
+
+  <xsl:function name="fp:configurable-attributes" as="element(pim:attribute)*">
+    <xsl:param name="bc" as="element(pim:bound-component)"/>
+    <xsl:sequence select="fp:owner($bc)/pim:attribute[exists(f:stereotype(., 'Configurable'))]"/>
+  </xsl:function>
+
+  <!-- the attributes a component without Configurable ones exposes: public
+       and protected, not static, not read-only, not a convention name (the
+       caller keeps those its target has a type for) -->
+  <xsl:function name="fp:convention-attributes" as="element(pim:attribute)*">
+    <xsl:param name="bc" as="element(pim:bound-component)"/>
+    <xsl:sequence select="fp:owner($bc)/pim:attribute[@visibility = ('public', 'protected')]
+                            [not(@static = ('true', '1'))][not(@read-only = ('true', '1'))]
+                            [not(@name = $fp:convention-names)]"/>
+  </xsl:function>
+
+  <!-- ==================================================== default values -->
+  <!-- A model's default value, checked against the kind of value its type
+       holds, as a canonical text each target formats in its own languages:
+         string   the text, unquoted ('x' or "x" in the model)
+         boolean  'true' or 'false' (from true / false / 1 / 0, any case)
+         char     the one character (the caller decides which it accepts)
+         real     the number as written, without a C++ suffix (f, d, L ...)
+         integer  the canonical integer; not negative for an unsigned
+                  $primitive ('u...' or 'octet')
+       Fails with $code, naming $value, when it does not fit. -->
+  <xsl:function name="fp:parse-default" as="xs:string">
+    <xsl:param name="value" as="xs:string"/>
+    <xsl:param name="kind" as="xs:string"/>
+    <xsl:param name="primitive" as="xs:string"/>
+    <xsl:param name="id" as="xs:string"/>
+    <xsl:param name="code" as="xs:string"/>
+    <xsl:variable name="text" as="xs:string" select="f:unquote(normalize-space($value))"/>
+    <xsl:variable name="number" as="xs:string" select="replace($text, '^([+\-]?[0-9.eE+\-]+)[fFdDlLuU]*$', '$1')"/>
+    <xsl:sequence select="
+      if ($kind eq 'string') then $text
+      else if ($kind eq 'boolean') then
+        (if (lower-case($text) = ('true', '1')) then 'true'
+         else if (lower-case($text) = ('false', '0')) then 'false'
+         else f:fail($code, $id, 'default ''' || $value || ''' is not a boolean'))
+      else if ($kind eq 'char') then $text
+      else if ($kind eq 'real') then
+        (if ($number castable as xs:double and not(matches($number, 'nan|inf', 'i'))) then $number
+         else f:fail($code, $id, 'default ''' || $value || ''' is not a number'))
+      else
+        (if ($number castable as xs:integer
+             and (not(starts-with($primitive, 'u') or $primitive eq 'octet') or xs:integer($number) ge 0))
+         then string(xs:integer($number))
+         else f:fail($code, $id, 'default ''' || $value || ''' is not a valid ' || $primitive))"/>
+  </xsl:function>
+
+  <xsl:function name="fp:decimal" as="xs:string">
+    <xsl:param name="number" as="xs:string"/>
+    <xsl:sequence select="if (contains($number, '.') or contains(lower-case($number), 'e')) then $number else $number || '.0'"/>
+  </xsl:function>
+</xsl:stylesheet>

@@ -1,0 +1,411 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/m2m/orocos/psm.xsl - bound PIM -> Orocos RTT 2.x PSM (seed 000 R1-R5).
+
+  Reads:   a bound PIM, urn:robomda:pim:1 with pim:binding (xslt/m2m/bind.xsl).
+  Writes:  urn:robomda:psm-orocos:1 (schemas/psm-orocos/1/psm-orocos.xsd),
+           indented as f:indent (common/indent.xsl) indents it, through its
+           rules (t:indented-content) in the same pass.
+  Data:    xslt/m2m/orocos/types.xml (primitive kind -> C++ / cpf XML type, sample).
+  Uses:    xslt/m2m/common/psm-kit.xsl (wrapper, hooks, default values).
+  Params:  package-name (see below).
+
+  Rules
+  R1  one TaskContext per component type with an OROCOS instance: class =
+      UpperCamel(component name), namespace = package name, type name
+      namespace::class. kind "wrapper" when the component has a realizing
+      class (the TaskContext derives from it, seed 000 Fig. 11), else "base"
+      (a generated <class>Base plus a user class <class>).
+  R2  one port per bound data port: out -> RTT::OutputPort<T>, in ->
+      RTT::InputPort<T>; member port_<name>; accessor get<Datum> / set<Datum>.
+  R3  operations: the protected operations of the realizing class (base kind:
+      of the component), except the lifecycle names and the names RTT's
+      TaskContext already defines. Thread: OperationThread tag, else
+      ClientThread for a query, else OwnThread. in parameters by value
+      (const T& for strings), out / inout by reference.
+  R4  properties: the attributes stereotyped Configurable of the realizing
+      class (base kind: of the component); without any, the public and
+      protected attributes that are not static, not read-only and not named
+      sample / priority / scheduler / cpuAffinity. Convention-selected
+      attributes of a type RTT cannot marshal are skipped; a Configurable one
+      is an error.
+  R5  activity: deployer type "Activity" for all instances (own thread;
+      Period 0 = non-periodic, else periodic); PeriodicActivity is not used
+      because it shares one thread among components with equal period and
+      priority. Scheduler always explicit.
+  Deployment: instances with middleware OROCOS (all instances when none is
+  on OROCOS, see ORO006); connections whose ends are all such instances
+  (ends on other middlewares are dropped, a connection
+  left without writer or reader is dropped: a name used by one port would
+  need a transport). Peers: a reader instance gets the writer instances of a
+  connection whose interface declares operations (it may call them); data
+  flow alone needs no peers.
+  Deployment sequence (seed 002): the o:instance elements are written in
+  the binding's start order (pim:instance/@start-order; instances without
+  one, on a cycle of the constraints, come last in binding order), so the
+  text stage loads, configures and starts them in that order; each keeps
+  its constraints on other Orocos instances as o:start-after.
+
+  Errors (urn:robomda:error, f:fail):
+    ORO001  a port, operation parameter or Configurable property has a type
+            robomda cannot map to C++ / cpf XML (names the element)
+    ORO002  a property default value is not valid for its type
+    ORO003  the input has no pim:binding (run xslt/m2m/bind.xsl first)
+    ORO004  two component types map to the same C++ class name
+    ORO005  nothing to generate: the model has no component instance
+  Warnings (f:warn):
+    ORO006  no instance is deployed on OROCOS: all instances are generated
+            for Orocos anyway (the same model on another middleware)
+    ORO007  an instance deployed on another middleware is left out (the model
+            deploys some components on OROCOS and others elsewhere)
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:map="http://www.w3.org/2005/xpath-functions/map"
+    xmlns:pim="urn:robomda:pim:1"
+    xmlns:o="urn:robomda:psm-orocos:1"
+    xmlns:ty="urn:robomda:orocos-types:1"
+    xmlns:f="urn:robomda:xslt:function"
+    xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:m="urn:robomda:xslt:mode"
+    xmlns:t="urn:robomda:xslt:template"
+    exclude-result-prefixes="#all">
+
+  <xsl:include href="../../common/errors.xsl"/>
+  <xsl:include href="../../common/literals.xsl"/>
+  <xsl:include href="../../common/indent.xsl"/>
+  <xsl:include href="../../common/naming.xsl"/>
+  <xsl:include href="../../common/profile.xsl"/>
+  <xsl:include href="../common/psm-kit.xsl"/>
+
+  <xsl:param name="package-name" as="xs:string" select="''">
+    <!-- the component package (CMake project, deployer Import); '' = lower snake-case of the model name -->
+  </xsl:param>
+
+  <xsl:output method="xml" indent="no" encoding="UTF-8"/>
+  <xsl:mode name="m:to-psm" on-no-match="fail"/>
+
+  <!-- the elements the kit (../common/psm-kit.xsl) makes -->
+  <xsl:variable name="fp:psm-namespace" as="xs:string" select="'urn:robomda:psm-orocos:1'"/>
+  <xsl:variable name="fp:psm-prefix" as="xs:string" select="'o'"/>
+
+  <xsl:key name="fp:id" match="*[@id]" use="@id"/>
+  <xsl:key name="fp:type" match="ty:type" use="@primitive"/>
+  <xsl:key name="fp:instance-of" match="pim:instance" use="@component"/>
+  <xsl:key name="fp:instance-by-middleware" match="pim:instance" use="@middleware"/>
+  <xsl:key name="fp:connection-by-instance" match="pim:connection" use="(pim:writer | pim:reader)/@instance"/>
+  <xsl:key name="fp:host" match="pim:host" use="@xmi-id"/>
+  <!-- on the temporary tree of task contexts -->
+  <xsl:key name="fp:task-context" match="o:task-context" use="@xmi-id"/>
+
+  <xsl:variable name="fp:types" as="document-node()" select="doc('types.xml')"/>
+  <xsl:variable name="fp:reserved-operations" as="xs:string+" select="(
+      $fp:lifecycle, 'trigger', 'error', 'recover',
+      'activate', 'isRunning', 'isActive', 'isConfigured', 'inFatalError', 'inException',
+      'inRunTimeError', 'getPeriod', 'setPeriod', 'getCpuAffinity', 'setCpuAffinity',
+      'loadService', 'getName', 'getState')"/>
+
+  <!-- ================================================================ entry -->
+  <!-- the result is indented as f:indent (common/indent.xsl) would indent
+       it, in one pass: o:deployment puts its children through f:indent's
+       rules (t:indented-content), so the task contexts, made once in a tree of
+       their own, are not copied into an unindented result first -->
+  <xsl:template match="/" as="document-node()">
+    <xsl:document>
+      <xsl:apply-templates select="pim:model" mode="m:to-psm"/>
+    </xsl:document>
+  </xsl:template>
+
+  <xsl:template match="pim:model[empty(pim:binding)]" mode="m:to-psm" as="empty-sequence()">
+    <xsl:sequence select="f:fail('ORO003', @id, 'the model has no platform binding: run xslt/m2m/bind.xsl first')"/>
+  </xsl:template>
+
+  <xsl:template match="pim:model" mode="m:to-psm" as="element(o:deployment)">
+    <xsl:variable name="binding" as="element(pim:binding)" select="pim:binding"/>
+    <xsl:variable name="package" as="xs:string" select="fp:package-name($package-name, .)"/>
+    <xsl:variable name="instances" as="element(pim:instance)*" select="$binding/pim:instance[fp:on-target(.)]"/>
+    <xsl:sequence select="fp:oro-check-targets(., $instances)"/>
+    <!-- the names and the component ids of $instances, as sets: whether an
+         instance / component is in the package is one look-up -->
+    <xsl:variable name="targets" as="map(xs:string, xs:boolean)"
+        select="map:merge(distinct-values($instances/@name ! string(.)) ! map:entry(., true()))"/>
+    <xsl:variable name="target-components" as="map(xs:string, xs:boolean)"
+        select="map:merge(distinct-values($instances/@component ! string(.)) ! map:entry(., true()))"/>
+    <xsl:variable name="components" as="element(pim:bound-component)*"
+        select="$binding/pim:bound-component[@component ! map:contains($target-components, string(.))]"/>
+    <xsl:sequence select="fp:check-class-names($components, 'ORO004')"/>
+    <!-- each task context is made once: listed here, and looked up (key
+         fp:task-context) by the instances for their property values -->
+    <xsl:variable name="task-contexts" as="document-node()">
+      <xsl:document>
+        <xsl:sequence select="$components ! fp:task-context(., $package)"/>
+      </xsl:document>
+    </xsl:variable>
+    <o:deployment xmi-id="{@id}" model-name="{@name}" deploy-name="{f:snake-case(@name)}"
+                  package="{$package}" namespace="{$package}" source="{@source}">
+      <xsl:variable name="children" as="element()*">
+        <xsl:sequence select="$binding/pim:library ! fp:psm-library(., $package)"/>
+        <xsl:sequence select="$task-contexts/o:task-context"/>
+        <xsl:for-each select="$binding/pim:host">
+          <o:host xmi-id="{@xmi-id}" name="{@name}" hostname="{@hostname}" address="{@address}"/>
+        </xsl:for-each>
+        <xsl:sequence select="$binding/pim:connection[fp:kept-connection(., $binding, $targets)]
+                              ! fp:oro-connection(., $targets)"/>
+        <xsl:sequence select="fp:in-start-order($instances)
+                              ! fp:oro-instance(., $package, $binding, $task-contexts, $targets)"/>
+      </xsl:variable>
+      <xsl:call-template name="t:indented-content">
+        <xsl:with-param name="children" select="$children"/>
+        <xsl:with-param name="margin" select="'&#10;'"/>
+      </xsl:call-template>
+    </o:deployment>
+  </xsl:template>
+
+  <!-- ORO005 when nothing is on the target, ORO006 when it takes every
+       instance, ORO007 for each instance it leaves out -->
+  <xsl:function name="fp:oro-check-targets" as="empty-sequence()">
+    <xsl:param name="model" as="element(pim:model)"/>
+    <xsl:param name="instances" as="element(pim:instance)*"/>
+    <xsl:variable name="binding" as="element(pim:binding)" select="$model/pim:binding"/>
+    <xsl:if test="empty($instances)">
+      <xsl:sequence select="f:fail('ORO005', $model/@id, 'nothing to generate: model ''' || $model/@name
+          || ''' has no component instance (a component with ports or a realizing class)')"/>
+    </xsl:if>
+    <xsl:if test="empty($binding/pim:instance[@middleware eq 'OROCOS'])">
+      <xsl:sequence select="f:warn('ORO006', ($instances/@execution-environment)[1],
+          'no component is deployed on OROCOS (the platform says '
+          || string-join(distinct-values($instances/@middleware), ', ')
+          || '): generating all ' || count($instances) || ' instances for Orocos')"/>
+    </xsl:if>
+    <xsl:for-each select="$binding/pim:instance except $instances">
+      <xsl:sequence select="f:warn('ORO007', string(@xmi-id), 'instance ''' || @name || ''' is deployed on '
+          || @middleware || ', not OROCOS: it is not part of the Orocos package')"/>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- true when $instance goes into the Orocos package: it is deployed on
+       OROCOS, or no instance of the model is (the target then takes them all:
+       the same model runs on another middleware, ORO006 says so) -->
+  <xsl:function name="fp:on-target" as="xs:boolean">
+    <xsl:param name="instance" as="element(pim:instance)"/>
+    <xsl:sequence select="$instance/@middleware eq 'OROCOS'
+                          or empty(key('fp:instance-by-middleware', 'OROCOS', root($instance)))"/>
+  </xsl:function>
+
+  <!-- a connection of $binding that the PSM keeps: one of its writers and
+       one of its readers are OROCOS instances ($targets: the names of the
+       instances of $binding that are on the target, see fp:on-target) -->
+  <xsl:function name="fp:kept-connection" as="xs:boolean">
+    <xsl:param name="connection" as="element(pim:connection)"/>
+    <xsl:param name="binding" as="element(pim:binding)"/>
+    <xsl:param name="targets" as="map(xs:string, xs:boolean)"/>
+    <xsl:sequence select="$connection/.. is $binding
+                          and (some $n in $connection/pim:writer/@instance satisfies map:contains($targets, string($n)))
+                          and (some $n in $connection/pim:reader/@instance satisfies map:contains($targets, string($n)))"/>
+  </xsl:function>
+
+  <!-- the instances in the binding's start order; those without one (on a
+       cycle of the constraints) last, in binding order -->
+  <xsl:function name="fp:in-start-order" as="element(pim:instance)*">
+    <xsl:param name="instances" as="element(pim:instance)*"/>
+    <xsl:perform-sort select="$instances">
+      <xsl:sort select="empty(@start-order)"/>
+      <xsl:sort select="xs:integer((@start-order, 0)[1])"/>
+    </xsl:perform-sort>
+  </xsl:function>
+
+  <xsl:function name="fp:oro-connection" as="element(o:connection)">
+    <xsl:param name="connection" as="element(pim:connection)"/>
+    <xsl:param name="targets" as="map(xs:string, xs:boolean)"/>
+    <xsl:variable name="policy" as="element(pim:policy)?" select="$connection/pim:policy"/>
+    <o:connection xmi-id="{$connection/@xmi-id}" name="{$connection/@name}" type="{$policy/@type}"
+                  type-code="{index-of(('DATA', 'BUFFER', 'CIRCULAR_BUFFER'), $policy/@type) - 1}"
+                  size="{$policy/@size}" lock-policy="{$policy/@lock-policy}"
+                  lock-policy-code="{index-of(('UNSYNC', 'LOCKED', 'LOCK_FREE'), $policy/@lock-policy) - 1}"
+                  init="{$policy/@init}" pull="{$policy/@pull}" topic="{$policy/@topic}">
+      <xsl:for-each select="$connection/pim:writer[@instance ! map:contains($targets, string(.))]">
+        <o:writer instance="{@instance}" port="{@data-port}" xmi-id="{@port}"/>
+      </xsl:for-each>
+      <xsl:for-each select="$connection/pim:reader[@instance ! map:contains($targets, string(.))]">
+        <o:reader instance="{@instance}" port="{@data-port}" xmi-id="{@port}"/>
+      </xsl:for-each>
+    </o:connection>
+  </xsl:function>
+
+  <!-- ============================================================ types -->
+  <xsl:function name="fp:oro-type" as="element(ty:type)?">
+    <xsl:param name="typed" as="element()"/>
+    <xsl:sequence select="if (fp:is-array($typed)) then () else key('fp:type', string($typed/@primitive), $fp:types)"/>
+  </xsl:function>
+
+  <xsl:function name="fp:oro-required-type" as="element(ty:type)">
+    <xsl:param name="typed" as="element()"/>
+    <xsl:param name="id" as="xs:string?"/>
+    <xsl:param name="what" as="xs:string"/>
+    <xsl:variable name="type" as="element(ty:type)?" select="fp:oro-type($typed)"/>
+    <xsl:sequence select="if (exists($type) and ($type/@primitive ne 'void' or $what eq 'result'))
+        then $type
+        else f:fail('ORO001', $id, $what || ' has type ''' || fp:type-label($typed)
+                     || ''', which robomda cannot map to an Orocos C++ / XML type (supported: '
+                     || string-join($fp:types//ty:type[@primitive ne 'void']/@primitive, ', ') || ')')"/>
+  </xsl:function>
+
+  <!-- ===================================================== task context -->
+  <xsl:function name="fp:task-context" as="element(o:task-context)">
+    <xsl:param name="bc" as="element(pim:bound-component)"/>
+    <xsl:param name="package" as="xs:string"/>
+    <xsl:variable name="component" as="element(pim:component)" select="key('fp:id', $bc/@component, root($bc))"/>
+    <xsl:variable name="wrapper" as="xs:boolean" select="exists(fp:realization($bc))"/>
+    <xsl:variable name="class" as="xs:string" select="f:upper-camel($component/@name)"/>
+    <o:task-context xmi-id="{$component/@id}" name="{$component/@name}" class="{$class}" namespace="{$package}"
+                    type-name="{$package}::{$class}" kind="{if ($wrapper) then 'wrapper' else 'base'}"
+                    generated-class="{if ($wrapper) then $class else $class || 'Base'}">
+      <xsl:sequence select="fp:psm-doc($component)"/>
+      <xsl:sequence select="fp:psm-realizing-class($bc)"/>
+      <xsl:sequence select="fp:psm-hooks($bc)"/>
+      <!-- some instance of the component is non-periodic (see o:port/@event) -->
+      <xsl:variable name="non-periodic" as="xs:boolean"
+          select="some $a in key('fp:instance-of', $bc/@component, root($bc))/pim:activity
+                  satisfies number($a/@period) eq 0"/>
+      <xsl:sequence select="$bc/pim:data-port ! fp:oro-port(., $non-periodic)"/>
+      <xsl:sequence select="fp:offered-operations($bc, $fp:reserved-operations) ! fp:operation(.)"/>
+      <xsl:variable name="configurable" as="element(pim:attribute)*" select="fp:configurable-attributes($bc)"/>
+      <xsl:sequence select="if (exists($configurable)) then $configurable ! fp:property(.)
+                            else fp:convention-attributes($bc)[exists(fp:oro-type(.))][@primitive ne 'void']
+                                 ! fp:property(.)"/>
+    </o:task-context>
+  </xsl:function>
+
+  <!-- an input port triggers updateHook (event port) only where some
+       instance of the component is non-periodic ($non-periodic): a periodic
+       activity already runs updateHook on its own clock -->
+  <xsl:function name="fp:oro-port" as="element(o:port)">
+    <xsl:param name="data-port" as="element(pim:data-port)"/>
+    <xsl:param name="non-periodic" as="xs:boolean"/>
+    <xsl:for-each select="$data-port">
+      <xsl:variable name="type" as="element(ty:type)"
+          select="fp:oro-required-type(., @port, 'port ''' || @port-name || ''' (datum ''' || @datum-name || ''' of interface ''' || @interface-name || ''')')"/>
+      <xsl:variable name="accessor" as="xs:string" select="fp:accessor(.)"/>
+      <o:port xmi-id="{@port}" direction="{@direction}"
+              event="{@direction eq 'in' and $non-periodic}"
+              rtt-class="{if (@direction eq 'out') then 'RTT::OutputPort' else 'RTT::InputPort'}&lt;{$type/@cpp}&gt;"
+              name="{@name}" member="port_{@name}" interface="{@interface-name}" datum="{@datum-name}"
+              accessor="{$accessor}" accessor-declared="{exists(fp:callable(..)[@name eq $accessor])}"
+              primitive="{$type/@primitive}" cpp-type="{$type/@cpp}" xml-type="{$type/@xml}" sample="{$type/@sample}">
+        <xsl:sequence select="fp:psm-doc(key('fp:id', @port, root(.)))"/>
+      </o:port>
+    </xsl:for-each>
+  </xsl:function>
+
+  <xsl:function name="fp:operation" as="element(o:operation)">
+    <xsl:param name="operation" as="element(pim:operation)"/>
+    <xsl:variable name="tag" as="xs:string?"
+        select="f:stereotype($operation, 'OperationThread')/pim:tag[@name eq 'thread'][1]/@value"/>
+    <xsl:variable name="thread" as="xs:string"
+        select="if (exists($tag)) then (if (matches($tag, 'CLIENT', 'i')) then 'RTT::ClientThread' else 'RTT::OwnThread')
+                else if ($operation/@query = ('true', '1')) then 'RTT::ClientThread' else 'RTT::OwnThread'"/>
+    <xsl:variable name="result" as="element(pim:parameter)?" select="$operation/pim:parameter[@direction eq 'return'][1]"/>
+    <xsl:variable name="result-type" as="element(ty:type)"
+        select="if ($result) then fp:oro-required-type($result, $operation/@id, 'result of operation ''' || $operation/@name || '''')
+                else key('fp:type', 'void', $fp:types)"/>
+    <o:operation xmi-id="{$operation/@id}" name="{f:cpp-identifier($operation/@name)}" thread="{$thread}"
+                 return-type="{$result-type/@cpp}" return-primitive="{$result-type/@primitive}"
+                 return-sample="{$result-type/@sample}">
+      <xsl:sequence select="fp:psm-doc($operation)"/>
+      <xsl:for-each select="$operation/pim:parameter[@direction ne 'return']">
+        <xsl:variable name="type" as="element(ty:type)"
+            select="fp:oro-required-type(., @id, 'parameter ''' || @name || ''' of operation ''' || $operation/@name || '''')"/>
+        <o:parameter xmi-id="{@id}" name="{f:cpp-identifier((@name[normalize-space(.)], 'arg' || position())[1])}"
+                     direction="{@direction}" primitive="{$type/@primitive}" cpp-type="{$type/@cpp}" xml-type="{$type/@xml}"
+                     decl-type="{if (@direction = ('out', 'inout')) then $type/@cpp || '&amp;'
+                                 else if ($type/@pass eq 'cref') then 'const ' || $type/@cpp || '&amp;' else $type/@cpp}">
+          <xsl:sequence select="fp:psm-doc(.)"/>
+        </o:parameter>
+      </xsl:for-each>
+    </o:operation>
+  </xsl:function>
+
+  <!-- (xml value, script literal, C++ literal) of a default value -->
+  <xsl:function name="fp:oro-values" as="xs:string+">
+    <xsl:param name="value" as="xs:string"/>
+    <xsl:param name="type" as="element(ty:type)"/>
+    <xsl:param name="id" as="xs:string"/>
+    <xsl:variable name="primitive" as="xs:string" select="$type/@primitive"/>
+    <xsl:variable name="kind" as="xs:string"
+        select="if ($primitive = ('string', 'boolean', 'char')) then $primitive
+                else if ($primitive = ('float32', 'float64')) then 'real' else 'integer'"/>
+    <xsl:variable name="parsed" as="xs:string" select="fp:parse-default($value, $kind, $primitive, $id, 'ORO002')"/>
+    <xsl:sequence select="
+      if ($kind eq 'string') then ($parsed, fp:cpp-string($parsed), fp:cpp-string($parsed))
+      else if ($kind eq 'boolean') then (if ($parsed eq 'true') then '1' else '0', $parsed, $parsed)
+      else if ($kind eq 'char') then
+        (if (string-length($parsed) eq 1 and matches($parsed, '[A-Za-z0-9 _.,;:+\-*/=!?]'))
+         then ($parsed, '''' || $parsed || '''', '''' || $parsed || '''')
+         else f:fail('ORO002', $id, 'default ''' || $value || ''' is not a single plain character'))
+      else if ($kind eq 'real') then
+        ($parsed, fp:decimal($parsed), fp:decimal($parsed) || (if ($primitive eq 'float32') then 'f' else ''))
+      else ($parsed, $parsed, $parsed)"/>
+  </xsl:function>
+
+  <xsl:function name="fp:property" as="element(o:property)">
+    <xsl:param name="attribute" as="element(pim:attribute)"/>
+    <xsl:variable name="type" as="element(ty:type)"
+        select="fp:oro-required-type($attribute, $attribute/@id, 'property ''' || $attribute/@name || '''')"/>
+    <xsl:variable name="values" as="xs:string*"
+        select="if ($attribute/@default) then fp:oro-values($attribute/@default, $type, $attribute/@id) else ()"/>
+    <o:property xmi-id="{$attribute/@id}" name="{f:cpp-identifier($attribute/@name)}"
+                member="{f:cpp-identifier($attribute/@name)}"
+                primitive="{$type/@primitive}" cpp-type="{$type/@cpp}" xml-type="{$type/@xml}"
+                cpp-default="{($values[3], $type/@sample)[1]}">
+      <xsl:if test="exists($values)">
+        <xsl:attribute name="xml-default" select="$values[1]"/>
+        <xsl:attribute name="script-default" select="$values[2]"/>
+      </xsl:if>
+      <xsl:sequence select="fp:psm-doc($attribute)"/>
+    </o:property>
+  </xsl:function>
+
+  <!-- ========================================================= instance -->
+  <xsl:function name="fp:oro-instance" as="element(o:instance)">
+    <xsl:param name="instance" as="element(pim:instance)"/>
+    <xsl:param name="package" as="xs:string"/>
+    <xsl:param name="binding" as="element(pim:binding)"/>
+    <xsl:param name="task-contexts" as="document-node()"/>
+    <xsl:param name="targets" as="map(xs:string, xs:boolean)"/>
+    <xsl:variable name="task-context" as="element(o:task-context)"
+        select="key('fp:task-context', $instance/@component, $task-contexts)"/>
+    <!-- f:upper-camel of the component's name, made once by fp:task-context -->
+    <xsl:variable name="class" as="xs:string" select="$task-context/@class"/>
+    <xsl:variable name="activity" as="element(pim:activity)" select="$instance/pim:activity"/>
+    <xsl:variable name="connections" as="element(pim:connection)*"
+        select="key('fp:connection-by-instance', $instance/@name, root($instance))
+                [fp:kept-connection(., $binding, $targets)]"/>
+    <o:instance xmi-id="{$instance/@xmi-id}" name="{$instance/@name}" task-context="{$class}"
+                type-name="{$package}::{$class}">
+      <xsl:for-each select="key('fp:id', $instance/@host, root($instance))">
+        <xsl:attribute name="host" select="(key('fp:host', @id, root($instance))/@hostname, @name)[1]"/>
+      </xsl:for-each>
+      <o:activity type="Activity" periodic="{number($activity/@period) ne 0}" period="{$activity/@period}"
+                  priority="{$activity/@priority}" scheduler="ORO_SCHED_{$activity/@scheduler}"
+                  cpu-affinity="{$activity/@cpu-affinity}"/>
+      <xsl:for-each select="distinct-values($connections[pim:reader/@instance = $instance/@name]
+                              [exists(key('fp:id', @interface, root($instance))/pim:operation)]
+                              /pim:writer/@instance[. ne $instance/@name])">
+        <o:peer instance="{.}"/>
+      </xsl:for-each>
+      <xsl:for-each select="$connections">
+        <xsl:variable name="connection" as="element(pim:connection)" select="."/>
+        <xsl:for-each select="distinct-values((pim:writer | pim:reader)[@instance eq $instance/@name]/@data-port)">
+          <o:port-connection port="{.}" connection="{$connection/@name}"/>
+        </xsl:for-each>
+      </xsl:for-each>
+      <xsl:for-each select="$task-context/o:property[@xml-default]">
+        <o:property-value name="{@name}" xml-type="{@xml-type}" value="{@xml-default}" script-value="{@script-default}"/>
+      </xsl:for-each>
+      <xsl:for-each select="$instance/pim:start-after[@instance ! map:contains($targets, string(.))]">
+        <o:start-after instance="{@instance}" xmi-id="{@xmi-id}"/>
+      </xsl:for-each>
+    </o:instance>
+  </xsl:function>
+</xsl:stylesheet>

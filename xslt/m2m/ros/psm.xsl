@@ -1,0 +1,469 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/m2m/ros/psm.xsl - bound PIM -> ROS PSM (ROS 1 roscpp / ROS 2 rclcpp).
+
+  Reads:   a bound PIM, urn:robomda:pim:1 with pim:binding (xslt/m2m/bind.xsl).
+  Writes:  urn:robomda:psm-ros:1 (schemas/psm-ros/1/psm-ros.xsd),
+           indented as f:indent (common/indent.xsl) indents it, through its
+           rules (t:indented-content) in the same pass.
+  Data:    xslt/m2m/ros/types.xml (type -> C++ type, message, parameter type),
+           overridden entry by entry by the map the type-map parameter names.
+  Uses:    xslt/m2m/common/psm-kit.xsl (wrapper, hooks, default values).
+  Params:  ros-version ('1' or '2'), package-name, type-map (see below).
+
+  Rules (docs/ros.md)
+  N1  one node class per component type with an instance (all instances,
+      whatever their middleware: see W100): class UpperCamel(component),
+      executable snake(component)_node; kind "wrapper" with a realizing
+      class (the node class derives from it, as the Orocos target does),
+      else "base" (a generated <Class>Base and a user <Class>).
+  N2  data ports: out -> publisher, in -> subscription whose callback calls
+      set<Datum>; the topic in the code is the port name, remapped per
+      instance in the launch files to the connection's topic. Message type
+      from the type map; a data type of primitives that no entry maps gets a
+      generated msg/<Type>.msg.
+  N3  services: the protected operations of the realizing class (base: of
+      the component), except the lifecycle names, where a std_srvs service
+      fits: no argument and no result -> std_srvs/Empty; no argument and a
+      Boolean result -> std_srvs/Trigger; one Boolean argument -> std_srvs/
+      SetBool. Any other operation is left out with warning ROS101.
+  N4  parameters: the attributes R4 of the Orocos target selects
+      (Configurable, else public/protected non-static non-read-only ones not
+      named sample/priority/scheduler/cpuAffinity), with declared type and
+      the model's default; plus update_period (the instance's period).
+  N5  period -> timer (update(), then publish the outputs); period 0 ->
+      data-driven (each received message runs update() and publishes).
+  N6  connection -> topic: the policy's topic tag, else the connection name;
+      policy -> queue depth (DATA 1, BUFFER / CIRCULAR_BUFFER its size),
+      latch / durability transient_local when init is true, reliability
+      reliable, history keep_last(depth). A port's QoS is taken from the
+      first connection it is in (ROS sets QoS per publisher, not per link).
+  N7  deployment: one package per model; hosts -> ROS 1 machines, one launch
+      file per host (component set) plus a top-level one; ROS 2: one launch
+      file per host (warning ROS102: no machine tag).
+
+  Errors (urn:robomda:error, f:fail):
+    ROS001  a port, service or Configurable parameter has a type the type
+            map cannot map (names the element)
+    ROS002  a parameter default is not valid for its type
+    ROS003  the input has no pim:binding (run xslt/m2m/bind.xsl first)
+    ROS004  two component types map to the same C++ class name
+    ROS005  a ConnectionPolicy topic is not a valid ROS graph name
+    ROS006  parameter ros-version is neither '1' nor '2'
+    ROS007  a component with an instance has no realizing class (the ROS
+            targets do not generate a user base class yet)
+    ROS008  nothing to generate: the model has no component instance
+  Warnings (f:warn):
+    ROS100  instances deployed on an execution environment of another
+            middleware are generated for ROS anyway (once per model)
+    ROS101  operations with no fitting std_srvs service are left out (one
+            warning per component type, naming them)
+    ROS102  ROS 2 launch has no machine tag: one launch file per host
+    ROS103  a port is in several connections: only the first one's topic
+            and policy are used
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:map="http://www.w3.org/2005/xpath-functions/map"
+    xmlns:pim="urn:robomda:pim:1"
+    xmlns:r="urn:robomda:psm-ros:1"
+    xmlns:ty="urn:robomda:ros-types:1"
+    xmlns:f="urn:robomda:xslt:function"
+    xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:m="urn:robomda:xslt:mode"
+    xmlns:t="urn:robomda:xslt:template"
+    exclude-result-prefixes="#all">
+
+  <xsl:include href="../../common/errors.xsl"/>
+  <xsl:include href="../../common/literals.xsl"/>
+  <xsl:include href="../../common/indent.xsl"/>
+  <xsl:include href="../../common/naming.xsl"/>
+  <xsl:include href="../../common/profile.xsl"/>
+  <xsl:include href="../common/psm-kit.xsl"/>
+
+  <xsl:param name="ros-version" as="xs:string" select="'1'">
+    <!-- '1' (catkin / roscpp) or '2' (ament / rclcpp) -->
+  </xsl:param>
+  <xsl:param name="package-name" as="xs:string" select="''">
+    <!-- the ROS package; '' = lower snake-case of the model name -->
+  </xsl:param>
+  <xsl:param name="type-map" as="xs:string" select="''">
+    <!-- URI of an extra type map (format of xslt/m2m/ros/types.xml): absolute, or relative to the input; its entries win; '' = none -->
+  </xsl:param>
+
+  <xsl:output method="xml" indent="no" encoding="UTF-8"/>
+  <xsl:mode name="m:to-psm" on-no-match="fail"/>
+
+  <!-- the elements the kit (../common/psm-kit.xsl) makes -->
+  <xsl:variable name="fp:psm-namespace" as="xs:string" select="'urn:robomda:psm-ros:1'"/>
+  <xsl:variable name="fp:psm-prefix" as="xs:string" select="'r'"/>
+
+  <xsl:key name="fp:id" match="*[@id]" use="@id"/>
+  <xsl:key name="fp:type-by-primitive" match="ty:type[@primitive]" use="@primitive"/>
+  <xsl:key name="fp:type-by-name" match="ty:type[@type-name]" use="@type-name"/>
+  <xsl:key name="fp:instance-of" match="pim:instance" use="@component"/>
+  <xsl:key name="fp:host" match="pim:host" use="@xmi-id"/>
+  <xsl:key name="fp:connection-by-end" match="pim:connection"
+      use="(pim:writer | pim:reader) ! (@instance || '/' || @data-port)"/>
+  <xsl:key name="fp:node" match="r:node" use="@xmi-id"/>
+
+  <xsl:variable name="fp:builtin-types" as="document-node()" select="doc('types.xml')"/>
+  <xsl:variable name="fp:user-types" as="document-node()?"
+      select="if (normalize-space($type-map)) then doc(resolve-uri($type-map, base-uri(/))) else ()"/>
+  <xsl:variable name="fp:target-middleware" as="xs:string" select="if ($ros-version eq '2') then 'ROS2' else 'ROS'"/>
+
+  <!-- ================================================================ entry -->
+  <xsl:template match="/" as="document-node()">
+    <xsl:if test="not($ros-version = ('1', '2'))">
+      <xsl:sequence select="f:fail('ROS006', '', 'parameter ros-version is ''' || $ros-version || ''': use ''1'' or ''2''')"/>
+    </xsl:if>
+    <!-- indented as f:indent (common/indent.xsl) would indent it, in one
+         pass: r:package puts its children through f:indent's rules
+         (t:indented-content), so the nodes, made once in a tree of their own, are
+         not copied into an unindented result first -->
+    <xsl:document>
+      <xsl:apply-templates select="pim:model" mode="m:to-psm"/>
+    </xsl:document>
+  </xsl:template>
+
+  <xsl:template match="pim:model[empty(pim:binding)]" mode="m:to-psm" as="empty-sequence()">
+    <xsl:sequence select="f:fail('ROS003', @id, 'the model has no platform binding: run xslt/m2m/bind.xsl first')"/>
+  </xsl:template>
+
+  <xsl:template match="pim:model" mode="m:to-psm" as="element(r:package)">
+    <xsl:variable name="binding" as="element(pim:binding)" select="pim:binding"/>
+    <xsl:variable name="package" as="xs:string" select="fp:package-name($package-name, .)"/>
+    <xsl:variable name="components" as="element(pim:bound-component)*"
+        select="$binding/pim:bound-component[exists(key('fp:instance-of', @component))]"/>
+    <xsl:sequence select="fp:check-class-names($components, 'ROS004')"/>
+    <xsl:sequence select="fp:ros-check-targets(.)"/>
+    <!-- fp:host-key of each host the instances name, made once per host -->
+    <xsl:variable name="host-keys" as="map(xs:string, xs:string)"
+        select="map:merge(distinct-values($binding/pim:instance ! string(@host))
+                          ! map:entry(., fp:host-key(., root($binding))))"/>
+    <xsl:variable name="hosts" as="element(r:host)*" select="fp:ros-hosts($binding, $host-keys)"/>
+    <xsl:if test="$ros-version eq '2' and count($hosts) gt 1">
+      <xsl:sequence select="f:warn('ROS102', $hosts[2]/@xmi-id, 'ROS 2 launch has no machine tag: one launch file per host ('
+          || string-join($hosts/@launch, ', ') || '), each to be started on its host')"/>
+    </xsl:if>
+    <xsl:variable name="nodes" as="document-node()">
+      <xsl:document>
+        <xsl:sequence select="$components ! fp:node(., $package)"/>
+      </xsl:document>
+    </xsl:variable>
+    <r:package xmi-id="{@id}" model-name="{@name}" name="{$package}" namespace="{$package}" ros-version="{$ros-version}"
+               deploy-name="{f:snake-case(@name)}" source="{@source}">
+      <xsl:variable name="children" as="element()*">
+        <xsl:sequence select="$binding/pim:library ! fp:psm-library(., $package)"/>
+        <xsl:for-each-group select="$nodes//r:message[@generated eq 'true']" group-by="@msg">
+          <r:message-file name="{current-grouping-key()}" xmi-id="{@type}">
+            <xsl:sequence select="r:field"/>
+          </r:message-file>
+        </xsl:for-each-group>
+        <xsl:sequence select="$nodes/r:node"/>
+        <xsl:sequence select="$hosts"/>
+        <xsl:sequence select="$binding/pim:connection ! fp:topic(.)"/>
+        <xsl:sequence select="$binding/pim:instance ! fp:ros-instance(., $nodes, $host-keys)"/>
+      </xsl:variable>
+      <xsl:call-template name="t:indented-content">
+        <xsl:with-param name="children" select="$children"/>
+        <xsl:with-param name="margin" select="'&#10;'"/>
+      </xsl:call-template>
+    </r:package>
+  </xsl:template>
+
+  <!-- ROS008 when there is nothing to generate, ROS100 for the instances
+       the platform deploys on another middleware (generated anyway) -->
+  <xsl:function name="fp:ros-check-targets" as="empty-sequence()">
+    <xsl:param name="model" as="element(pim:model)"/>
+    <xsl:variable name="binding" as="element(pim:binding)" select="$model/pim:binding"/>
+    <xsl:if test="empty($binding/pim:instance)">
+      <xsl:sequence select="f:fail('ROS008', $model/@id, 'nothing to generate: model ''' || $model/@name
+          || ''' has no component instance (a component with ports or a realizing class)')"/>
+    </xsl:if>
+    <xsl:variable name="other" as="element(pim:instance)*" select="$binding/pim:instance[@middleware ne $fp:target-middleware]"/>
+    <xsl:if test="exists($other)">
+      <xsl:sequence select="f:warn('ROS100', $other[1]/@execution-environment, 'the platform model deploys instance(s) '''
+          || string-join($other/@name, ''', ''') || ''' on ' || string-join(distinct-values($other/@middleware), ', ')
+          || ', not ' || $fp:target-middleware || ': generated for ROS ' || $ros-version || ' anyway')"/>
+    </xsl:if>
+  </xsl:function>
+
+  <xsl:function name="fp:host-key" as="xs:string">
+    <xsl:param name="host" as="xs:string"/>
+    <xsl:param name="root" as="document-node()"/>
+    <xsl:variable name="pim-host" as="element(pim:host)?" select="key('fp:host', $host, $root)"/>
+    <xsl:sequence select="if ($pim-host) then f:snake-case($pim-host/@name) else 'local'"/>
+  </xsl:function>
+
+  <!-- one r:host per host key (N7) -->
+  <xsl:function name="fp:ros-hosts" as="element(r:host)*">
+    <xsl:param name="binding" as="element(pim:binding)"/>
+    <xsl:param name="host-keys" as="map(xs:string, xs:string)"/>
+    <xsl:for-each-group select="$binding/pim:instance" group-by="$host-keys(string(@host))">
+      <xsl:variable name="pim-host" as="element(pim:host)?"
+          select="key('fp:host', string(current-group()[1]/@host), root($binding))"/>
+      <r:host xmi-id="{($pim-host/@xmi-id, current-group()[1]/@execution-environment)[1]}"
+              name="{current-grouping-key()}" machine="{current-grouping-key()}"
+              hostname="{($pim-host/@hostname, 'localhost')[1]}" address="{($pim-host/@address, 'localhost')[1]}"
+              launch="{current-grouping-key()}"/>
+    </xsl:for-each-group>
+  </xsl:function>
+
+  <!-- a connection as a topic (N6); ROS005 when its name is not a graph name -->
+  <xsl:function name="fp:topic" as="element(r:topic)">
+    <xsl:param name="connection" as="element(pim:connection)"/>
+    <xsl:for-each select="$connection">
+      <xsl:variable name="topic" as="xs:string" select="(pim:policy/@topic[normalize-space(.)], @name)[1]"/>
+      <xsl:if test="not(matches($topic, '^[~/]?[A-Za-z][A-Za-z0-9_]*(/[A-Za-z][A-Za-z0-9_]*)*$'))">
+        <xsl:sequence select="f:fail('ROS005', (pim:policy/@source-element, @xmi-id)[1],
+            'topic ''' || $topic || ''' of connection ''' || @name || ''' is not a valid ROS graph name')"/>
+      </xsl:if>
+      <r:topic xmi-id="{@xmi-id}" connection="{@name}" name="{$topic}">
+        <xsl:sequence select="fp:qos(pim:policy)"/>
+        <xsl:for-each select="pim:writer">
+          <r:writer instance="{@instance}" port="{@data-port}" xmi-id="{@port}"/>
+        </xsl:for-each>
+        <xsl:for-each select="pim:reader">
+          <r:reader instance="{@instance}" port="{@data-port}" xmi-id="{@port}"/>
+        </xsl:for-each>
+      </r:topic>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- queue depth and QoS of a connection policy (N6) -->
+  <xsl:function name="fp:qos" as="element(r:qos)">
+    <xsl:param name="policy" as="element(pim:policy)?"/>
+    <r:qos depth="{if ($policy/@type = ('BUFFER', 'CIRCULAR_BUFFER')) then $policy/@size else 1}"
+           latch="{$policy/@init = ('true', '1')}" reliability="reliable"
+           durability="{if ($policy/@init = ('true', '1')) then 'transient_local' else 'volatile'}" history="keep_last"/>
+  </xsl:function>
+
+  <!-- ============================================================ types -->
+  <xsl:function name="fp:type" as="element(ty:type)?">
+    <xsl:param name="typed" as="element()"/>
+    <xsl:variable name="name" as="xs:string" select="string($typed/@type-name)"/>
+    <xsl:variable name="primitive" as="xs:string" select="string($typed/@primitive)"/>
+    <xsl:sequence select="if (fp:is-array($typed)) then ()
+        else (if ($name ne '' and exists($fp:user-types)) then key('fp:type-by-name', $name, $fp:user-types) else (),
+              if ($primitive ne '' and exists($fp:user-types)) then key('fp:type-by-primitive', $primitive, $fp:user-types) else (),
+              if ($name ne '') then key('fp:type-by-name', $name, $fp:builtin-types) else (),
+              if ($primitive ne '') then key('fp:type-by-primitive', $primitive, $fp:builtin-types) else ())[1]"/>
+  </xsl:function>
+
+  <xsl:function name="fp:required-type" as="element(ty:type)">
+    <xsl:param name="typed" as="element()"/>
+    <xsl:param name="id" as="xs:string?"/>
+    <xsl:param name="what" as="xs:string"/>
+    <xsl:variable name="type" as="element(ty:type)?" select="fp:type($typed)"/>
+    <xsl:sequence select="if (exists($type) and $type/@cpp ne 'void') then $type
+        else f:fail('ROS001', $id, $what || ' has type ''' || fp:type-label($typed)
+                     || ''', which the ROS type map does not map (supported: '
+                     || string-join($fp:builtin-types//ty:type[@cpp ne 'void']/@primitive, ', ')
+                     || ', data types of those, and the entries of parameter type-map)')"/>
+  </xsl:function>
+
+  <!-- the message a data port carries: a mapped type, or a generated .msg
+       for a data type whose attributes are all mapped primitives -->
+  <xsl:function name="fp:message" as="element(r:message)">
+    <xsl:param name="data-port" as="element(pim:data-port)"/>
+    <xsl:variable name="type" as="element(ty:type)?" select="fp:type($data-port)"/>
+    <xsl:variable name="datatype" as="element()?"
+        select="if ($data-port/@type) then key('fp:id', $data-port/@type, root($data-port)) else ()"/>
+    <xsl:choose>
+      <xsl:when test="exists($type) and $type/@cpp ne 'void'">
+        <r:message msg="{$type/@msg}" field="{$type/@field}" cpp-type="{$type/@cpp}" sample="{$type/@sample}" generated="false"/>
+      </xsl:when>
+      <xsl:when test="exists($datatype) and empty($data-port/@primitive) and exists($datatype/pim:attribute)
+                      and (every $a in $datatype/pim:attribute satisfies exists(fp:type($a)[@msg-field ne '']))
+                      and not(fp:is-array($data-port))">
+        <xsl:sequence select="fp:generated-message($datatype)"/>
+      </xsl:when>
+      <xsl:otherwise>
+        <xsl:variable name="never" as="element(ty:type)" select="fp:required-type($data-port, $data-port/@port,
+            'port ''' || $data-port/@port-name || ''' (datum ''' || $data-port/@datum-name
+            || ''' of interface ''' || $data-port/@interface-name || ''')')"/>
+        <r:message msg="{$never/@msg}" field="" cpp-type="" sample="" generated="false"/>
+      </xsl:otherwise>
+    </xsl:choose>
+  </xsl:function>
+
+  <!-- a generated msg/<Type>.msg for a data type of mapped primitives: the
+       user's C++ type of the same name, in the global namespace (qualified:
+       inside the package's namespace the bare name is the generated message) -->
+  <xsl:function name="fp:generated-message" as="element(r:message)">
+    <xsl:param name="datatype" as="element()"/>
+    <xsl:variable name="cpp-type" as="xs:string" select="'::' || f:cpp-identifier($datatype/@name)"/>
+    <r:message msg="{f:upper-camel($datatype/@name)}" field="" cpp-type="{$cpp-type}" sample="{$cpp-type || '()'}"
+               generated="true" type="{$datatype/@id}">
+      <xsl:for-each select="$datatype/pim:attribute">
+        <r:field name="{f:snake-case(@name)}" member="{f:cpp-identifier(@name)}" msg-field="{fp:type(.)/@msg-field}"/>
+      </xsl:for-each>
+    </r:message>
+  </xsl:function>
+
+  <!-- ============================================================= node -->
+  <xsl:function name="fp:node" as="element(r:node)">
+    <xsl:param name="bc" as="element(pim:bound-component)"/>
+    <xsl:param name="package" as="xs:string"/>
+    <xsl:variable name="component" as="element(pim:component)" select="key('fp:id', $bc/@component, root($bc))"/>
+    <xsl:variable name="wrapper" as="xs:boolean" select="exists(fp:realization($bc))"/>
+    <xsl:variable name="class" as="xs:string" select="f:upper-camel($component/@name)"/>
+    <xsl:variable name="instances" as="element(pim:instance)*" select="key('fp:instance-of', $bc/@component, root($bc))"/>
+    <xsl:if test="not($wrapper)">
+      <xsl:sequence select="f:fail('ROS007', $component/@id, 'component ''' || $component/@name
+          || ''' has no realizing class (ComponentRealization):'
+          || ' the ROS targets wrap the atomic code and do not generate a user base class yet')"/>
+    </xsl:if>
+    <r:node xmi-id="{$component/@id}" name="{$component/@name}" class="{$class}" namespace="{$package}"
+            type-name="{$package}::{$class}" kind="{if ($wrapper) then 'wrapper' else 'base'}"
+            generated-class="{if ($wrapper) then $class else $class || 'Base'}"
+            executable="{f:snake-case($component/@name)}_node" default-name="{f:snake-case($component/@name)}"
+            period="{($instances/pim:activity/@period)[1]}">
+      <xsl:sequence select="fp:psm-doc($component)"/>
+      <xsl:sequence select="fp:psm-realizing-class($bc)"/>
+      <xsl:sequence select="fp:psm-hooks($bc)"/>
+      <xsl:sequence select="$bc/pim:data-port ! fp:ros-port(., $instances)"/>
+      <xsl:sequence select="fp:services($bc)"/>
+      <xsl:variable name="configurable" as="element(pim:attribute)*" select="fp:configurable-attributes($bc)"/>
+      <xsl:sequence select="if (exists($configurable)) then $configurable ! fp:parameter(.)
+                            else fp:convention-attributes($bc)[exists(fp:type(.)[@cpp ne 'void'])] ! fp:parameter(.)"/>
+    </r:node>
+  </xsl:function>
+
+  <!-- N2: a data port of a node; its QoS from the first connection one of
+       the component's $instances makes through it -->
+  <xsl:function name="fp:ros-port" as="element(r:port)">
+    <xsl:param name="data-port" as="element(pim:data-port)"/>
+    <xsl:param name="instances" as="element(pim:instance)*"/>
+    <xsl:for-each select="$data-port">
+      <xsl:variable name="accessor" as="xs:string" select="fp:accessor(.)"/>
+      <xsl:variable name="connections" as="element(pim:connection)*"
+          select="$instances ! key('fp:connection-by-end', @name || '/' || $data-port/@name, root($data-port))"/>
+      <r:port xmi-id="{@port}" direction="{@direction}" name="{@name}" topic="{@name}"
+              member="{if (@direction eq 'out') then 'pub_' else 'sub_'}{@name}_"
+              interface="{@interface-name}" datum="{@datum-name}"
+              accessor="{$accessor}" accessor-declared="{exists(fp:callable(..)[@name eq $accessor])}">
+        <xsl:sequence select="fp:psm-doc(key('fp:id', @port, root(.)))"/>
+        <xsl:sequence select="fp:message(.)"/>
+        <xsl:sequence select="fp:qos($connections[1]/pim:policy)"/>
+      </r:port>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- N3: the services of a node; ROS101 names the operations no std_srvs
+       service fits -->
+  <xsl:function name="fp:services" as="element(r:service)*">
+    <xsl:param name="bc" as="element(pim:bound-component)"/>
+    <xsl:variable name="operations" as="element(pim:operation)*" select="fp:offered-operations($bc, $fp:lifecycle)"/>
+    <xsl:variable name="services" as="element(r:service)*" select="$operations ! fp:service(.)"/>
+    <xsl:sequence select="$services"/>
+    <xsl:variable name="left-out" as="element(pim:operation)*" select="$operations[not(@id = $services/@xmi-id)]"/>
+    <xsl:if test="exists($left-out)">
+      <xsl:sequence select="f:warn('ROS101', $left-out[1]/@id, 'operation(s) ''' || string-join($left-out/@name, ''', ''')
+          || ''' of ''' || fp:owner($bc)/@name || ''' fit no std_srvs service (Empty: no argument, no result; Trigger: no argument,'
+          || ' Boolean result; SetBool: one Boolean argument): not exposed as ROS services')"/>
+    </xsl:if>
+  </xsl:function>
+
+  <!-- N3: a std_srvs service, or nothing (the caller warns: ROS101) -->
+  <xsl:function name="fp:service" as="element(r:service)?">
+    <xsl:param name="operation" as="element(pim:operation)"/>
+    <xsl:variable name="result" as="element(pim:parameter)?" select="$operation/pim:parameter[@direction eq 'return'][1]"/>
+    <xsl:variable name="arguments" as="element(pim:parameter)*" select="$operation/pim:parameter[@direction ne 'return']"/>
+    <xsl:variable name="void" as="xs:boolean" select="empty($result) or $result/@primitive eq 'void'"/>
+    <xsl:variable name="bool-result" as="xs:boolean" select="$result/@primitive = 'boolean' and not(fp:is-array($result))"/>
+    <xsl:variable name="srv" as="xs:string?" select="
+        if (empty($arguments) and $void) then 'std_srvs/Empty'
+        else if (empty($arguments) and $bool-result) then 'std_srvs/Trigger'
+        else if (count($arguments) eq 1 and $arguments/@direction eq 'in' and $arguments/@primitive eq 'boolean'
+                 and not(fp:is-array($arguments)) and ($void or $bool-result)) then 'std_srvs/SetBool'
+        else ()"/>
+    <xsl:if test="exists($srv)">
+      <r:service xmi-id="{$operation/@id}" name="{f:cpp-identifier($operation/@name)}" srv="{$srv}"
+                 returns-bool="{$bool-result}" member="srv_{f:cpp-identifier($operation/@name)}_">
+        <xsl:sequence select="fp:psm-doc($operation)"/>
+      </r:service>
+    </xsl:if>
+  </xsl:function>
+
+  <!-- ================================================ parameter values -->
+  <!-- (C++ literal, YAML literal) of a default value -->
+  <xsl:function name="fp:values" as="xs:string+">
+    <xsl:param name="value" as="xs:string"/>
+    <xsl:param name="type" as="element(ty:type)"/>
+    <xsl:param name="id" as="xs:string"/>
+    <xsl:variable name="primitive" as="xs:string" select="string($type/@primitive)"/>
+    <xsl:variable name="kind" as="xs:string?"
+        select="if ($type/@param1 eq 'std::string') then 'string'
+                else if ($primitive = ('boolean', 'char')) then $primitive
+                else if ($type/@param1 eq 'double') then 'real'
+                else if ($type/@param1 eq 'int') then 'integer' else ()"/>
+    <xsl:variable name="parsed" as="xs:string"
+        select="if (exists($kind)) then fp:parse-default($value, $kind, $primitive, $id, 'ROS002')
+                else f:fail('ROS002', $id, 'a default value of type ''' || ($type/@type-name, $primitive)[1]
+                            || ''' cannot be written as a ROS parameter')"/>
+    <xsl:sequence select="
+      if ($kind eq 'string') then (fp:cpp-string($parsed), fp:cpp-string($parsed))
+      else if ($kind eq 'char') then
+        (if (string-length($parsed) eq 1) then (string(string-to-codepoints($parsed)), string(string-to-codepoints($parsed)))
+         else f:fail('ROS002', $id, 'default ''' || $value || ''' is not a single character'))
+      else if ($kind eq 'real') then
+        (fp:decimal($parsed) || (if ($primitive eq 'float32') then 'f' else ''), fp:decimal($parsed))
+      else ($parsed, $parsed)"/>
+  </xsl:function>
+
+  <xsl:function name="fp:parameter" as="element(r:parameter)">
+    <xsl:param name="attribute" as="element(pim:attribute)"/>
+    <xsl:variable name="type" as="element(ty:type)"
+        select="fp:required-type($attribute, $attribute/@id, 'parameter ''' || $attribute/@name || '''')"/>
+    <xsl:if test="not($type/@param1 = ('int', 'double', 'bool', 'std::string'))">
+      <xsl:sequence select="f:fail('ROS001', $attribute/@id, 'parameter ''' || $attribute/@name || ''' has type '''
+          || ($attribute/@type-name, $attribute/@primitive)[1] || ''', which is not a ROS parameter type')"/>
+    </xsl:if>
+    <xsl:variable name="values" as="xs:string+"
+        select="if ($attribute/@default) then fp:values($attribute/@default, $type, $attribute/@id)
+                else if ($type/@param1 eq 'std::string') then ('&quot;&quot;', '&quot;&quot;')
+                else if ($type/@param1 eq 'bool') then ('false', 'false')
+                else if ($type/@param1 eq 'double') then (if ($type/@primitive eq 'float32') then '0.0f' else '0.0', '0.0')
+                else ('0', '0')"/>
+    <r:parameter xmi-id="{$attribute/@id}" name="{f:cpp-identifier($attribute/@name)}"
+                 member="{f:cpp-identifier($attribute/@name)}"
+                 cpp-type="{$type/@cpp}" param1="{$type/@param1}" param2="{$type/@param2}"
+                 cpp-default="{$values[1]}" yaml-default="{$values[2]}">
+      <xsl:sequence select="fp:psm-doc($attribute)"/>
+    </r:parameter>
+  </xsl:function>
+
+  <!-- ========================================================= instance -->
+  <xsl:function name="fp:ros-instance" as="element(r:instance)">
+    <xsl:param name="instance" as="element(pim:instance)"/>
+    <xsl:param name="nodes" as="document-node()"/>
+    <xsl:param name="host-keys" as="map(xs:string, xs:string)"/>
+    <xsl:variable name="node" as="element(r:node)" select="key('fp:node', $instance/@component, $nodes)"/>
+    <xsl:variable name="activity" as="element(pim:activity)" select="$instance/pim:activity"/>
+    <r:instance xmi-id="{$instance/@xmi-id}" name="{$instance/@name}" node="{$node/@class}"
+                executable="{$node/@executable}" host="{$host-keys(string($instance/@host))}"
+                middleware="{$instance/@middleware}"
+                period="{$activity/@period}" periodic="{number($activity/@period) ne 0}">
+      <xsl:for-each select="$node/r:port">
+        <xsl:variable name="port" as="element(r:port)" select="."/>
+        <xsl:variable name="connections" as="element(pim:connection)*"
+            select="key('fp:connection-by-end', $instance/@name || '/' || $port/@name, root($instance))"/>
+        <xsl:if test="count($connections) gt 1">
+          <xsl:sequence select="f:warn('ROS103', $port/@xmi-id, 'port ''' || $port/@name || ''' of instance '''
+              || $instance/@name || ''' is in connections ''' || string-join($connections/@name, ''', ''')
+              || ''': ROS remaps a port to one topic; ''' || $connections[1]/@name || ''' is used')"/>
+        </xsl:if>
+        <xsl:for-each select="$connections[1]">
+          <r:remap from="{$port/@topic}" to="{(pim:policy/@topic[normalize-space(.)], @name)[1]}"/>
+        </xsl:for-each>
+      </xsl:for-each>
+      <r:parameter-value name="update_period" yaml="{fp:decimal($activity/@period)}"/>
+      <xsl:for-each select="$node/r:parameter">
+        <r:parameter-value name="{@name}" yaml="{@yaml-default}"/>
+      </xsl:for-each>
+    </r:instance>
+  </xsl:function>
+</xsl:stylesheet>
