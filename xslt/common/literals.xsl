@@ -15,16 +15,16 @@
     exclude-result-prefixes="#all">
 
   <xsl:function name="fp:cpp-string" as="xs:string">
-    <xsl:param name="s" as="xs:string?"/>
-    <xsl:sequence select="concat('&quot;', (if (contains($s, '\') or contains($s, '&quot;') or contains($s, '&#10;'))
-                                       then replace(replace(replace(string($s), '\\', '\\\\'), '&quot;', '\\&quot;'), '&#10;', '\\n')
-                                       else string($s)), '&quot;')"/>
+    <xsl:param name="text" as="xs:string?"/>
+    <xsl:sequence select="concat('&quot;', (if (contains($text, '\') or contains($text, '&quot;') or contains($text, '&#10;'))
+                                       then replace(replace(replace(string($text), '\\', '\\\\'), '&quot;', '\\&quot;'), '&#10;', '\\n')
+                                       else string($text)), '&quot;')"/>
   </xsl:function>
 
   <xsl:function name="fp:xml-text" as="xs:string">
-    <xsl:param name="s" as="xs:string?"/>
-    <xsl:sequence select="if (contains($s, '&amp;') or contains($s, '&lt;') or contains($s, '&gt;') or contains($s, '&quot;'))
-                          then replace(replace(replace(replace(string($s), '&amp;', '&amp;amp;'), '&lt;', '&amp;lt;'), '&gt;', '&amp;gt;'), '&quot;', '&amp;quot;')
-                          else string($s)"/>
+    <xsl:param name="text" as="xs:string?"/>
+    <xsl:sequence select="if (contains($text, '&amp;') or contains($text, '&lt;') or contains($text, '&gt;') or contains($text, '&quot;'))
+                          then replace(replace(replace(replace(string($text), '&amp;', '&amp;amp;'), '&lt;', '&amp;lt;'), '&gt;', '&amp;gt;'), '&quot;', '&amp;quot;')
+                          else string($text)"/>
   </xsl:function>
 </xsl:stylesheet>

@@ -61,10 +61,10 @@
   </xsl:function>
 
   <xsl:function name="f:escape-cpp-keyword" as="xs:string">
-    <xsl:param name="s" as="xs:string"/>
-    <xsl:sequence select="if (map:contains($fp:cpp-keyword-set, $s)
-                              or (starts-with($s, '_') and matches($s, '^_[A-Z_]')) or contains($s, '__'))
-                          then $s || '_' else $s"/>
+    <xsl:param name="text" as="xs:string"/>
+    <xsl:sequence select="if (map:contains($fp:cpp-keyword-set, $text)
+                              or (starts-with($text, '_') and matches($text, '^_[A-Z_]')) or contains($text, '__'))
+                          then $text || '_' else $text"/>
   </xsl:function>
 
   <xsl:function name="f:cpp-identifier" as="xs:string">
@@ -87,33 +87,33 @@
 
   <xsl:function name="f:snake-case" as="xs:string">
     <xsl:param name="name" as="xs:string?"/>
-    <xsl:variable name="w" as="xs:string*" select="f:words($name)"/>
-    <xsl:sequence select="if (empty($w)) then 'unnamed'
-                          else f:cpp-identifier(lower-case(string-join($w, '_')))"/>
+    <xsl:variable name="writer" as="xs:string*" select="f:words($name)"/>
+    <xsl:sequence select="if (empty($writer)) then 'unnamed'
+                          else f:cpp-identifier(lower-case(string-join($writer, '_')))"/>
   </xsl:function>
 
   <xsl:function name="f:upper-first" as="xs:string">
-    <xsl:param name="s" as="xs:string?"/>
-    <xsl:sequence select="upper-case(substring(string($s), 1, 1)) || substring(string($s), 2)"/>
+    <xsl:param name="text" as="xs:string?"/>
+    <xsl:sequence select="upper-case(substring(string($text), 1, 1)) || substring(string($text), 2)"/>
   </xsl:function>
 
   <xsl:function name="f:lower-first" as="xs:string">
-    <xsl:param name="s" as="xs:string?"/>
-    <xsl:sequence select="lower-case(substring(string($s), 1, 1)) || substring(string($s), 2)"/>
+    <xsl:param name="text" as="xs:string?"/>
+    <xsl:sequence select="lower-case(substring(string($text), 1, 1)) || substring(string($text), 2)"/>
   </xsl:function>
 
   <xsl:function name="f:upper-camel" as="xs:string">
     <xsl:param name="name" as="xs:string?"/>
-    <xsl:variable name="w" as="xs:string*"
+    <xsl:variable name="writer" as="xs:string*"
         select="tokenize(string($name), '[^A-Za-z0-9]+')[. ne '']"/>
-    <xsl:sequence select="if (empty($w)) then 'Unnamed'
-                          else f:cpp-identifier(string-join($w ! f:upper-first(.), ''))"/>
+    <xsl:sequence select="if (empty($writer)) then 'Unnamed'
+                          else f:cpp-identifier(string-join($writer ! f:upper-first(.), ''))"/>
   </xsl:function>
 
   <xsl:function name="f:is-cpp-identifier" as="xs:boolean">
-    <xsl:param name="s" as="xs:string?"/>
-    <xsl:sequence select="matches(string($s), '^[A-Za-z_][A-Za-z0-9_]*$')
-                          and f:escape-cpp-keyword(string($s)) eq string($s)"/>
+    <xsl:param name="text" as="xs:string?"/>
+    <xsl:sequence select="matches(string($text), '^[A-Za-z_][A-Za-z0-9_]*$')
+                          and f:escape-cpp-keyword(string($text)) eq string($text)"/>
   </xsl:function>
 
   <!-- one pass: $seen counts the occurrences of each name so far -->
@@ -121,10 +121,10 @@
     <xsl:param name="names" as="xs:string*"/>
     <xsl:iterate select="$names">
       <xsl:param name="seen" as="map(xs:string, xs:integer)" select="map{}"/>
-      <xsl:variable name="k" as="xs:integer" select="($seen(.), 0)[1]"/>
-      <xsl:sequence select="if ($k eq 0) then . else . || '_' || ($k + 1)"/>
+      <xsl:variable name="connection" as="xs:integer" select="($seen(.), 0)[1]"/>
+      <xsl:sequence select="if ($connection eq 0) then . else . || '_' || ($connection + 1)"/>
       <xsl:next-iteration>
-        <xsl:with-param name="seen" select="map:put($seen, ., $k + 1)"/>
+        <xsl:with-param name="seen" select="map:put($seen, ., $connection + 1)"/>
       </xsl:next-iteration>
     </xsl:iterate>
   </xsl:function>

@@ -31,15 +31,15 @@
 
   <!-- the robomda stereotype $name applied to $e (the first, if applied twice) -->
   <xsl:function name="f:stereotype" as="element(pim:stereotype)?">
-    <xsl:param name="e" as="element()?"/>
+    <xsl:param name="element" as="element()?"/>
     <xsl:param name="name" as="xs:string"/>
-    <xsl:sequence select="$e/pim:stereotype[@name eq $name][f:is-robomda-profile(@profile, @profile-uri)][1]"/>
+    <xsl:sequence select="$element/pim:stereotype[@name eq $name][f:is-robomda-profile(@profile, @profile-uri)][1]"/>
   </xsl:function>
 
   <!-- a default value as written in a model, without one pair of enclosing
        double or single quotes ("abc" -> abc) -->
   <xsl:function name="f:unquote" as="xs:string">
-    <xsl:param name="v" as="xs:string"/>
-    <xsl:sequence select="if (matches($v, '^&quot;.*&quot;$|^''.*''$', 's')) then substring($v, 2, string-length($v) - 2) else $v"/>
+    <xsl:param name="value" as="xs:string"/>
+    <xsl:sequence select="if (matches($value, '^&quot;.*&quot;$|^''.*''$', 's')) then substring($value, 2, string-length($value) - 2) else $value"/>
   </xsl:function>
 </xsl:stylesheet>

@@ -102,8 +102,8 @@
        Artifact, an Activity, a Collaboration ...: EA nests components in
        Nodes), which keep their qualified name under that owner -->
   <xsl:function name="fp:owned-packageables" as="element()*">
-    <xsl:param name="e" as="element()"/>
-    <xsl:for-each select="$e/*[@x:type][not(@href or @x:idref)]">
+    <xsl:param name="element" as="element()"/>
+    <xsl:for-each select="$element/*[@x:type][not(@href or @x:idref)]">
       <xsl:variable name="meta" as="xs:string" select="@x:type"/>
       <xsl:choose>
         <xsl:when test="map:contains($packageable-map, $meta)">
@@ -317,9 +317,9 @@
        part (partWithPort) of its first end that has one, else of the first
        end's role -->
   <xsl:function name="fp:connector-owner" as="xs:string?">
-    <xsl:param name="k" as="element()"/>
+    <xsl:param name="connection" as="element()"/>
     <xsl:variable name="owner" as="element()?"
-        select="($k/end ! fp:targets(., 'partWithPort'), $k/end ! fp:targets(., 'role'))[1]/.."/>
+        select="($connection/end ! fp:targets(., 'partWithPort'), $connection/end ! fp:targets(., 'role'))[1]/.."/>
     <xsl:sequence select="$owner[@x:type = ('Class', 'Component', 'Interface')] ! fp:id(.)"/>
   </xsl:function>
 
@@ -361,26 +361,26 @@
 
   <!-- a composite property typed by a class or component: a part -->
   <xsl:function name="fp:is-part" as="xs:boolean">
-    <xsl:param name="p" as="element()"/>
-    <xsl:variable name="t" as="element()?" select="fp:type-element($p)"/>
-    <xsl:variable name="href-type" as="element()?" select="$p/type[@href][1]"/>
-    <xsl:sequence select="$p/@aggregation = 'composite' and exists(($t, $href-type))
-        and (fp:meta(($t, $href-type)[1]) = ('Class', 'Component'))"/>
+    <xsl:param name="item" as="element()"/>
+    <xsl:variable name="type" as="element()?" select="fp:type-element($item)"/>
+    <xsl:variable name="href-type" as="element()?" select="$item/type[@href][1]"/>
+    <xsl:sequence select="$item/@aggregation = 'composite' and exists(($type, $href-type))
+        and (fp:meta(($type, $href-type)[1]) = ('Class', 'Component'))"/>
   </xsl:function>
 
   <!-- the interfaces an InterfaceRealization or Realization realizes -->
   <xsl:function name="fp:realized-interfaces" as="element()*">
-    <xsl:param name="r" as="element()"/>
-    <xsl:variable name="contract" as="element()*" select="fp:targets($r, 'contract')"/>
+    <xsl:param name="realization" as="element()"/>
+    <xsl:variable name="contract" as="element()*" select="fp:targets($realization, 'contract')"/>
     <xsl:variable name="all" as="element()*"
-        select="(if (exists($contract)) then $contract else fp:targets($r, 'supplier')) ! fp:interface-of(.)"/>
+        select="(if (exists($contract)) then $contract else fp:targets($realization, 'supplier')) ! fp:interface-of(.)"/>
     <xsl:sequence select="$all/."/>
   </xsl:function>
 
   <!-- the interfaces a Usage uses -->
   <xsl:function name="fp:used-interfaces" as="element()*">
-    <xsl:param name="u" as="element()"/>
-    <xsl:sequence select="(fp:targets($u, 'supplier') ! fp:interface-of(.))/."/>
+    <xsl:param name="usage" as="element()"/>
+    <xsl:sequence select="(fp:targets($usage, 'supplier') ! fp:interface-of(.))/."/>
   </xsl:function>
 
   <!-- ============================================ deployment sequence -->
@@ -389,10 +389,10 @@
        prefix robomda or the profile URI, as every later stage does), else
        the name startAfter (unprofiled models, docs/profile.md) -->
   <xsl:function name="fp:is-start-after" as="xs:boolean">
-    <xsl:param name="d" as="element()"/>
-    <xsl:sequence select="$d/@x:type eq 'Dependency'
-        and (lower-case(normalize-space($d/@name)) eq 'startafter'
-             or exists(key('fp:stereotype-by-base', fp:id($d), root($d))
+    <xsl:param name="deployment" as="element()"/>
+    <xsl:sequence select="$deployment/@x:type eq 'Dependency'
+        and (lower-case(normalize-space($deployment/@name)) eq 'startafter'
+             or exists(key('fp:stereotype-by-base', fp:id($deployment), root($deployment))
                        [local-name() eq 'StartAfter']
                        [f:is-robomda-profile(string(prefix-from-QName(node-name(.))), namespace-uri())]))"/>
   </xsl:function>

@@ -59,33 +59,33 @@
 
   <!-- the problems of one element: maps with code, id, message -->
   <xsl:function name="fp:problems" as="map(*)*">
-    <xsl:param name="e" as="element()"/>
-    <xsl:variable name="meta" as="xs:string" select="fp:meta($e)"/>
+    <xsl:param name="element" as="element()"/>
+    <xsl:variable name="meta" as="xs:string" select="fp:meta($element)"/>
     <!-- a plain Dependency is checked only when it is a deployment-sequence
          constraint (StartAfter): every other one is not imported -->
     <xsl:variable name="rule" as="map(*)?"
-        select="if ($meta eq 'Dependency' and not(fp:is-start-after($e))) then ()
+        select="if ($meta eq 'Dependency' and not(fp:is-start-after($element))) then ()
                 else $checked-references($meta)"/>
     <xsl:if test="exists($rule)">
       <xsl:for-each select="$rule?refs">
         <xsl:variable name="prop" as="xs:string" select="."/>
-        <xsl:for-each select="fp:dangling-ids($e, fp:ref-ids($e, $prop))">
+        <xsl:for-each select="fp:dangling-ids($element, fp:ref-ids($element, $prop))">
           <xsl:sequence select="map {
               'code': $rule?code,
-              'id': fp:id($e),
-              'message': fp:describe($e) || ' refers by ' || $prop || ' to ''' || . ||
+              'id': fp:id($element),
+              'message': fp:describe($element) || ' refers by ' || $prop || ' to ''' || . ||
                          ''', which is not in the model' ||
                          (if ($meta eq 'Port') then ' (the port''s interface or class is missing)' else '')
             }"/>
         </xsl:for-each>
       </xsl:for-each>
     </xsl:if>
-    <xsl:if test="$meta eq 'Generalization' and fp:generalizes-itself($e)">
+    <xsl:if test="$meta eq 'Generalization' and fp:generalizes-itself($element)">
       <xsl:sequence select="map {
           'code': 'IMP021',
-          'id': fp:id($e),
-          'message': fp:describe($e) || ' makes ' || fp:label($e/..) || ' a specialization of itself'
-                     || ' (cyclic generalization through ' || string-join(fp:targets($e, 'general') ! fp:label(.), ', ')
+          'id': fp:id($element),
+          'message': fp:describe($element) || ' makes ' || fp:label($element/..) || ' a specialization of itself'
+                     || ' (cyclic generalization through ' || string-join(fp:targets($element, 'general') ! fp:label(.), ', ')
                      || '): remove one generalization of the cycle'
         }"/>
     </xsl:if>
@@ -94,8 +94,8 @@
   <!-- true when going up the generalizations from the general of $g comes
        back to the classifier that owns $g -->
   <xsl:function name="fp:generalizes-itself" as="xs:boolean">
-    <xsl:param name="g" as="element()"/>
-    <xsl:sequence select="fp:reaches(fp:targets($g, 'general'), $g/.., ())"/>
+    <xsl:param name="group" as="element()"/>
+    <xsl:sequence select="fp:reaches(fp:targets($group, 'general'), $group/.., ())"/>
   </xsl:function>
 
   <!-- breadth-first up the generalizations, each classifier visited once -->
@@ -112,9 +112,9 @@
 
   <!-- "Property 'speed' of Class 'Arm'" -->
   <xsl:function name="fp:describe" as="xs:string">
-    <xsl:param name="e" as="element()"/>
-    <xsl:variable name="owner" as="element()?" select="$e/ancestor::*[@name][1]"/>
-    <xsl:sequence select="fp:label($e) ||
+    <xsl:param name="element" as="element()"/>
+    <xsl:variable name="owner" as="element()?" select="$element/ancestor::*[@name][1]"/>
+    <xsl:sequence select="fp:label($element) ||
         (if ($owner) then ' of ' || fp:label($owner) else '')"/>
   </xsl:function>
 </xsl:stylesheet>

@@ -58,28 +58,28 @@
   <!-- EA exposed interfaces of a classifier or port: $which is 'provided'
        or 'required'; the elements carry the xmi:idref of the interface -->
   <xsl:function name="fp:exposed" as="element()*">
-    <xsl:param name="e" as="element()"/>
+    <xsl:param name="element" as="element()"/>
     <xsl:param name="which" as="xs:string"/>
-    <xsl:sequence select="$e/*[local-name() eq $which][namespace-uri() eq ''][@x:idref]"/>
+    <xsl:sequence select="$element/*[local-name() eq $which][namespace-uri() eq ''][@x:idref]"/>
   </xsl:function>
 
   <!-- the interface an element stands for: itself when an Interface, the
        classifier of an EA exposed interface -->
   <xsl:function name="fp:interface-of" as="element()?">
-    <xsl:param name="e" as="element()?"/>
+    <xsl:param name="element" as="element()?"/>
     <xsl:sequence select="
-        if (empty($e)) then ()
-        else if (local-name($e) = ('provided', 'required') and $e/@x:idref)
-          then fp:element($e, $e/@x:idref)[@x:type eq 'Interface']
-        else if (fp:meta($e) eq 'Interface') then $e
+        if (empty($element)) then ()
+        else if (local-name($element) = ('provided', 'required') and $element/@x:idref)
+          then fp:element($element, $element/@x:idref)[@x:type eq 'Interface']
+        else if (fp:meta($element) eq 'Interface') then $element
         else ()"/>
   </xsl:function>
 
   <!-- generic Realizations whose supplier is the component $c and whose
        client is a class or component: EA's component realization -->
   <xsl:function name="fp:ea-realizations" as="element()*">
-    <xsl:param name="c" as="element()"/>
-    <xsl:sequence select="key('fp:dep-by-supplier', fp:id($c), root($c))[@x:type eq 'Realization']
+    <xsl:param name="classifier" as="element()"/>
+    <xsl:sequence select="key('fp:dep-by-supplier', fp:id($classifier), root($classifier))[@x:type eq 'Realization']
                           [some $t in fp:targets(., 'client') satisfies fp:meta($t) = ('Class', 'Component')]"/>
   </xsl:function>
 

@@ -141,17 +141,17 @@
 
   <!-- map { code, message }: why $e is not in the PIM -->
   <xsl:function name="fp:why-not-imported" as="map(*)">
-    <xsl:param name="e" as="element()"/>
+    <xsl:param name="element" as="element()"/>
     <xsl:param name="root" as="element()"/>
     <xsl:param name="pim" as="document-node()"/>
-    <xsl:variable name="meta" as="xs:string" select="fp:meta($e)"/>
-    <xsl:variable name="what" as="xs:string" select="fp:describe($e)"/>
-    <xsl:variable name="outside" as="xs:boolean" select="not($e/ancestor::* intersect $root)"/>
+    <xsl:variable name="meta" as="xs:string" select="fp:meta($element)"/>
+    <xsl:variable name="what" as="xs:string" select="fp:describe($element)"/>
+    <xsl:variable name="outside" as="xs:boolean" select="not($element/ancestor::* intersect $root)"/>
     <xsl:choose>
-      <xsl:when test="not(namespace-uri($e) = ($U, $X, '')) and $e/parent::x:XMI">
+      <xsl:when test="not(namespace-uri($element) = ($U, $X, '')) and $element/parent::x:XMI">
         <xsl:variable name="bases" as="element()*"
-            select="$e/@*[starts-with(local-name(), 'base_')]/tokenize(.) ! fp:element($e, .)"/>
-        <xsl:sequence select="map { 'code': 'IMP115', 'message': 'stereotype ' || local-name($e)
+            select="$element/@*[starts-with(local-name(), 'base_')]/tokenize(.) ! fp:element($element, .)"/>
+        <xsl:sequence select="map { 'code': 'IMP115', 'message': 'stereotype ' || local-name($element)
             || (if (empty($bases)) then ' is applied to no element of the file'
                 else ' is applied to ' || string-join($bases ! fp:label(.), ', ')
                      || (if (some $b in $bases satisfies exists(key('fp:in-pim', fp:id($b), $pim)))
@@ -165,13 +165,13 @@
       </xsl:when>
       <xsl:when test="$meta eq 'Connector'">
         <xsl:sequence select="map { 'code': 'IMP110', 'message': $what || ' is not imported: ' || (
-            if ($e/end/(role | partWithPort)/@href) then 'an end is in another model'
-            else if (count($e/end[exists(fp:targets(., 'role'))]) lt 2) then 'it has fewer than two ends in the model'
+            if ($element/end/(role | partWithPort)/@href) then 'an end is in another model'
+            else if (count($element/end[exists(fp:targets(., 'role'))]) lt 2) then 'it has fewer than two ends in the model'
             else 'no class or component owns the parts it joins') }"/>
       </xsl:when>
       <xsl:when test="$meta = ('Dependency', 'Abstraction')">
         <xsl:sequence select="map { 'code': 'IMP111', 'message': $what || ' is not imported: ' || (
-            if (fp:is-start-after($e)) then 'it has no client or no supplier in this model'
+            if (fp:is-start-after($element)) then 'it has no client or no supplier in this model'
             else 'robomda reads a dependency only as a deployment-sequence constraint'
                  || ' (stereotype StartAfter, or named startAfter; docs/profile.md)') }"/>
       </xsl:when>
@@ -180,15 +180,15 @@
             || 'robomda reads it when its client is a class, component or port of the model and its supplier'
             || (if ($meta eq 'ComponentRealization') then ' a component, realized by a class or component'
                 else ' an interface of the model')
-            || ' (client: ' || fp:ends($e, ('client')) || '; supplier: '
-            || fp:ends($e, ('supplier', 'contract', 'realizingClassifier')) || ')' }"/>
+            || ' (client: ' || fp:ends($element, ('client')) || '; supplier: '
+            || fp:ends($element, ('supplier', 'contract', 'realizingClassifier')) || ')' }"/>
       </xsl:when>
       <xsl:when test="$meta = ('Deployment', 'Manifestation')">
         <xsl:sequence select="map { 'code': 'IMP113', 'message': $what || ' is not imported: it '
             || (if ($meta eq 'Deployment') then 'deploys nothing of the model onto a node'
                 else 'manifests nothing of the model in an artifact')
-            || ' (client: ' || fp:ends($e, ('client')) || '; supplier: '
-            || fp:ends($e, ('supplier', 'deployedArtifact', 'utilizedElement')) || ')' }"/>
+            || ' (client: ' || fp:ends($element, ('client')) || '; supplier: '
+            || fp:ends($element, ('supplier', 'deployedArtifact', 'utilizedElement')) || ')' }"/>
       </xsl:when>
       <xsl:when test="$meta eq 'CommunicationPath'">
         <xsl:sequence select="map { 'code': 'IMP114', 'message': $what
@@ -196,19 +196,19 @@
       </xsl:when>
       <xsl:otherwise>
         <xsl:sequence select="map { 'code': 'IMP116', 'message': $what || ' is not imported: robomda does not read a '
-            || $meta || ' owned by ' || (if ($e/..) then fp:label($e/..) else 'nothing') }"/>
+            || $meta || ' owned by ' || (if ($element/..) then fp:label($element/..) else 'nothing') }"/>
       </xsl:otherwise>
     </xsl:choose>
   </xsl:function>
 
   <!-- the labels of what $e refers to by the properties $props -->
   <xsl:function name="fp:ends" as="xs:string">
-    <xsl:param name="e" as="element()"/>
+    <xsl:param name="element" as="element()"/>
     <xsl:param name="props" as="xs:string*"/>
-    <xsl:variable name="ids" as="xs:string*" select="$props ! fp:ref-ids($e, .)"/>
-    <xsl:variable name="hrefs" as="xs:string*" select="$e/*[local-name() = $props]/@href/string()"/>
+    <xsl:variable name="ids" as="xs:string*" select="$props ! fp:ref-ids($element, .)"/>
+    <xsl:variable name="hrefs" as="xs:string*" select="$element/*[local-name() = $props]/@href/string()"/>
     <xsl:sequence select="if (empty(($ids, $hrefs))) then 'none'
-        else string-join(($ids ! (let $t := fp:element($e, .) return if ($t) then fp:label($t) else '''' || . || ''''),
+        else string-join(($ids ! (let $t := fp:element($element, .) return if ($t) then fp:label($t) else '''' || . || ''''),
                           $hrefs ! ('''' || . || '''')), ', ')"/>
   </xsl:function>
 </xsl:stylesheet>

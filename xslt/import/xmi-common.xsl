@@ -199,15 +199,15 @@
        The UML namespace is looked up first, the pattern runs only for
        other URIs; the common one-colon value is cut with substring-after. -->
   <xsl:function name="fp:norm-type" as="xs:string">
-    <xsl:param name="a" as="attribute()"/>
-    <xsl:variable name="v" as="xs:string" select="normalize-space($a)"/>
-    <xsl:variable name="prefix" as="xs:string" select="substring-before($v, ':')"/>
-    <xsl:variable name="local" as="xs:string" select="substring-after($v, ':')"/>
+    <xsl:param name="attribute" as="attribute()"/>
+    <xsl:variable name="value" as="xs:string" select="normalize-space($attribute)"/>
+    <xsl:variable name="prefix" as="xs:string" select="substring-before($value, ':')"/>
+    <xsl:variable name="local" as="xs:string" select="substring-after($value, ':')"/>
     <xsl:variable name="uri" as="xs:string"
-        select="if ($prefix) then string(namespace-uri-for-prefix($prefix, $a/..)) else ''"/>
-    <xsl:sequence select="if (not(contains($v, ':'))) then $v
+        select="if ($prefix) then string(namespace-uri-for-prefix($prefix, $attribute/..)) else ''"/>
+    <xsl:sequence select="if (not(contains($value, ':'))) then $value
                           else if (fp:uml-ns($uri))
-                          then (if (contains($local, ':')) then replace($v, '^.*:', '') else $local)
+                          then (if (contains($local, ':')) then replace($value, '^.*:', '') else $local)
                           else '{' || $uri || '}' || $local"/>
   </xsl:function>
 
@@ -243,8 +243,8 @@
       use="'model'"/>
 
   <xsl:function name="fp:model-el" as="element()?">
-    <xsl:param name="n" as="node()"/>
-    <xsl:variable name="models" as="element()*" select="key('fp:model', 'model', root($n))"/>
+    <xsl:param name="name" as="node()"/>
+    <xsl:variable name="models" as="element()*" select="key('fp:model', 'model', root($name))"/>
     <xsl:sequence select="($models[self::u:Model], $models[self::u:Package], $models)[1]"/>
   </xsl:function>
 
@@ -252,34 +252,34 @@
   <!-- the element's xmi:id, or a deterministic synthetic id "robomda.<path>"
        anchored at the nearest ancestor that has an xmi:id -->
   <xsl:function name="fp:id" as="xs:string">
-    <xsl:param name="e" as="element()"/>
-    <xsl:sequence select="if ($e/@x:id) then string($e/@x:id) else fp:synthetic-id($e)"/>
+    <xsl:param name="element" as="element()"/>
+    <xsl:sequence select="if ($element/@x:id) then string($element/@x:id) else fp:synthetic-id($element)"/>
   </xsl:function>
 
   <xsl:function name="fp:synthetic-id" as="xs:string">
-    <xsl:param name="e" as="element()"/>
-    <xsl:variable name="anchor" as="element()?" select="$e/ancestor::*[@x:id][1]"/>
+    <xsl:param name="element" as="element()"/>
+    <xsl:variable name="anchor" as="element()?" select="$element/ancestor::*[@x:id][1]"/>
     <xsl:variable name="steps" as="element()*"
-        select="$e/ancestor-or-self::*[empty($anchor) or . >> $anchor]"/>
+        select="$element/ancestor-or-self::*[empty($anchor) or . >> $anchor]"/>
     <xsl:sequence select="string-join(('robomda', $anchor/@x:id/string(),
                                        $steps ! fp:step(.)), '.')"/>
   </xsl:function>
 
   <xsl:function name="fp:step" as="xs:string">
-    <xsl:param name="s" as="element()"/>
-    <xsl:variable name="n" as="xs:string"
-        select="if (namespace-uri($s) = ($U, $X)) then local-name($s) else replace(name($s), ':', '-')"/>
-    <xsl:variable name="same" as="element()*" select="$s/../*[node-name(.) eq node-name($s)]"/>
+    <xsl:param name="text" as="element()"/>
+    <xsl:variable name="name" as="xs:string"
+        select="if (namespace-uri($text) = ($U, $X)) then local-name($text) else replace(name($text), ':', '-')"/>
+    <xsl:variable name="same" as="element()*" select="$text/../*[node-name(.) eq node-name($text)]"/>
     <xsl:sequence select="if (count($same) gt 1)
-                          then $n || '-' || (count($s/preceding-sibling::*[node-name(.) eq node-name($s)]) + 1)
-                          else $n"/>
+                          then $name || '-' || (count($text/preceding-sibling::*[node-name(.) eq node-name($text)]) + 1)
+                          else $name"/>
   </xsl:function>
 
   <!-- a derived id for the n-th (n > 1) PIM element made from one XMI element -->
   <xsl:function name="fp:nth-id" as="xs:string">
-    <xsl:param name="e" as="element()"/>
-    <xsl:param name="n" as="xs:integer"/>
-    <xsl:sequence select="if ($n eq 1) then fp:id($e) else 'robomda.' || fp:id($e) || '.' || $n"/>
+    <xsl:param name="element" as="element()"/>
+    <xsl:param name="name" as="xs:integer"/>
+    <xsl:sequence select="if ($name eq 1) then fp:id($element) else 'robomda.' || fp:id($element) || '.' || $name"/>
   </xsl:function>
 
   <!-- the UML metaclass: xmi:type, else the element name (root uml:Model),
@@ -294,11 +294,11 @@
       'ownedLiteral': 'EnumerationLiteral', 'ownedPort': 'Port' }"/>
 
   <xsl:function name="fp:meta" as="xs:string">
-    <xsl:param name="e" as="element()"/>
+    <xsl:param name="element" as="element()"/>
     <xsl:sequence select="
-        if ($e/@x:type) then string($e/@x:type)
-        else if (namespace-uri($e) eq $U) then local-name($e)
-        else if (namespace-uri($e) eq '') then (map:get($default-metas, local-name($e)), '')[1]
+        if ($element/@x:type) then string($element/@x:type)
+        else if (namespace-uri($element) eq $U) then local-name($element)
+        else if (namespace-uri($element) eq '') then (map:get($default-metas, local-name($element)), '')[1]
         else ''"/>
   </xsl:function>
 
@@ -311,10 +311,10 @@
   <!-- ids referenced by property $prop: an attribute (an id list) or child
        elements with xmi:idref -->
   <xsl:function name="fp:ref-ids" as="xs:string*">
-    <xsl:param name="e" as="element()"/>
+    <xsl:param name="element" as="element()"/>
     <xsl:param name="prop" as="xs:string"/>
-    <xsl:sequence select="($e/@Q{}*[local-name() eq $prop]/tokenize(.),
-                           $e/Q{}*[local-name() eq $prop]/@x:idref/string())"/>
+    <xsl:sequence select="($element/@Q{}*[local-name() eq $prop]/tokenize(.),
+                           $element/Q{}*[local-name() eq $prop]/@x:idref/string())"/>
   </xsl:function>
 
   <!-- the element with xmi:id $id in the document of $ctx -->
@@ -327,9 +327,9 @@
   <!-- the local elements referenced by property $prop (hrefs and unknown
        ids dropped: the check pass reports unknown ids first) -->
   <xsl:function name="fp:targets" as="element()*">
-    <xsl:param name="e" as="element()"/>
+    <xsl:param name="element" as="element()"/>
     <xsl:param name="prop" as="xs:string"/>
-    <xsl:sequence select="fp:ref-ids($e, $prop) ! fp:element($e, .)"/>
+    <xsl:sequence select="fp:ref-ids($element, $prop) ! fp:element($element, .)"/>
   </xsl:function>
 
   <!-- the ids among $ids (fp:ref-ids: the references inside the file;
@@ -345,36 +345,36 @@
   <!-- "root::pkg::Class::attr": the names from the model root (fp:model-
        root, found once per document and passed down) to $e -->
   <xsl:function name="fp:qname" as="xs:string">
-    <xsl:param name="e" as="element()"/>
+    <xsl:param name="element" as="element()"/>
     <xsl:param name="root" as="element()"/>
-    <xsl:sequence select="string-join($e/ancestor-or-self::*[not(. &lt;&lt; $root)] ! string(@name), '::')"/>
+    <xsl:sequence select="string-join($element/ancestor-or-self::*[not(. &lt;&lt; $root)] ! string(@name), '::')"/>
   </xsl:function>
 
   <xsl:function name="fp:label" as="xs:string">
-    <xsl:param name="e" as="element()"/>
-    <xsl:sequence select="(fp:meta($e)[.], local-name($e))[1] ||
-                          (if ($e/@name) then ' ''' || $e/@name || '''' else '')"/>
+    <xsl:param name="element" as="element()"/>
+    <xsl:sequence select="(fp:meta($element)[.], local-name($element))[1] ||
+                          (if ($element/@name) then ' ''' || $element/@name || '''' else '')"/>
   </xsl:function>
 
   <!-- ================================================ value specifications -->
   <!-- the value of a ValueSpecification as written in the model -->
   <xsl:function name="fp:value" as="xs:string?">
-    <xsl:param name="v" as="element()?"/>
-    <xsl:variable name="meta" as="xs:string" select="if ($v) then fp:meta($v) else ''"/>
+    <xsl:param name="value-item" as="element()?"/>
+    <xsl:variable name="meta" as="xs:string" select="if ($value-item) then fp:meta($value-item) else ''"/>
     <xsl:variable name="value" as="xs:string?"
-        select="($v/@value, $v/value[not(@xsi:nil = 'true')])[1]/string()"
+        select="($value-item/@value, $value-item/value[not(@xsi:nil = 'true')])[1]/string()"
         xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance"/>
     <xsl:sequence select="
-        if (empty($v)) then ()
+        if (empty($value-item)) then ()
         else if ($meta = ('LiteralInteger', 'LiteralUnlimitedNatural', 'LiteralReal'))
           then ($value, '0')[1]
         else if ($meta eq 'LiteralBoolean') then ($value, 'false')[1]
         else if ($meta eq 'LiteralNull') then ()
         else if ($meta = ('OpaqueExpression', 'TimeExpression', 'Duration'))
-          then ($v/@body, $v/body, $v/expr/@body)[1]/string()
-        else if ($meta eq 'Expression') then ($v/@symbol/string(), $value)[1]
+          then ($value-item/@body, $value-item/body, $value-item/expr/@body)[1]/string()
+        else if ($meta eq 'Expression') then ($value-item/@symbol/string(), $value)[1]
         else if ($meta eq 'InstanceValue')
-          then (fp:targets($v, 'instance')/@name/string(), $v/@name/string(), $value)[1]
+          then (fp:targets($value-item, 'instance')/@name/string(), $value-item/@name/string(), $value)[1]
         else $value"/>
   </xsl:function>
 
@@ -390,9 +390,9 @@
 
   <!-- the default value of a Property or Parameter, absent when none -->
   <xsl:function name="fp:default" as="xs:string?">
-    <xsl:param name="e" as="element()"/>
-    <xsl:sequence select="if ($e/defaultValue) then fp:value($e/defaultValue[1])
-                          else $e/@default/string()"/>
+    <xsl:param name="element" as="element()"/>
+    <xsl:sequence select="if ($element/defaultValue) then fp:value($element/defaultValue[1])
+                          else $element/@default/string()"/>
   </xsl:function>
 
   <!-- ============================================================ types -->
@@ -447,10 +447,10 @@
   <!-- a local type that robomda may treat as a primitive: a PrimitiveType,
        or a DataType without attributes (StarUML writes int, string ... so) -->
   <xsl:function name="fp:is-primitive-like" as="xs:boolean">
-    <xsl:param name="t" as="element()"/>
-    <xsl:variable name="meta" as="xs:string" select="fp:meta($t)"/>
+    <xsl:param name="type" as="element()"/>
+    <xsl:variable name="meta" as="xs:string" select="fp:meta($type)"/>
     <xsl:sequence select="$meta eq 'PrimitiveType'
-                          or ($meta eq 'DataType' and empty($t/ownedAttribute))"/>
+                          or ($meta eq 'DataType' and empty($type/ownedAttribute))"/>
   </xsl:function>
 
   <!-- what an href says about a type: map { 'library': fp:href-library,
@@ -476,17 +476,17 @@
        1 when the model leaves them unset (the UML default). $href-types:
        fp:href-types of the document (an href missing there is computed) -->
   <xsl:function name="fp:typed" as="attribute()*">
-    <xsl:param name="e" as="element()"/>
+    <xsl:param name="element" as="element()"/>
     <xsl:param name="href-types" as="map(*)"/>
     <!-- the first type reference: an id of the type attribute, else the
          first type child with an xmi:idref (an id) or an href -->
-    <xsl:variable name="attr-id" as="xs:string?" select="tokenize($e/@type)[1]"/>
+    <xsl:variable name="attr-id" as="xs:string?" select="tokenize($element/@type)[1]"/>
     <xsl:variable name="child" as="element()?"
-        select="if (exists($attr-id)) then () else $e/type[@x:idref or @href][1]"/>
+        select="if (exists($attr-id)) then () else $element/type[@x:idref or @href][1]"/>
     <xsl:variable name="id" as="xs:string?"
         select="if (exists($attr-id)) then $attr-id else $child/@x:idref/string()"/>
     <xsl:variable name="href" as="xs:string?" select="if (exists($id)) then () else $child/@href/string()"/>
-    <xsl:variable name="t" as="element()?" select="if (exists($id)) then fp:element($e, $id) else ()"/>
+    <xsl:variable name="type-item" as="element()?" select="if (exists($id)) then fp:element($element, $id) else ()"/>
     <xsl:choose>
       <xsl:when test="empty($id) and empty($href)"/>
       <xsl:when test="exists($href)">
@@ -501,20 +501,20 @@
           <xsl:attribute name="primitive" select="."/>
         </xsl:for-each>
       </xsl:when>
-      <xsl:when test="exists($t) and not($t/@x:type = $type-metas)">
+      <xsl:when test="exists($type-item) and not($type-item/@x:type = $type-metas)">
         <!-- an element of the model that the PIM holds under no id of
              its own (a behaviour, a collaboration, an association ...):
              named, never a reference that would dangle -->
-        <xsl:attribute name="type-name" select="string($t/@name)"/>
+        <xsl:attribute name="type-name" select="string($type-item/@name)"/>
         <xsl:attribute name="type-library" select="'local'"/>
-        <xsl:attribute name="type-metaclass" select="fp:meta($t)"/>
+        <xsl:attribute name="type-metaclass" select="fp:meta($type-item)"/>
       </xsl:when>
-      <xsl:when test="exists($t)">
-        <xsl:attribute name="type" select="fp:id($t)"/>
-        <xsl:attribute name="type-name" select="string($t/@name)"/>
+      <xsl:when test="exists($type-item)">
+        <xsl:attribute name="type" select="fp:id($type-item)"/>
+        <xsl:attribute name="type-name" select="string($type-item/@name)"/>
         <xsl:attribute name="type-library" select="'local'"/>
-        <xsl:if test="fp:is-primitive-like($t)">
-          <xsl:for-each select="fp:primitive-kind('local', $t/@name)">
+        <xsl:if test="fp:is-primitive-like($type-item)">
+          <xsl:for-each select="fp:primitive-kind('local', $type-item/@name)">
             <xsl:attribute name="primitive" select="."/>
           </xsl:for-each>
         </xsl:if>
@@ -530,8 +530,8 @@
       </xsl:when>
     </xsl:choose>
     <!-- always explicit: tools differ in writing the default 1..1 or not -->
-    <xsl:attribute name="lower" select="(fp:bound($e/*:lowerValue[1], $e/@*:lower), '1')[1]"/>
-    <xsl:attribute name="upper" select="(fp:bound($e/*:upperValue[1], $e/@*:upper), '1')[1]"/>
+    <xsl:attribute name="lower" select="(fp:bound($element/*:lowerValue[1], $element/@*:lower), '1')[1]"/>
+    <xsl:attribute name="upper" select="(fp:bound($element/*:upperValue[1], $element/@*:upper), '1')[1]"/>
   </xsl:function>
 
   <!-- the metaclasses of the local types a PIM element stands for (the
@@ -546,18 +546,18 @@
 
   <!-- the local type element of a typed element, if any -->
   <xsl:function name="fp:type-element" as="element()?">
-    <xsl:param name="e" as="element()"/>
-    <xsl:sequence select="fp:targets($e, 'type')[1]"/>
+    <xsl:param name="element" as="element()"/>
+    <xsl:sequence select="fp:targets($element, 'type')[1]"/>
   </xsl:function>
 
   <!-- ========================================================= comments -->
   <!-- the documentation of an element: bodies of the comments annotating
        it, and of the comments it owns that annotate nothing -->
   <xsl:function name="fp:doc" as="xs:string?">
-    <xsl:param name="e" as="element()"/>
+    <xsl:param name="element" as="element()"/>
     <xsl:variable name="comments" as="element()*"
-        select="key('fp:comment-by-annotated', fp:id($e), root($e))
-                | $e/ownedComment[empty(fp:ref-ids(., 'annotatedElement'))]"/>
+        select="key('fp:comment-by-annotated', fp:id($element), root($element))
+                | $element/ownedComment[empty(fp:ref-ids(., 'annotatedElement'))]"/>
     <xsl:variable name="bodies" as="xs:string*"
         select="$comments ! string((@body, body)[1])[normalize-space()]"/>
     <xsl:sequence select="if (exists($bodies)) then string-join($bodies, '&#10;&#10;') else ()"/>
@@ -565,15 +565,15 @@
 
   <!-- ========================================================= booleans -->
   <xsl:function name="fp:bool" as="xs:string">
-    <xsl:param name="a" as="attribute()?"/>
+    <xsl:param name="attribute" as="attribute()?"/>
     <xsl:param name="default" as="xs:boolean"/>
-    <xsl:sequence select="if (empty($a)) then string($default)
-                          else string(normalize-space(lower-case($a)) = ('true', '1'))"/>
+    <xsl:sequence select="if (empty($attribute)) then string($default)
+                          else string(normalize-space(lower-case($attribute)) = ('true', '1'))"/>
   </xsl:function>
 
   <xsl:function name="fp:visibility" as="xs:string">
-    <xsl:param name="e" as="element()"/>
-    <xsl:variable name="v" as="xs:string" select="lower-case(normalize-space($e/@visibility))"/>
-    <xsl:sequence select="if ($v = ('public', 'protected', 'private', 'package')) then $v else 'public'"/>
+    <xsl:param name="element" as="element()"/>
+    <xsl:variable name="value" as="xs:string" select="lower-case(normalize-space($element/@visibility))"/>
+    <xsl:sequence select="if ($value = ('public', 'protected', 'private', 'package')) then $value else 'public'"/>
   </xsl:function>
 </xsl:stylesheet>

@@ -244,10 +244,10 @@
         </xsl:if>
       </xsl:for-each>
       <xsl:for-each select="$model//pim:deployment">
-        <xsl:variable name="d" as="element(pim:deployment)" select="."/>
+        <xsl:variable name="deployment" as="element(pim:deployment)" select="."/>
         <xsl:for-each select="tokenize(@deployed)[empty(key('fp:id', ., $root))]">
-          <xsl:sequence select="map { 'code': 'BND001', 'id': string($d/@id), 'message':
-              'dangling reference deployed=''' || . || ''' on deployment ''' || $d/@name || '''' }"/>
+          <xsl:sequence select="map { 'code': 'BND001', 'id': string($deployment/@id), 'message':
+              'dangling reference deployed=''' || . || ''' on deployment ''' || $deployment/@name || '''' }"/>
         </xsl:for-each>
       </xsl:for-each>
     </xsl:variable>

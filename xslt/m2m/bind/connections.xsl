@@ -32,30 +32,30 @@
 
   <xsl:function name="fp:policy" as="element(pim:policy)">
     <xsl:param name="candidates" as="element()*"/>
-    <xsl:variable name="e" as="element()?" select="$candidates[exists(f:stereotype(., 'ConnectionPolicy'))][1]"/>
-    <xsl:sequence select="if (empty($e)) then $fp:default-policy else fp:policy-of($e)"/>
+    <xsl:variable name="element" as="element()?" select="$candidates[exists(f:stereotype(., 'ConnectionPolicy'))][1]"/>
+    <xsl:sequence select="if (empty($element)) then $fp:default-policy else fp:policy-of($element)"/>
   </xsl:function>
 
   <!-- the policy given by the ConnectionPolicy stereotype of $e -->
   <xsl:function name="fp:policy-of" as="element(pim:policy)">
-    <xsl:param name="e" as="element()"/>
+    <xsl:param name="element" as="element()"/>
     <!-- the stereotype application holds the values: errors point at it -->
-    <xsl:variable name="id" as="xs:string?" select="(f:stereotype($e, 'ConnectionPolicy')/@id, $e/@id)[1]"/>
+    <xsl:variable name="id" as="xs:string?" select="(f:stereotype($element, 'ConnectionPolicy')/@id, $element/@id)[1]"/>
     <xsl:variable name="default" as="element(pim:policy)" select="$fp:default-policy"/>
     <xsl:variable name="type" as="xs:string"
-        select="fp:enum((fp:tag($e, 'ConnectionPolicy', 'type')[normalize-space(.)], $default/@type)[1],
+        select="fp:enum((fp:tag($element, 'ConnectionPolicy', 'type')[normalize-space(.)], $default/@type)[1],
                         ('DATA', 'BUFFER', 'CIRCULAR_BUFFER'), 'connection type', $id)"/>
     <pim:policy type="{$type}"
-        size="{let $s := fp:tag($e, 'ConnectionPolicy', 'size')[normalize-space(.)]
+        size="{let $s := fp:tag($element, 'ConnectionPolicy', 'size')[normalize-space(.)]
                return if (exists($s)) then fp:integer($s, 'size', $id) else $default/@size}"
-        lock-policy="{fp:enum((fp:tag($e, 'ConnectionPolicy', 'lockPolicy')[normalize-space(.)], $default/@lock-policy)[1],
+        lock-policy="{fp:enum((fp:tag($element, 'ConnectionPolicy', 'lockPolicy')[normalize-space(.)], $default/@lock-policy)[1],
                              ('UNSYNC', 'LOCKED', 'LOCK_FREE'), 'lock policy', $id)}"
-        init="{fp:boolean((fp:tag($e, 'ConnectionPolicy', 'init')[normalize-space(.)], $default/@init)[1], 'init', $id)}"
-        pull="{fp:boolean((fp:tag($e, 'ConnectionPolicy', 'pull')[normalize-space(.)], $default/@pull)[1], 'pull', $id)}"
-        topic="{fp:tag($e, 'ConnectionPolicy', 'topic')}"
-        source="{if ($e/self::pim:connector) then 'connector'
-                 else if ($e/self::pim:port) then 'port' else 'interface'}"
-        source-element="{$e/@id}" holder="{$id}"/>
+        init="{fp:boolean((fp:tag($element, 'ConnectionPolicy', 'init')[normalize-space(.)], $default/@init)[1], 'init', $id)}"
+        pull="{fp:boolean((fp:tag($element, 'ConnectionPolicy', 'pull')[normalize-space(.)], $default/@pull)[1], 'pull', $id)}"
+        topic="{fp:tag($element, 'ConnectionPolicy', 'topic')}"
+        source="{if ($element/self::pim:connector) then 'connector'
+                 else if ($element/self::pim:port) then 'port' else 'interface'}"
+        source-element="{$element/@id}" holder="{$id}"/>
   </xsl:function>
 
   <xsl:function name="fp:connection-name" as="xs:string">
@@ -72,13 +72,13 @@
     <xsl:variable name="root" as="document-node()" select="root($model[1])"/>
     <xsl:for-each select="$model/pim:application//pim:interface">
       <xsl:variable name="ips" as="element(fp:ip)*" select="key('fp:ip-by-interface', @id, $work)"/>
-      <xsl:variable name="w" as="element(fp:ip)*" select="$ips[@direction eq 'out']"/>
-      <xsl:variable name="r" as="element(fp:ip)*" select="$ips[@direction eq 'in']"/>
-      <xsl:if test="exists($w) and exists($r)">
+      <xsl:variable name="writer" as="element(fp:ip)*" select="$ips[@direction eq 'out']"/>
+      <xsl:variable name="realization" as="element(fp:ip)*" select="$ips[@direction eq 'in']"/>
+      <xsl:if test="exists($writer) and exists($realization)">
         <pim:connection name="{fp:connection-name((), .)}" xmi-id="{@id}" interface="{@id}">
-          <xsl:sequence select="fp:policy((key('fp:id', ($w, $r)/@port, $root), .))"/>
-          <xsl:for-each select="$w"><pim:writer instance="{@instance}" port="{@port}" data-port="{@data-port}"/></xsl:for-each>
-          <xsl:for-each select="$r"><pim:reader instance="{@instance}" port="{@port}" data-port="{@data-port}"/></xsl:for-each>
+          <xsl:sequence select="fp:policy((key('fp:id', ($writer, $realization)/@port, $root), .))"/>
+          <xsl:for-each select="$writer"><pim:writer instance="{@instance}" port="{@port}" data-port="{@data-port}"/></xsl:for-each>
+          <xsl:for-each select="$realization"><pim:reader instance="{@instance}" port="{@port}" data-port="{@data-port}"/></xsl:for-each>
         </pim:connection>
       </xsl:if>
     </xsl:for-each>
@@ -91,7 +91,7 @@
     <xsl:variable name="root" as="document-node()" select="root($connectors[1])"/>
     <xsl:variable name="pairs" as="element(fp:pair)*">
       <xsl:for-each select="$connectors">
-        <xsl:variable name="k" as="element(pim:connector)" select="."/>
+        <xsl:variable name="connection" as="element(pim:connector)" select="."/>
         <xsl:variable name="ips" as="element(fp:ip)*"
             select="pim:end[@part] ! key('fp:ip-by-end', @part || '|' || @role, $work)"/>
         <xsl:variable name="found" as="element(fp:pair)*">
@@ -99,7 +99,7 @@
             <xsl:variable name="wr" as="element(fp:ip)" select="."/>
             <xsl:for-each select="$ips[@direction eq 'in'][@part ne $wr/@part or @port ne $wr/@port]
                                       [@interface eq $wr/@interface or @type-key eq $wr/@type-key]">
-              <fp:pair connector="{$k/@id}" interface="{$wr/@interface}"
+              <fp:pair connector="{$connection/@id}" interface="{$wr/@interface}"
                        w-instance="{$wr/@instance}" w-port="{$wr/@port}" w-dp="{$wr/@data-port}"
                        r-instance="{@instance}" r-port="{@port}" r-dp="{@data-port}"/>
             </xsl:for-each>
@@ -124,15 +124,15 @@
     </xsl:variable>
     <xsl:sequence select="f:fail-all($problems)"/>
     <xsl:for-each-group select="$pairs" group-by="@w-instance || '.' || @w-dp">
-      <xsl:variable name="g" as="element(fp:pair)+" select="current-group()"/>
+      <xsl:variable name="group" as="element(fp:pair)+" select="current-group()"/>
       <xsl:variable name="ks" as="element(pim:connector)*"
-          select="key('fp:id', distinct-values($g/@connector), $root)"/>
-      <xsl:variable name="iface" as="element(pim:interface)" select="key('fp:id', $g[1]/@interface, $root)"/>
+          select="key('fp:id', distinct-values($group/@connector), $root)"/>
+      <xsl:variable name="iface" as="element(pim:interface)" select="key('fp:id', $group[1]/@interface, $root)"/>
       <pim:connection name="{fp:connection-name($ks[1], $iface)}" xmi-id="{$ks[1]/@id}"
                       interface="{$iface/@id}" connectors="{$ks/@id}">
-        <xsl:sequence select="fp:policy(($ks, key('fp:id', ($g[1]/@w-port, $g/@r-port), $root), $iface))"/>
-        <pim:writer instance="{$g[1]/@w-instance}" port="{$g[1]/@w-port}" data-port="{$g[1]/@w-dp}"/>
-        <xsl:for-each-group select="$g" group-by="@r-instance || '.' || @r-dp">
+        <xsl:sequence select="fp:policy(($ks, key('fp:id', ($group[1]/@w-port, $group/@r-port), $root), $iface))"/>
+        <pim:writer instance="{$group[1]/@w-instance}" port="{$group[1]/@w-port}" data-port="{$group[1]/@w-dp}"/>
+        <xsl:for-each-group select="$group" group-by="@r-instance || '.' || @r-dp">
           <pim:reader instance="{@r-instance}" port="{@r-port}" data-port="{@r-dp}"/>
         </xsl:for-each-group>
       </pim:connection>

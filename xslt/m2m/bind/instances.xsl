@@ -24,12 +24,12 @@
 
   <!-- ========================================================== hosts -->
   <xsl:function name="fp:host" as="element(pim:host)">
-    <xsl:param name="n" as="element(pim:node)"/>
+    <xsl:param name="node" as="element(pim:node)"/>
     <xsl:param name="host-count" as="xs:integer"/>
-    <xsl:variable name="hn" as="xs:string?" select="fp:tag($n, 'Host', 'hostname')[normalize-space(.)]"/>
-    <xsl:variable name="ad" as="xs:string?" select="fp:tag($n, 'Host', 'address')[normalize-space(.)]"/>
-    <xsl:variable name="hostname" as="xs:string" select="($hn, string($n/@name))[1]"/>
-    <pim:host xmi-id="{$n/@id}" name="{$n/@name}" hostname="{$hostname}"
+    <xsl:variable name="hn" as="xs:string?" select="fp:tag($node, 'Host', 'hostname')[normalize-space(.)]"/>
+    <xsl:variable name="ad" as="xs:string?" select="fp:tag($node, 'Host', 'address')[normalize-space(.)]"/>
+    <xsl:variable name="hostname" as="xs:string" select="($hn, string($node/@name))[1]"/>
+    <pim:host xmi-id="{$node/@id}" name="{$node/@name}" hostname="{$hostname}"
               hostname-source="{if (exists($hn)) then 'stereotype' else 'name'}"
               address="{if (exists($ad)) then $ad else if ($host-count eq 1) then 'localhost' else $hostname}"
               address-source="{if (exists($ad)) then 'stereotype' else 'default'}"/>
@@ -41,17 +41,17 @@
     <xsl:variable name="all" as="element(pim:artifact)*" select="$model/pim:platform//pim:artifact"/>
     <xsl:variable name="profiled" as="element(pim:artifact)*" select="$all[exists(f:stereotype(., 'Library'))]"/>
     <xsl:for-each select="if (exists($profiled)) then $profiled else $all">
-      <xsl:variable name="p" as="xs:string?" select="fp:tag(., 'Library', 'path')[normalize-space(.)]"/>
-      <xsl:variable name="t" as="xs:string?" select="fp:tag(., 'Library', 'target')[normalize-space(.)]"/>
-      <xsl:variable name="i" as="xs:string?" select="fp:tag(., 'Library', 'includeDir')[normalize-space(.)]"/>
+      <xsl:variable name="item" as="xs:string?" select="fp:tag(., 'Library', 'path')[normalize-space(.)]"/>
+      <xsl:variable name="type" as="xs:string?" select="fp:tag(., 'Library', 'target')[normalize-space(.)]"/>
+      <xsl:variable name="instance" as="xs:string?" select="fp:tag(., 'Library', 'includeDir')[normalize-space(.)]"/>
       <xsl:variable name="path" as="xs:string"
-          select="translate(($p, @file-name[normalize-space(.)], @name)[1], '\', '/')"/>
+          select="translate(($item, @file-name[normalize-space(.)], @name)[1], '\', '/')"/>
       <pim:library xmi-id="{@id}" name="{@name}" path="{$path}"
-                   path-source="{if (exists($p)) then 'stereotype' else if (normalize-space(@file-name)) then 'file-name' else 'name'}"
+                   path-source="{if (exists($item)) then 'stereotype' else if (normalize-space(@file-name)) then 'file-name' else 'name'}"
                    absolute="{starts-with($path, '/') or matches($path, '^[A-Za-z]:/')}"
-                   target="{($t, @name)[1]}"
-                   target-source="{if (exists($t)) then 'stereotype' else 'name'}"
-                   include-dir="{($i, 'include')[1]}">
+                   target="{($type, @name)[1]}"
+                   target-source="{if (exists($type)) then 'stereotype' else 'name'}"
+                   include-dir="{($instance, 'include')[1]}">
         <xsl:for-each select="pim:manifestation">
           <pim:manifests element="{@element}"/>
         </xsl:for-each>
@@ -62,26 +62,26 @@
   <!-- ====================================================== instances -->
   <xsl:function name="fp:instance" as="element(pim:instance)">
     <xsl:param name="part" as="element(pim:part)?"/>
-    <xsl:param name="c" as="element(pim:component)"/>
+    <xsl:param name="component" as="element(pim:component)"/>
     <xsl:param name="top" as="element(pim:component)?"/>
     <xsl:param name="ees" as="element(pim:node)*"/>
     <xsl:param name="hosts" as="element(pim:node)*"/>
-    <xsl:variable name="root" as="document-node()" select="root($c)"/>
-    <xsl:variable name="r" as="element(pim:class)?" select="fp:realizing-class($c)"/>
-    <xsl:variable name="ids" as="xs:string*" select="($part/@id, $c/@id, $top/@id, $r/@id) ! string(.)"/>
+    <xsl:variable name="root" as="document-node()" select="root($component)"/>
+    <xsl:variable name="realization-item" as="element(pim:class)?" select="fp:realizing-class($component)"/>
+    <xsl:variable name="ids" as="xs:string*" select="($part/@id, $component/@id, $top/@id, $realization-item/@id) ! string(.)"/>
     <xsl:variable name="artifact-ids" as="xs:string*"
         select="key('fp:manifestation-by-element', $ids, $root)/../@id ! string(.)"/>
     <xsl:variable name="deployments" as="element(pim:deployment)*"
         select="key('fp:deployment-by-deployed', ($ids, $artifact-ids), $root)"/>
-    <xsl:variable name="ee" as="element(pim:node)?" select="fp:instance-ee($part, $c, $top, $ees)"/>
-    <xsl:variable name="inst-id" as="xs:string" select="string(($part/@id, $c/@id)[1])"/>
+    <xsl:variable name="ee" as="element(pim:node)?" select="fp:instance-ee($part, $component, $top, $ees)"/>
+    <xsl:variable name="inst-id" as="xs:string" select="string(($part/@id, $component/@id)[1])"/>
     <xsl:if test="empty($ee)">
-      <xsl:sequence select="f:fail-all(fp:no-ee-problem($part, $c, $ees))"/>
+      <xsl:sequence select="f:fail-all(fp:no-ee-problem($part, $component, $ees))"/>
     </xsl:if>
     <xsl:variable name="host" as="element(pim:node)?"
         select="(fp:host-of($ee, $deployments/.., $hosts), if (count($hosts) eq 1) then $hosts else ())[1]"/>
-    <pim:instance name="{f:cpp-identifier(($part/@name[normalize-space(.)], $c/@name)[1])}"
-                  xmi-id="{$inst-id}" component="{$c/@id}">
+    <pim:instance name="{f:cpp-identifier(($part/@name[normalize-space(.)], $component/@name)[1])}"
+                  xmi-id="{$inst-id}" component="{$component/@id}">
       <xsl:if test="$top"><xsl:attribute name="composite" select="$top/@id"/></xsl:if>
       <xsl:if test="$host"><xsl:attribute name="host" select="$host/@id"/></xsl:if>
       <xsl:attribute name="execution-environment" select="$ee/@id"/>
@@ -89,9 +89,9 @@
       <xsl:for-each select="fp:tag($ee, 'Middleware', 'version')[normalize-space(.)]">
         <xsl:attribute name="middleware-version" select="."/>
       </xsl:for-each>
-      <xsl:if test="$r"><xsl:attribute name="realization" select="$r/@id"/></xsl:if>
+      <xsl:if test="$realization-item"><xsl:attribute name="realization" select="$realization-item/@id"/></xsl:if>
       <!-- only the elements with an Activity stereotype can give a tag -->
-      <xsl:sequence select="fp:activity(($part, $c, $r)[exists(f:stereotype(., 'Activity'))], $r, $ee, $inst-id)"/>
+      <xsl:sequence select="fp:activity(($part, $component, $realization-item)[exists(f:stereotype(., 'Activity'))], $realization-item, $ee, $inst-id)"/>
       <!-- every deployment that reaches the instance, so the deployment
            rules (schemas/pim/1/pim.sch) can see one deployed twice -->
       <xsl:for-each select="$deployments">
@@ -110,16 +110,16 @@
        finds it -->
   <xsl:function name="fp:instance-ee" as="element(pim:node)?">
     <xsl:param name="part" as="element(pim:part)?"/>
-    <xsl:param name="c" as="element(pim:component)"/>
+    <xsl:param name="component" as="element(pim:component)"/>
     <xsl:param name="top" as="element(pim:component)?"/>
     <xsl:param name="ees" as="element(pim:node)*"/>
-    <xsl:variable name="root" as="document-node()" select="root($c)"/>
-    <xsl:variable name="r" as="element(pim:class)?" select="fp:realizing-class($c)"/>
-    <xsl:variable name="ids" as="xs:string*" select="($part/@id, $c/@id, $top/@id, $r/@id) ! string(.)"/>
+    <xsl:variable name="root" as="document-node()" select="root($component)"/>
+    <xsl:variable name="realization" as="element(pim:class)?" select="fp:realizing-class($component)"/>
+    <xsl:variable name="ids" as="xs:string*" select="($part/@id, $component/@id, $top/@id, $realization/@id) ! string(.)"/>
     <xsl:variable name="artifact-ids" as="xs:string*"
         select="key('fp:manifestation-by-element', $ids, $root)/../@id ! string(.)"/>
     <xsl:sequence select="(key('fp:deployment-by-deployed', ($ids, $artifact-ids), $root) ! fp:deployment-ee(.),
-                           fp:owner-ee($c),
+                           fp:owner-ee($component),
                            if (count($ees) eq 1) then $ees else ())[1]"/>
   </xsl:function>
 
@@ -127,27 +127,27 @@
        the XMI (EA nests a component in the node it runs on): the node
        itself, else the first one nested in it -->
   <xsl:function name="fp:owner-ee" as="element(pim:node)?">
-    <xsl:param name="c" as="element(pim:component)"/>
-    <xsl:variable name="node" as="element(pim:node)?" select="$c/@node ! key('fp:id', ., root($c))[self::pim:node]"/>
+    <xsl:param name="component" as="element(pim:component)"/>
+    <xsl:variable name="node" as="element(pim:node)?" select="$component/@node ! key('fp:id', ., root($component))[self::pim:node]"/>
     <xsl:sequence select="($node[@kind eq 'execution-environment'], $node//pim:node[@kind eq 'execution-environment'])[1]"/>
   </xsl:function>
 
   <!-- BND006 about the instance of $part / $c -->
   <xsl:function name="fp:no-ee-problem" as="map(*)">
     <xsl:param name="part" as="element(pim:part)?"/>
-    <xsl:param name="c" as="element(pim:component)"/>
+    <xsl:param name="component" as="element(pim:component)"/>
     <xsl:param name="ees" as="element(pim:node)*"/>
-    <xsl:sequence select="map { 'code': 'BND006', 'id': string(($part/@id, $c/@id)[1]), 'message':
-        'component instance ''' || ($part/@name, $c/@name)[1] || ''' is deployed to no execution environment'
+    <xsl:sequence select="map { 'code': 'BND006', 'id': string(($part/@id, $component/@id)[1]), 'message':
+        'component instance ''' || ($part/@name, $component/@name)[1] || ''' is deployed to no execution environment'
         || ' and the model has ' || count($ees) || ' of them' }"/>
   </xsl:function>
 
   <!-- the execution environment deployment $d reaches: its target, else
        the first one nested in its target -->
   <xsl:function name="fp:deployment-ee" as="element(pim:node)?">
-    <xsl:param name="d" as="element(pim:deployment)"/>
-    <xsl:sequence select="if ($d/../@kind eq 'execution-environment') then $d/..
-                          else ($d/..//pim:node[@kind eq 'execution-environment'])[1]"/>
+    <xsl:param name="deployment" as="element(pim:deployment)"/>
+    <xsl:sequence select="if ($deployment/../@kind eq 'execution-environment') then $deployment/..
+                          else ($deployment/..//pim:node[@kind eq 'execution-environment'])[1]"/>
   </xsl:function>
 
   <!-- the host of execution environment $ee (the nearest enclosing node
@@ -169,35 +169,35 @@
   <xsl:function name="fp:activity-value" as="xs:string+">
     <xsl:param name="stereo-on" as="element()*"/>
     <xsl:param name="tag" as="xs:string"/>
-    <xsl:param name="r" as="element(pim:class)?"/>
+    <xsl:param name="realization" as="element(pim:class)?"/>
     <xsl:param name="ee" as="element(pim:node)?"/>
     <xsl:param name="conv" as="xs:string"/>
     <xsl:param name="default" as="xs:string"/>
-    <xsl:variable name="t" as="xs:string?" select="fp:first-tag($stereo-on, 'Activity', $tag)"/>
-    <xsl:variable name="c" as="xs:string?" select="fp:conv($r, $conv)[normalize-space(.)]"/>
-    <xsl:variable name="e" as="xs:string?"
+    <xsl:variable name="type" as="xs:string?" select="fp:first-tag($stereo-on, 'Activity', $tag)"/>
+    <xsl:variable name="classifier" as="xs:string?" select="fp:conv($realization, $conv)[normalize-space(.)]"/>
+    <xsl:variable name="element" as="xs:string?"
         select="if ($conv eq 'sample') then () else fp:conv($ee, $conv)[normalize-space(.)]"/>
-    <xsl:sequence select="if (exists($t)) then ($t, 'stereotype',
+    <xsl:sequence select="if (exists($type)) then ($type, 'stereotype',
                               string(($stereo-on ! f:stereotype(., 'Activity'))[pim:tag[@name eq $tag][normalize-space(@value)]][1]/@id))
-                          else if (exists($c)) then ($c, 'realizing-class', fp:conv-holder($r, $conv))
-                          else if (exists($e)) then ($e, 'execution-environment', fp:conv-holder($ee, $conv))
+                          else if (exists($classifier)) then ($classifier, 'realizing-class', fp:conv-holder($realization, $conv))
+                          else if (exists($element)) then ($element, 'execution-environment', fp:conv-holder($ee, $conv))
                           else ($default, 'default', '')"/>
   </xsl:function>
 
   <xsl:function name="fp:activity" as="element(pim:activity)">
     <xsl:param name="stereo-on" as="element()*"/>
-    <xsl:param name="r" as="element(pim:class)?"/>
+    <xsl:param name="realization" as="element(pim:class)?"/>
     <xsl:param name="ee" as="element(pim:node)?"/>
     <xsl:param name="id" as="xs:string"/>
-    <xsl:variable name="period" as="xs:string+" select="fp:activity-value($stereo-on, 'period', $r, $ee, 'sample', '0')"/>
-    <xsl:variable name="prio" as="xs:string+" select="fp:activity-value($stereo-on, 'priority', $r, $ee, 'priority', '0')"/>
-    <xsl:variable name="sched" as="xs:string+" select="fp:activity-value($stereo-on, 'scheduler', $r, $ee, 'scheduler', 'OTHER')"/>
-    <xsl:variable name="cpu" as="xs:string+" select="fp:activity-value($stereo-on, 'cpuAffinity', $r, $ee, 'cpuAffinity', '0')"/>
-    <xsl:variable name="s" as="xs:string"
+    <xsl:variable name="period" as="xs:string+" select="fp:activity-value($stereo-on, 'period', $realization, $ee, 'sample', '0')"/>
+    <xsl:variable name="prio" as="xs:string+" select="fp:activity-value($stereo-on, 'priority', $realization, $ee, 'priority', '0')"/>
+    <xsl:variable name="sched" as="xs:string+" select="fp:activity-value($stereo-on, 'scheduler', $realization, $ee, 'scheduler', 'OTHER')"/>
+    <xsl:variable name="cpu" as="xs:string+" select="fp:activity-value($stereo-on, 'cpuAffinity', $realization, $ee, 'cpuAffinity', '0')"/>
+    <xsl:variable name="text" as="xs:string"
         select="replace(replace(upper-case(fp:literal(fp:strip($sched[1]))), '^(ORO_)?SCHED_', ''), '^OTHERS$', 'OTHER')"/>
     <pim:activity period="{fp:number($period[1], 'period', fp:holder($period, $id))}" period-source="{$period[2]}"
                   priority="{fp:integer($prio[1], 'priority', fp:holder($prio, $id))}" priority-source="{$prio[2]}"
-                  scheduler="{fp:enum($s, ('RT', 'OTHER'), 'scheduler', fp:holder($sched, $id))}" scheduler-source="{$sched[2]}"
+                  scheduler="{fp:enum($text, ('RT', 'OTHER'), 'scheduler', fp:holder($sched, $id))}" scheduler-source="{$sched[2]}"
                   cpu-affinity="{fp:integer($cpu[1], 'cpuAffinity', fp:holder($cpu, $id))}" cpu-affinity-source="{$cpu[2]}">
       <xsl:if test="$period[3]"><xsl:attribute name="period-holder" select="$period[3]"/></xsl:if>
       <xsl:if test="$prio[3]"><xsl:attribute name="priority-holder" select="$prio[3]"/></xsl:if>

@@ -23,9 +23,9 @@
 
   <!-- ================================================ model look-ups -->
   <xsl:function name="fp:realizing-class" as="element(pim:class)?">
-    <xsl:param name="c" as="element(pim:component)"/>
-    <xsl:variable name="root" as="document-node()" select="root($c[1])"/>
-    <xsl:sequence select="(for $r in $c/pim:realization
+    <xsl:param name="component" as="element(pim:component)"/>
+    <xsl:variable name="root" as="document-node()" select="root($component[1])"/>
+    <xsl:sequence select="(for $r in $component/pim:realization
                            return key('fp:id', $r/@classifier, $root)/self::pim:class)[1]"/>
   </xsl:function>
 

@@ -27,20 +27,20 @@
   <!-- a tag value of stereotype $stereo on $e; enumeration literals given by
        reference resolve to their name; "Kind::LIT" / "Kind.LIT" -> "LIT" -->
   <xsl:function name="fp:tag" as="xs:string?">
-    <xsl:param name="e" as="element()?"/>
+    <xsl:param name="element" as="element()?"/>
     <xsl:param name="stereo" as="xs:string"/>
     <xsl:param name="tag" as="xs:string"/>
-    <xsl:variable name="t" as="element()?" select="f:stereotype($e, $stereo)/pim:tag[@name eq $tag][1]"/>
-    <xsl:sequence select="if (empty($t)) then ()
-        else if ($t/@ref = ('true', '1')) then string(key('fp:id', $t/@value, root($t))/@name)
-        else string($t/@value)"/>
+    <xsl:variable name="type" as="element()?" select="f:stereotype($element, $stereo)/pim:tag[@name eq $tag][1]"/>
+    <xsl:sequence select="if (empty($type)) then ()
+        else if ($type/@ref = ('true', '1')) then string(key('fp:id', $type/@value, root($type))/@name)
+        else string($type/@value)"/>
   </xsl:function>
 
   <xsl:function name="fp:literal" as="xs:string">
-    <xsl:param name="v" as="xs:string"/>
-    <xsl:sequence select="if (contains($v, ':') or contains($v, '.'))
-                          then replace(normalize-space($v), '^.*(::|\.)([A-Za-z_][A-Za-z0-9_]*)$', '$2')
-                          else normalize-space($v)"/>
+    <xsl:param name="value" as="xs:string"/>
+    <xsl:sequence select="if (contains($value, ':') or contains($value, '.'))
+                          then replace(normalize-space($value), '^.*(::|\.)([A-Za-z_][A-Za-z0-9_]*)$', '$2')
+                          else normalize-space($value)"/>
   </xsl:function>
 
   <!-- first tag value found on the elements $es, with its source -->
@@ -53,65 +53,65 @@
 
   <!-- default value of the convention attribute $name of $e -->
   <xsl:function name="fp:conv" as="xs:string?">
-    <xsl:param name="e" as="element()?"/>
+    <xsl:param name="element" as="element()?"/>
     <xsl:param name="name" as="xs:string"/>
-    <xsl:sequence select="$e/pim:attribute[@name eq $name][@default][1]/@default ! string(.)"/>
+    <xsl:sequence select="$element/pim:attribute[@name eq $name][@default][1]/@default ! string(.)"/>
   </xsl:function>
 
   <!-- the id of the attribute holding that default value -->
   <xsl:function name="fp:conv-holder" as="xs:string">
-    <xsl:param name="e" as="element()?"/>
+    <xsl:param name="element" as="element()?"/>
     <xsl:param name="name" as="xs:string"/>
-    <xsl:sequence select="string($e/pim:attribute[@name eq $name][@default][1]/@id)"/>
+    <xsl:sequence select="string($element/pim:attribute[@name eq $name][@default][1]/@id)"/>
   </xsl:function>
 
   <!-- ================================================= value parsing -->
   <xsl:function name="fp:strip" as="xs:string">
-    <xsl:param name="v" as="xs:string"/>
-    <xsl:sequence select="if (contains($v, '&quot;') or contains($v, ''''))
-                          then replace(normalize-space($v), '^[&quot;'']|[&quot;'']$', '')
-                          else normalize-space($v)"/>
+    <xsl:param name="value" as="xs:string"/>
+    <xsl:sequence select="if (contains($value, '&quot;') or contains($value, ''''))
+                          then replace(normalize-space($value), '^[&quot;'']|[&quot;'']$', '')
+                          else normalize-space($value)"/>
   </xsl:function>
 
   <xsl:function name="fp:number" as="xs:double">
-    <xsl:param name="v" as="xs:string"/>
+    <xsl:param name="value" as="xs:string"/>
     <xsl:param name="what" as="xs:string"/>
     <xsl:param name="id" as="xs:string?"/>
-    <xsl:variable name="s" as="xs:string" select="replace(fp:strip($v), '[fFdD]$', '')"/>
-    <xsl:sequence select="if ($s castable as xs:double and number($s) ge 0) then number($s)
-        else f:fail('BND010', $id, $what || ': ''' || $v || ''' is not a non-negative number')"/>
+    <xsl:variable name="text" as="xs:string" select="replace(fp:strip($value), '[fFdD]$', '')"/>
+    <xsl:sequence select="if ($text castable as xs:double and number($text) ge 0) then number($text)
+        else f:fail('BND010', $id, $what || ': ''' || $value || ''' is not a non-negative number')"/>
   </xsl:function>
 
   <xsl:function name="fp:integer" as="xs:integer">
-    <xsl:param name="v" as="xs:string"/>
+    <xsl:param name="value" as="xs:string"/>
     <xsl:param name="what" as="xs:string"/>
     <xsl:param name="id" as="xs:string?"/>
-    <xsl:variable name="d" as="xs:double" select="fp:number($v, $what, $id)"/>
-    <xsl:sequence select="if ($d eq floor($d)) then xs:integer($d)
-        else f:fail('BND010', $id, $what || ': ''' || $v || ''' is not an integer')"/>
+    <xsl:variable name="deployment" as="xs:double" select="fp:number($value, $what, $id)"/>
+    <xsl:sequence select="if ($deployment eq floor($deployment)) then xs:integer($deployment)
+        else f:fail('BND010', $id, $what || ': ''' || $value || ''' is not an integer')"/>
   </xsl:function>
 
   <xsl:function name="fp:boolean" as="xs:boolean">
-    <xsl:param name="v" as="xs:string"/>
+    <xsl:param name="value" as="xs:string"/>
     <xsl:param name="what" as="xs:string"/>
     <xsl:param name="id" as="xs:string?"/>
-    <xsl:variable name="s" as="xs:string" select="lower-case(fp:strip($v))"/>
-    <xsl:sequence select="if ($s = ('true', '1', 'yes')) then true()
-        else if ($s = ('false', '0', 'no')) then false()
-        else f:fail('BND010', $id, $what || ': ''' || $v || ''' is not a boolean')"/>
+    <xsl:variable name="text" as="xs:string" select="lower-case(fp:strip($value))"/>
+    <xsl:sequence select="if ($text = ('true', '1', 'yes')) then true()
+        else if ($text = ('false', '0', 'no')) then false()
+        else f:fail('BND010', $id, $what || ': ''' || $value || ''' is not a boolean')"/>
   </xsl:function>
 
   <xsl:function name="fp:enum" as="xs:string">
-    <xsl:param name="v" as="xs:string"/>
+    <xsl:param name="value" as="xs:string"/>
     <xsl:param name="allowed" as="xs:string+"/>
     <xsl:param name="what" as="xs:string"/>
     <xsl:param name="id" as="xs:string?"/>
-    <xsl:variable name="s" as="xs:string"
-        select="upper-case(replace(fp:literal(fp:strip($v)), '[\s\-]', '_'))"/>
+    <xsl:variable name="text" as="xs:string"
+        select="upper-case(replace(fp:literal(fp:strip($value)), '[\s\-]', '_'))"/>
     <xsl:variable name="hit" as="xs:string?"
-        select="$allowed[translate(., '_', '') eq translate($s, '_', '')][1]"/>
+        select="$allowed[translate(., '_', '') eq translate($text, '_', '')][1]"/>
     <xsl:sequence select="if (exists($hit)) then $hit
-        else f:fail('BND010', $id, $what || ': ''' || $v || ''' is not one of '
+        else f:fail('BND010', $id, $what || ': ''' || $value || ''' is not one of '
                     || string-join($allowed, ', '))"/>
   </xsl:function>
 </xsl:stylesheet>

@@ -142,8 +142,8 @@
   </xsl:function>
 
   <xsl:function name="fp:psm-doc" as="element()?">
-    <xsl:param name="e" as="element()?"/>
-    <xsl:for-each select="$e/pim:doc[normalize-space(.)]">
+    <xsl:param name="element" as="element()?"/>
+    <xsl:for-each select="$element/pim:doc[normalize-space(.)]">
       <xsl:element name="{$fp:psm-prefix}:doc" namespace="{$fp:psm-namespace}">
         <xsl:value-of select="normalize-space(.)"/>
       </xsl:element>

@@ -42,7 +42,7 @@
   </xsl:function>
 
   <xsl:function name="fp:manifest-text" as="xs:string">
-    <xsl:param name="s" as="xs:string"/>
-    <xsl:sequence select="replace(replace(replace(normalize-space($s), '&amp;', '&amp;amp;'), '&lt;', '&amp;lt;'), '&quot;', '&amp;quot;')"/>
+    <xsl:param name="text" as="xs:string"/>
+    <xsl:sequence select="replace(replace(replace(normalize-space($text), '&amp;', '&amp;amp;'), '&lt;', '&amp;lt;'), '&quot;', '&amp;quot;')"/>
   </xsl:function>
 </xsl:stylesheet>

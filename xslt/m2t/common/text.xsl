@@ -45,9 +45,9 @@
   </xsl:function>
 
   <xsl:function name="fp:indent" as="xs:string*">
-    <xsl:param name="n" as="xs:integer"/>
+    <xsl:param name="name" as="xs:integer"/>
     <xsl:param name="lines" as="xs:string*"/>
-    <xsl:variable name="pad" as="xs:string" select="string-join((1 to $n) ! ' ', '')"/>
+    <xsl:variable name="pad" as="xs:string" select="string-join((1 to $name) ! ' ', '')"/>
     <xsl:sequence select="$lines ! (if (. eq '') then . else concat($pad, .))"/>
   </xsl:function>
 
@@ -83,19 +83,19 @@
   </xsl:function>
 
   <xsl:function name="fp:what" as="xs:string">
-    <xsl:param name="e" as="element()"/>
-    <xsl:sequence select="concat('component ''', $e/@name, ''' of model ''', $e/../@model-name, '''')"/>
+    <xsl:param name="element" as="element()"/>
+    <xsl:sequence select="concat('component ''', $element/@name, ''' of model ''', $element/../@model-name, '''')"/>
   </xsl:function>
 
   <xsl:function name="fp:doc-of" as="xs:string">
-    <xsl:param name="e" as="element()"/>
+    <xsl:param name="element" as="element()"/>
     <xsl:param name="fallback" as="xs:string"/>
-    <xsl:sequence select="($e/*:doc/string(), $fallback)[1]"/>
+    <xsl:sequence select="($element/*:doc/string(), $fallback)[1]"/>
   </xsl:function>
 
   <xsl:function name="fp:clean-path" as="xs:string">
-    <xsl:param name="p" as="xs:string"/>
-    <xsl:sequence select="string-join(tokenize(translate($p, '\', '/'), '/')[position() eq 1 or . ne ''][. ne '.'], '/')"/>
+    <xsl:param name="item" as="xs:string"/>
+    <xsl:sequence select="string-join(tokenize(translate($item, '\', '/'), '/')[position() eq 1 or . ne ''][. ne '.'], '/')"/>
   </xsl:function>
 
   <xsl:function name="fp:library-dir" as="xs:string">

@@ -107,11 +107,11 @@
   <!-- the user's tuned property values of instance $i: what it implements
        is the instance, its signature the properties it may set -->
   <xsl:function name="fp:user-cpf-file" as="element(fs:file)">
-    <xsl:param name="i" as="element(o:instance)"/>
-    <fs:file path="deploy/{fp:user-cpf($i)}" mode="user" stylesheet="{$fp:deploy-xsl}" implements="{$i/@xmi-id}"
-             implements-name="{$i/@name}"
-             signature="{string-join($i/o:property-value ! concat('property ', @name, ' ', @xml-type), '; ')}">
-      <xsl:value-of select="fp:user-cpf-text($i)"/>
+    <xsl:param name="instance" as="element(o:instance)"/>
+    <fs:file path="deploy/{fp:user-cpf($instance)}" mode="user" stylesheet="{$fp:deploy-xsl}" implements="{$instance/@xmi-id}"
+             implements-name="{$instance/@name}"
+             signature="{string-join($instance/o:property-value ! concat('property ', @name, ' ', @xml-type), '; ')}">
+      <xsl:value-of select="fp:user-cpf-text($instance)"/>
     </fs:file>
   </xsl:function>
 

@@ -30,16 +30,16 @@
     exclude-result-prefixes="#all">
 
   <xsl:function name="fp:cmakelists" as="xs:string">
-    <xsl:param name="d" as="element(o:deployment)"/>
-    <xsl:variable name="pkg" as="xs:string" select="$d/@package"/>
+    <xsl:param name="deployment" as="element(o:deployment)"/>
+    <xsl:variable name="pkg" as="xs:string" select="$deployment/@package"/>
     <xsl:variable name="sources" as="xs:string*"
-        select="$d/o:task-context ! (concat('src/', @generated-class, '.cpp'), if (@kind eq 'base') then concat('src/', @class, '.cpp') else ()),
+        select="$deployment/o:task-context ! (concat('src/', @generated-class, '.cpp'), if (@kind eq 'base') then concat('src/', @class, '.cpp') else ()),
                 'src/components.cpp'"/>
     <xsl:variable name="headers" as="xs:string*"
-        select="$d/o:task-context ! (concat('include/', $pkg, '/', @generated-class, '.hpp'),
+        select="$deployment/o:task-context ! (concat('include/', $pkg, '/', @generated-class, '.hpp'),
                                      if (@kind eq 'base') then concat('include/', $pkg, '/', @class, '.hpp') else ())"/>
     <xsl:sequence select="fp:lines((
-        fp:banner('# ', $fp:build-xsl, concat('model ''', $d/@model-name, ''''), false()),
+        fp:banner('# ', $fp:build-xsl, concat('model ''', $deployment/@model-name, ''''), false()),
         'cmake_minimum_required(VERSION 3.5)',
         concat('project(', $pkg, ')'),
         '',
@@ -60,51 +60,51 @@
         'include(${OROCOS-RTT_USE_FILE_PATH}/UseOROCOS-RTT.cmake)',
         '',
         'include_directories(${CMAKE_CURRENT_SOURCE_DIR}/include)',
-        $d/o:library ! fp:library-subdirectory(.),
+        $deployment/o:library ! fp:library-subdirectory(.),
         '',
         '# One component library with every component type (src/components.cpp).',
         concat('orocos_component(', $pkg, ' ', string-join($sources, ' '), ')'),
-        $d/o:library ! fp:library-link(., $pkg),
+        $deployment/o:library ! fp:library-link(., $pkg),
         '',
         concat('orocos_install_headers(', string-join($headers, ' '), ')'),
-        $d/o:library ! fp:library-install-headers(., $pkg),
+        $deployment/o:library ! fp:library-install-headers(., $pkg),
         'orocos_generate_package()'))"/>
   </xsl:function>
 
   <xsl:function name="fp:library-subdirectory" as="xs:string*">
     <xsl:param name="lib" as="element(o:library)"/>
-    <xsl:variable name="v" as="xs:string" select="concat('${', $lib/@cmake-var, '}')"/>
+    <xsl:variable name="value" as="xs:string" select="concat('${', $lib/@cmake-var, '}')"/>
     <xsl:sequence select="
         '',
         concat('# atomic-code library ''', $lib/@name, ''' (artifact path ''', $lib/@path, ''', CMake target ', $lib/@target, ')'),
         concat('set(', $lib/@cmake-var, ' &quot;', fp:library-dir($lib), '&quot; CACHE PATH'),
         concat('    &quot;Directory of the atomic-code library ', $lib/@name, '&quot;)'),
-        concat('if(NOT IS_DIRECTORY &quot;', $v, '&quot;)'),
-        concat('  message(FATAL_ERROR &quot;atomic-code library ', $lib/@name, ': no directory ', $v,
+        concat('if(NOT IS_DIRECTORY &quot;', $value, '&quot;)'),
+        concat('  message(FATAL_ERROR &quot;atomic-code library ', $lib/@name, ': no directory ', $value,
                '; give its place with -D', $lib/@cmake-var, '=DIR&quot;)'),
         'endif()',
-        concat('if(EXISTS &quot;', $v, '/CMakeLists.txt&quot; AND NOT TARGET ', $lib/@target, ')'),
-        concat('  add_subdirectory(&quot;', $v, '&quot; ', $lib/@build-dir, ')'),
+        concat('if(EXISTS &quot;', $value, '/CMakeLists.txt&quot; AND NOT TARGET ', $lib/@target, ')'),
+        concat('  add_subdirectory(&quot;', $value, '&quot; ', $lib/@build-dir, ')'),
         'endif()',
-        concat('include_directories(&quot;', $v, '/', $lib/@include-dir, '&quot; &quot;', $v, '&quot;)')"/>
+        concat('include_directories(&quot;', $value, '/', $lib/@include-dir, '&quot; &quot;', $value, '&quot;)')"/>
   </xsl:function>
 
   <xsl:function name="fp:library-link" as="xs:string*">
     <xsl:param name="lib" as="element(o:library)"/>
     <xsl:param name="pkg" as="xs:string"/>
-    <xsl:variable name="v" as="xs:string" select="concat('${', $lib/@cmake-var, '}')"/>
+    <xsl:variable name="value" as="xs:string" select="concat('${', $lib/@cmake-var, '}')"/>
     <xsl:variable name="found" as="xs:string" select="replace($lib/@cmake-var, '_DIR$', '_LIBRARY')"/>
     <xsl:sequence select="
         concat('if(TARGET ', $lib/@target, ')'),
         concat('  target_link_libraries(', $pkg, ' ', $lib/@target, ')'),
         'else()',
         concat('  find_library(', $found, ' NAMES ', $lib/@target),
-        concat('    PATHS &quot;', $v, '&quot; &quot;', $v, '/lib&quot; &quot;', $v, '/build&quot; NO_DEFAULT_PATH)'),
+        concat('    PATHS &quot;', $value, '&quot; &quot;', $value, '/lib&quot; &quot;', $value, '/build&quot; NO_DEFAULT_PATH)'),
         concat('  if(', $found, ')'),
         concat('    target_link_libraries(', $pkg, ' ${', $found, '})'),
         '  else()',
         concat('    message(FATAL_ERROR &quot;atomic-code library ', $lib/@name, ': neither a CMakeLists.txt nor a built library ',
-               $lib/@target, ' in ', $v, '; give its place with -D', $lib/@cmake-var, '=DIR&quot;)'),
+               $lib/@target, ' in ', $value, '; give its place with -D', $lib/@cmake-var, '=DIR&quot;)'),
         '  endif()',
         'endif()'"/>
   </xsl:function>
@@ -118,15 +118,15 @@
   </xsl:function>
 
   <xsl:function name="fp:package-xml" as="xs:string">
-    <xsl:param name="d" as="element(o:deployment)"/>
+    <xsl:param name="deployment" as="element(o:deployment)"/>
     <xsl:sequence select="fp:lines((
         '&lt;?xml version=&quot;1.0&quot;?&gt;',
         '&lt;!--',
-        fp:indent(2, fp:banner('', $fp:build-xsl, concat('model ''', fp:xml-text($d/@model-name), ''''), false())),
+        fp:indent(2, fp:banner('', $fp:build-xsl, concat('model ''', fp:xml-text($deployment/@model-name), ''''), false())),
         '--&gt;',
         '&lt;package format=&quot;3&quot;&gt;',
-        concat('  &lt;name&gt;', $d/@package, '&lt;/name&gt;'),
-        f:package-manifest-fields(concat('  &lt;description&gt;Orocos RTT components of model ', fp:xml-text($d/@model-name), ', generated by robomda.&lt;/description&gt;')),
+        concat('  &lt;name&gt;', $deployment/@package, '&lt;/name&gt;'),
+        f:package-manifest-fields(concat('  &lt;description&gt;Orocos RTT components of model ', fp:xml-text($deployment/@model-name), ', generated by robomda.&lt;/description&gt;')),
         '',
         '  &lt;buildtool_depend&gt;cmake&lt;/buildtool_depend&gt;',
         '  &lt;depend&gt;rtt&lt;/depend&gt;',

@@ -163,18 +163,18 @@
     <xsl:variable name="cls" as="xs:string" select="$tc/@generated-class"/>
     <xsl:variable name="rc" as="xs:string" select="$tc/o:realizing-class/@cpp-name"/>
     <xsl:for-each select="$tc/o:hook">
-      <xsl:variable name="h" as="element(o:hook)" select="."/>
+      <xsl:variable name="host" as="element(o:hook)" select="."/>
       <xsl:variable name="bool" as="xs:boolean" select="@name = ('configure', 'start')"/>
       <xsl:sequence select="'', concat((if ($bool) then 'bool ' else 'void '), $cls, '::', @name, 'Hook()'), '{'"/>
       <xsl:if test="@name eq 'update'">
         <xsl:for-each select="$tc/o:port[@direction eq 'in']">
-          <xsl:variable name="v" as="xs:string" select="concat(@name, '_sample')"/>
-          <xsl:sequence select="concat('  ', @cpp-type, ' ', $v, ' = ', @sample, ';'),
+          <xsl:variable name="value" as="xs:string" select="concat(@name, '_sample')"/>
+          <xsl:sequence select="concat('  ', @cpp-type, ' ', $value, ' = ', @sample, ';'),
               if (xs:boolean(@accessor-declared))
-              then (concat('  if (', @member, '.read(', $v, ') == RTT::NewData) {'),
-                    concat('    ', $rc, '::', @accessor, '(', $v, ');'),
+              then (concat('  if (', @member, '.read(', $value, ') == RTT::NewData) {'),
+                    concat('    ', $rc, '::', @accessor, '(', $value, ');'),
                     '  }')
-              else (concat('  ', @member, '.read(', $v, ');  // ', $tc/o:realizing-class/@name,
+              else (concat('  ', @member, '.read(', $value, ');  // ', $tc/o:realizing-class/@name,
                      ' declares no ', @accessor, '(): the sample is not passed on'))"/>
         </xsl:for-each>
       </xsl:if>
@@ -290,13 +290,13 @@
 
   <!-- ============================================== component library -->
   <xsl:function name="fp:components-cpp" as="xs:string">
-    <xsl:param name="d" as="element(o:deployment)"/>
+    <xsl:param name="deployment" as="element(o:deployment)"/>
     <xsl:sequence select="fp:lines((
-        fp:banner('// ', $fp:cpp-xsl, concat('the component library of model ''', $d/@model-name, ''''), false()),
+        fp:banner('// ', $fp:cpp-xsl, concat('the component library of model ''', $deployment/@model-name, ''''), false()),
         '#include &lt;rtt/Component.hpp&gt;',
-        $d/o:task-context ! (concat('#include &lt;', @namespace, '/', @class, '.hpp&gt;')),
+        $deployment/o:task-context ! (concat('#include &lt;', @namespace, '/', @class, '.hpp&gt;')),
         '',
         'ORO_CREATE_COMPONENT_LIBRARY()',
-        $d/o:task-context ! (concat('ORO_LIST_COMPONENT_TYPE(', @type-name, ')'))))"/>
+        $deployment/o:task-context ! (concat('ORO_LIST_COMPONENT_TYPE(', @type-name, ')'))))"/>
   </xsl:function>
 </xsl:stylesheet>

@@ -71,37 +71,37 @@
     exclude-result-prefixes="#all">
 
   <xsl:function name="fp:period" as="xs:string">
-    <xsl:param name="p" as="xs:string"/>
-    <xsl:sequence select="if (matches($p, '[.eE]')) then $p else concat($p, '.0')"/>
+    <xsl:param name="item" as="xs:string"/>
+    <xsl:sequence select="if (matches($item, '[.eE]')) then $item else concat($item, '.0')"/>
   </xsl:function>
 
   <!-- the one-bit masks 2^0 ... 2^63, computed once: bit n of a mask is ($mask idiv $fp:one-bit-masks[n + 1]) mod 2 -->
   <xsl:variable name="fp:one-bit-masks" as="xs:integer+" select="(0 to 63) ! fp:pow2(.)"/>
 
   <xsl:function name="fp:pow2" as="xs:integer">
-    <xsl:param name="n" as="xs:integer"/>
-    <xsl:sequence select="if ($n eq 0) then 1 else 2 * fp:pow2($n - 1)"/>
+    <xsl:param name="name" as="xs:integer"/>
+    <xsl:sequence select="if ($name eq 0) then 1 else 2 * fp:pow2($name - 1)"/>
   </xsl:function>
 
   <!-- the priority RTT runs the activity at: the modelled one, except under
        ORO_SCHED_OTHER, which has none (RTT would force it to 0 with a
        warning; rule ORO102 tells the user at generation time) -->
   <xsl:function name="fp:priority" as="xs:string">
-    <xsl:param name="a" as="element(o:activity)"/>
-    <xsl:sequence select="if ($a/@scheduler eq 'ORO_SCHED_OTHER') then '0' else string($a/@priority)"/>
+    <xsl:param name="activity" as="element(o:activity)"/>
+    <xsl:sequence select="if ($activity/@scheduler eq 'ORO_SCHED_OTHER') then '0' else string($activity/@priority)"/>
   </xsl:function>
 
   <!-- a note where fp:priority is not the modelled priority, else () -->
   <xsl:function name="fp:priority-note" as="xs:string?">
-    <xsl:param name="a" as="element(o:activity)"/>
-    <xsl:sequence select="if (fp:priority($a) eq string($a/@priority)) then ()
-        else concat('priority ', $a/@priority, ' of the model: ORO_SCHED_OTHER has no priorities, so 0 (warning ORO102)')"/>
+    <xsl:param name="activity" as="element(o:activity)"/>
+    <xsl:sequence select="if (fp:priority($activity) eq string($activity/@priority)) then ()
+        else concat('priority ', $activity/@priority, ' of the model: ORO_SCHED_OTHER has no priorities, so 0 (warning ORO102)')"/>
   </xsl:function>
 
   <!-- what LoadLibrary / loadLibrary takes: "<pkg>/<pkg>" -->
   <xsl:function name="fp:library" as="xs:string">
-    <xsl:param name="d" as="element(o:deployment)"/>
-    <xsl:sequence select="concat($d/@package, '/', $d/@package)"/>
+    <xsl:param name="deployment" as="element(o:deployment)"/>
+    <xsl:sequence select="concat($deployment/@package, '/', $deployment/@package)"/>
   </xsl:function>
 
   <!-- "CpuAffinity mask 6 (CPUs 1, 2)" -->
@@ -121,16 +121,16 @@
   </xsl:function>
 
   <xsl:function name="fp:connection-ends" as="xs:string*">
-    <xsl:param name="k" as="element(o:connection)"/>
-    <xsl:sequence select="for $w in $k/o:writer, $r in $k/o:reader
+    <xsl:param name="connection" as="element(o:connection)"/>
+    <xsl:sequence select="for $w in $connection/o:writer, $r in $connection/o:reader
                           return (concat($w/@instance, '.', $w/@port), concat($r/@instance, '.', $r/@port))"/>
   </xsl:function>
 
   <!-- "controller after arm, vision; ..." for the instances with
        constraints; () when the deployment has none -->
   <xsl:function name="fp:sequence-note" as="xs:string?">
-    <xsl:param name="d" as="element(o:deployment)"/>
-    <xsl:variable name="constrained" as="element(o:instance)*" select="$d/o:instance[o:start-after]"/>
+    <xsl:param name="deployment" as="element(o:deployment)"/>
+    <xsl:variable name="constrained" as="element(o:instance)*" select="$deployment/o:instance[o:start-after]"/>
     <xsl:sequence select="if (empty($constrained)) then ()
         else string-join($constrained ! (concat(@name, ' after ', string-join(distinct-values(o:start-after/@instance), ', '))), '; ')"/>
   </xsl:function>
@@ -138,29 +138,29 @@
   <!-- ================================================ user's tuned values -->
   <!-- the file name of the user's tuned values of instance $i, in deploy/ -->
   <xsl:function name="fp:user-cpf" as="xs:string">
-    <xsl:param name="i" as="element(o:instance)"/>
-    <xsl:sequence select="concat($i/@name, '.user.cpf')"/>
+    <xsl:param name="instance" as="element(o:instance)"/>
+    <xsl:sequence select="concat($instance/@name, '.user.cpf')"/>
   </xsl:function>
 
   <!-- deploy/<instance>.user.cpf, written once: an empty property bag (the
        deployer's UpdateProperties then changes nothing) and, in a comment,
        every property of the instance with the model's value, to copy -->
   <xsl:function name="fp:user-cpf-text" as="xs:string">
-    <xsl:param name="i" as="element(o:instance)"/>
-    <xsl:variable name="d" as="element(o:deployment)" select="$i/.."/>
+    <xsl:param name="instance" as="element(o:instance)"/>
+    <xsl:variable name="deployment" as="element(o:deployment)" select="$instance/.."/>
     <xsl:sequence select="fp:lines((
         '&lt;?xml version=&quot;1.0&quot; encoding=&quot;UTF-8&quot;?&gt;',
         '&lt;!--',
-        fp:indent(2, fp:banner('', $fp:deploy-xsl, fp:comment-text(concat('the tuned property values of instance ''', $i/@name,
-            ''' (', $i/@type-name, ') of model ''', $d/@model-name, '''')), true())),
-        concat('  The deployment files load it after the model''s values (', $d/@deploy-name, '.xml: UpdateProperties;'),
-        concat('  ', $d/@deploy-name, '.ops and ', $d/@deploy-name, '.lua: the marshalling service''s updateProperties), so a'),
+        fp:indent(2, fp:banner('', $fp:deploy-xsl, fp:comment-text(concat('the tuned property values of instance ''', $instance/@name,
+            ''' (', $instance/@type-name, ') of model ''', $deployment/@model-name, '''')), true())),
+        concat('  The deployment files load it after the model''s values (', $deployment/@deploy-name, '.xml: UpdateProperties;'),
+        concat('  ', $deployment/@deploy-name, '.ops and ', $deployment/@deploy-name, '.lua: the marshalling service''s updateProperties), so a'),
         '  property set here wins and tuning on the robot never means editing a generated file.',
-        concat('  ', $d/@deploy-name, '.lua finds this file beside itself; ', $d/@deploy-name, '.xml and ', $d/@deploy-name, '.ops in the'),
+        concat('  ', $deployment/@deploy-name, '.lua finds this file beside itself; ', $deployment/@deploy-name, '.xml and ', $deployment/@deploy-name, '.ops in the'),
         '  working directory: run them from this folder. A property the component does not',
         '  declare is ignored by the deployer (robomda warns, OUT005). The properties and the',
         '  model''s values; copy a line into the properties element below and change its value:',
-        $i/o:property-value ! concat('    ', fp:comment-text(fp:simple(@name, @xml-type, @value))),
+        $instance/o:property-value ! concat('    ', fp:comment-text(fp:simple(@name, @xml-type, @value))),
         '--&gt;',
         '&lt;!DOCTYPE properties SYSTEM &quot;cpf.dtd&quot;&gt;',
         '&lt;properties&gt;',
@@ -169,27 +169,27 @@
 
   <!-- $s made safe inside an XML comment (no two hyphens in a row) -->
   <xsl:function name="fp:comment-text" as="xs:string">
-    <xsl:param name="s" as="xs:string"/>
-    <xsl:sequence select="replace($s, '--', '- -')"/>
+    <xsl:param name="text" as="xs:string"/>
+    <xsl:sequence select="replace($text, '--', '- -')"/>
   </xsl:function>
 
   <!-- ======================================================= XML -->
   <xsl:function name="fp:deploy-xml" as="xs:string">
-    <xsl:param name="d" as="element(o:deployment)"/>
+    <xsl:param name="deployment" as="element(o:deployment)"/>
     <xsl:sequence select="fp:lines((
         '&lt;?xml version=&quot;1.0&quot; encoding=&quot;UTF-8&quot;?&gt;',
         '&lt;!--',
-        fp:indent(2, fp:banner('', $fp:deploy-xsl, concat('the deployment of model ''', fp:xml-text($d/@model-name), ''''), false())),
-        concat('  Run: deployer -s ', $d/@deploy-name, '.xml (add the check option to load, connect and configure only)'),
-        if ($d/o:instance/o:property-value)
+        fp:indent(2, fp:banner('', $fp:deploy-xsl, concat('the deployment of model ''', fp:xml-text($deployment/@model-name), ''''), false())),
+        concat('  Run: deployer -s ', $deployment/@deploy-name, '.xml (add the check option to load, connect and configure only)'),
+        if ($deployment/o:instance/o:property-value)
         then '  from this folder: the tuned values (*.user.cpf, yours) are read from the working directory.'
         else (),
         '--&gt;',
         '&lt;!DOCTYPE properties SYSTEM &quot;cpf.dtd&quot;&gt;',
         '&lt;properties&gt;',
-        concat('  &lt;!-- the component library of package ', $d/@package, ', found through RTT_COMPONENT_PATH --&gt;'),
-        concat('  ', fp:simple('LoadLibrary', 'string', fp:library($d))),
-        $d/o:connection ! (
+        concat('  &lt;!-- the component library of package ', $deployment/@package, ', found through RTT_COMPONENT_PATH --&gt;'),
+        concat('  ', fp:simple('LoadLibrary', 'string', fp:library($deployment))),
+        $deployment/o:connection ! (
           '',
           concat('  &lt;!-- connection point ', @name, ': ', string-join(o:writer ! (concat(@instance, '.', @port)), ', '),
              ' -&gt; ', string-join(o:reader ! (concat(@instance, '.', @port)), ', '), ' --&gt;'),
@@ -200,77 +200,77 @@
           concat('    ', fp:simple('init', 'boolean', if (xs:boolean(@init)) then '1' else '0')),
           concat('    ', fp:simple('pull', 'boolean', if (xs:boolean(@pull)) then '1' else '0')),
           '  &lt;/struct&gt;'),
-        for $note in fp:sequence-note($d)
+        for $note in fp:sequence-note($deployment)
         return ('', concat('  &lt;!-- deployment sequence: ', $note, '. The deployer loads, configures and starts'),
                 '       the components in the order of this file. --&gt;'),
-        $d/o:instance ! fp:xml-instance(.),
+        $deployment/o:instance ! fp:xml-instance(.),
         '&lt;/properties&gt;'))"/>
   </xsl:function>
 
   <xsl:function name="fp:xml-instance" as="xs:string*">
-    <xsl:param name="i" as="element(o:instance)"/>
-    <xsl:variable name="a" as="element(o:activity)" select="$i/o:activity"/>
+    <xsl:param name="instance" as="element(o:instance)"/>
+    <xsl:variable name="activity" as="element(o:activity)" select="$instance/o:activity"/>
     <xsl:sequence select="
         '',
-        concat('  &lt;struct name=&quot;', $i/@name, '&quot; type=&quot;', $i/@type-name, '&quot;&gt;'),
-        concat('    &lt;struct name=&quot;Activity&quot; type=&quot;', $a/@type, '&quot;&gt;'),
-        concat('      ', fp:simple('Period', 'double', fp:period($a/@period))),
-        fp:priority-note($a) ! concat('      &lt;!-- ', ., ' --&gt;'),
-        concat('      ', fp:simple('Priority', 'long', fp:priority($a))),
-        concat('      ', fp:simple('Scheduler', 'string', $a/@scheduler)),
-        if (xs:integer($a/@cpu-affinity) ne 0) then concat('      ', fp:simple('CpuAffinity', 'ulong', $a/@cpu-affinity)) else (),
+        concat('  &lt;struct name=&quot;', $instance/@name, '&quot; type=&quot;', $instance/@type-name, '&quot;&gt;'),
+        concat('    &lt;struct name=&quot;Activity&quot; type=&quot;', $activity/@type, '&quot;&gt;'),
+        concat('      ', fp:simple('Period', 'double', fp:period($activity/@period))),
+        fp:priority-note($activity) ! concat('      &lt;!-- ', ., ' --&gt;'),
+        concat('      ', fp:simple('Priority', 'long', fp:priority($activity))),
+        concat('      ', fp:simple('Scheduler', 'string', $activity/@scheduler)),
+        if (xs:integer($activity/@cpu-affinity) ne 0) then concat('      ', fp:simple('CpuAffinity', 'ulong', $activity/@cpu-affinity)) else (),
         '    &lt;/struct&gt;',
         concat('    ', fp:simple('AutoConf', 'boolean', '1')),
         concat('    ', fp:simple('AutoStart', 'boolean', '1')),
-        if ($i/o:peer) then (
+        if ($instance/o:peer) then (
           '    &lt;struct name=&quot;Peers&quot; type=&quot;PropertyBag&quot;&gt;',
-          $i/o:peer ! (concat('      ', fp:simple((), 'string', @instance))),
+          $instance/o:peer ! (concat('      ', fp:simple((), 'string', @instance))),
           '    &lt;/struct&gt;') else (),
-        if ($i/o:port-connection) then (
+        if ($instance/o:port-connection) then (
           '    &lt;struct name=&quot;Ports&quot; type=&quot;PropertyBag&quot;&gt;',
-          $i/o:port-connection ! (concat('      ', fp:simple(@port, 'string', @connection))),
+          $instance/o:port-connection ! (concat('      ', fp:simple(@port, 'string', @connection))),
           '    &lt;/struct&gt;') else (),
-        if ($i/o:property-value) then (
+        if ($instance/o:property-value) then (
           '    &lt;struct name=&quot;Properties&quot; type=&quot;PropertyBag&quot;&gt;',
-          $i/o:property-value ! (concat('      ', fp:simple(@name, @xml-type, @value))),
+          $instance/o:property-value ! (concat('      ', fp:simple(@name, @xml-type, @value))),
           '    &lt;/struct&gt;',
           '    &lt;!-- then your tuned values (a file of yours, in the working directory) --&gt;',
-          concat('    ', fp:simple('UpdateProperties', 'string', fp:user-cpf($i)))) else (),
+          concat('    ', fp:simple('UpdateProperties', 'string', fp:user-cpf($instance)))) else (),
         '  &lt;/struct&gt;'"/>
   </xsl:function>
 
   <!-- ======================================================= .ops -->
   <xsl:function name="fp:deploy-ops" as="xs:string">
-    <xsl:param name="d" as="element(o:deployment)"/>
-    <xsl:variable name="file" as="xs:string" select="concat($d/@deploy-name, '.ops')"/>
+    <xsl:param name="deployment" as="element(o:deployment)"/>
+    <xsl:variable name="file" as="xs:string" select="concat($deployment/@deploy-name, '.ops')"/>
     <xsl:sequence select="fp:lines((
-        fp:banner('// ', $fp:deploy-xsl, concat('the deployment of model ''', $d/@model-name, ''''), false()),
-        concat('// Run: deployer -s ', $file, if ($d/o:instance/o:property-value)
+        fp:banner('// ', $fp:deploy-xsl, concat('the deployment of model ''', $deployment/@model-name, ''''), false()),
+        concat('// Run: deployer -s ', $file, if ($deployment/o:instance/o:property-value)
                then ' from this folder (the tuned values, *.user.cpf, are read from the working directory);'
                else ' (from any folder;'),
         '// RTT_COMPONENT_PATH must hold the installed package.',
         '// A failing configure() or start() is logged as an [ ERROR ] line; nothing starts when a configure() failed.',
         'require(&quot;print&quot;)',
-        concat('loadLibrary(', fp:cpp-string(fp:library($d)), ')'),
+        concat('loadLibrary(', fp:cpp-string(fp:library($deployment)), ')'),
         'var bool configured = true',
         '',
-        $d/o:instance ! (concat('loadComponent(', fp:cpp-string(@name), ', ', fp:cpp-string(@type-name), ')')),
+        $deployment/o:instance ! (concat('loadComponent(', fp:cpp-string(@name), ', ', fp:cpp-string(@type-name), ')')),
         '',
         '// activities (R5): setActivity(component, period [s], priority, scheduler)',
-        $d/o:instance ! fp:ops-activity(., $file),
-        if ($d/o:instance/o:peer) then ('', '// peers', $d/o:instance ! (for $p in o:peer return
+        $deployment/o:instance ! fp:ops-activity(., $file),
+        if ($deployment/o:instance/o:peer) then ('', '// peers', $deployment/o:instance ! (for $p in o:peer return
             concat('addPeer(', fp:cpp-string(@name), ', ', fp:cpp-string($p/@instance), ')'))) else (),
-        if ($d/o:instance/o:property-value) then ('', '// properties (R4)',
-            $d/o:instance ! (for $p in o:property-value return concat(@name, '.', $p/@name, ' = ', $p/@script-value)),
+        if ($deployment/o:instance/o:property-value) then ('', '// properties (R4)',
+            $deployment/o:instance ! (for $p in o:property-value return concat(@name, '.', $p/@name, ' = ', $p/@script-value)),
             '',
             '// then your tuned values (files of yours, in the working directory)',
-            $d/o:instance[o:property-value] ! (
+            $deployment/o:instance[o:property-value] ! (
               concat('loadService(', fp:cpp-string(@name), ', &quot;marshalling&quot;)'),
               concat('if ( !', @name, '.marshalling.updateProperties(', fp:cpp-string(fp:user-cpf(.)), ') ) then {'),
               concat('  print.log(Error, ', fp:cpp-string(concat($file, ': ', fp:user-cpf(.), ' not loaded (run from the folder of ', $file, ')')), ')'),
               '  configured = false',
               '}')) else (),
-        $d/o:connection ! (
+        $deployment/o:connection ! (
           '',
           concat('// connection point ', @name),
           concat('var ConnPolicy cp_', @name),
@@ -284,14 +284,14 @@
                  return concat('connect(', fp:cpp-string($e[2 * $j - 1]), ', ', fp:cpp-string($e[2 * $j]), ', cp_', $k/@name, ')')),
         '',
         '// lifecycle: configure all, then start all',
-        fp:sequence-note($d) ! (concat('// in start order (deployment sequence: ', ., ')')),
-        $d/o:instance ! (
+        fp:sequence-note($deployment) ! (concat('// in start order (deployment sequence: ', ., ')')),
+        $deployment/o:instance ! (
           concat('if ( !', @name, '.configure() ) then {'),
           concat('  print.log(Error, ', fp:cpp-string(concat($file, ': ', @name, '.configure() failed')), ')'),
           '  configured = false',
           '}'),
         'if ( configured ) then {',
-        $d/o:instance ! (concat('  if ( !', @name, '.start() ) then print.log(Error, ',
+        $deployment/o:instance ! (concat('  if ( !', @name, '.start() ) then print.log(Error, ',
                                  fp:cpp-string(concat($file, ': ', @name, '.start() failed')), ')')),
         '} else {',
         concat('  print.log(Error, ', fp:cpp-string(concat($file, ': not started, a step before the start failed')), ')'),
@@ -299,17 +299,17 @@
   </xsl:function>
 
   <xsl:function name="fp:ops-activity" as="xs:string+">
-    <xsl:param name="i" as="element(o:instance)"/>
+    <xsl:param name="instance" as="element(o:instance)"/>
     <xsl:param name="file" as="xs:string"/>
-    <xsl:variable name="a" as="element(o:activity)" select="$i/o:activity"/>
-    <xsl:variable name="mask" as="xs:integer" select="xs:integer($a/@cpu-affinity)"/>
+    <xsl:variable name="activity" as="element(o:activity)" select="$instance/o:activity"/>
+    <xsl:variable name="mask" as="xs:integer" select="xs:integer($activity/@cpu-affinity)"/>
     <xsl:sequence select="
-        fp:priority-note($a) ! concat('// ', .),
-        concat('setActivity(', fp:cpp-string($i/@name), ', ', fp:period($a/@period), ', ', fp:priority($a), ', ', $a/@scheduler, ')'),
+        fp:priority-note($activity) ! concat('// ', .),
+        concat('setActivity(', fp:cpp-string($instance/@name), ', ', fp:period($activity/@period), ', ', fp:priority($activity), ', ', $activity/@scheduler, ')'),
         if ($mask eq 0) then () else (
           concat('// ', fp:affinity-note($mask)),
-          concat('if ( !', $i/@name, '.setCpuAffinity(', $mask, ') ) then print.log(Error, ',
-                 fp:cpp-string(concat($file, ': ', $i/@name, '.setCpuAffinity(', $mask, ') failed')), ')'))"/>
+          concat('if ( !', $instance/@name, '.setCpuAffinity(', $mask, ') ) then print.log(Error, ',
+                 fp:cpp-string(concat($file, ': ', $instance/@name, '.setCpuAffinity(', $mask, ') failed')), ')'))"/>
   </xsl:function>
 
   <!-- ======================================================= Lua -->
@@ -318,27 +318,69 @@
       select="'local here = debug.getinfo(1, &quot;S&quot;).source:match(&quot;^@(.*)[/\\]&quot;) or &quot;.&quot;'"/>
 
   <xsl:function name="fp:lua-activity" as="xs:string+">
-    <xsl:param name="i" as="element(o:instance)"/>
-    <xsl:variable name="a" as="element(o:activity)" select="$i/o:activity"/>
-    <xsl:variable name="mask" as="xs:integer" select="xs:integer($a/@cpu-affinity)"/>
+    <xsl:param name="instance" as="element(o:instance)"/>
+    <xsl:variable name="activity" as="element(o:activity)" select="$instance/o:activity"/>
+    <xsl:variable name="mask" as="xs:integer" select="xs:integer($activity/@cpu-affinity)"/>
     <xsl:sequence select="
-        fp:priority-note($a) ! concat('  -- ', .),
-        concat('  check(depl:setActivity(', fp:cpp-string($i/@name), ', ', fp:period($a/@period), ', ', fp:priority($a),
-               ', rtt.globals.', $a/@scheduler, '), &quot;setActivity ', $i/@name, '&quot;)'),
+        fp:priority-note($activity) ! concat('  -- ', .),
+        concat('  check(depl:setActivity(', fp:cpp-string($instance/@name), ', ', fp:period($activity/@period), ', ', fp:priority($activity),
+               ', rtt.globals.', $activity/@scheduler, '), &quot;setActivity ', $instance/@name, '&quot;)'),
         if ($mask eq 0) then () else (
           concat('  -- ', fp:affinity-note($mask)),
-          concat('  check(comps[', fp:cpp-string($i/@name), ']:setCpuAffinity(', $mask, '), &quot;', $i/@name,
+          concat('  check(comps[', fp:cpp-string($instance/@name), ']:setCpuAffinity(', $mask, '), &quot;', $instance/@name,
                  '.setCpuAffinity(', $mask, ')&quot;)'))"/>
   </xsl:function>
 
+  <!-- Lua deployment: peers, the model's property values, then the tuned
+       values of the user files -->
+  <xsl:function name="fp:lua-settings" as="xs:string*">
+    <xsl:param name="deployment" as="element(o:deployment)"/>
+    <xsl:sequence select="(
+        if ($deployment/o:instance/o:peer) then ('', '  -- peers', $deployment/o:instance ! (for $p in o:peer return
+            concat('  check(depl:addPeer(', fp:cpp-string(@name), ', ', fp:cpp-string($p/@instance),
+             '), &quot;addPeer ', @name, ' -&gt; ', $p/@instance, '&quot;)'))) else (),
+        if ($deployment/o:instance/o:property-value) then ('', '  -- properties (R4)',
+            $deployment/o:instance ! (for $p in o:property-value return
+              concat('  check(pcall(function() comps[', fp:cpp-string(@name), ']:getProperty(', fp:cpp-string($p/@name),
+               '):set(', $p/@script-value, ') end), &quot;property ', @name, '.', $p/@name, '&quot;)')),
+            '',
+            '  -- then your tuned values (files of yours, beside this file)',
+            $deployment/o:instance[o:property-value] ! (
+              concat('  check(depl:loadService(', fp:cpp-string(@name), ', &quot;marshalling&quot;), &quot;loadService ', @name, ' marshalling&quot;)'),
+              concat('  check(comps[', fp:cpp-string(@name), ']:provides(&quot;marshalling&quot;):getOperation(&quot;updateProperties&quot;)(here .. ',
+                     fp:cpp-string(concat('/', fp:user-cpf(.))), '), &quot;load ', fp:user-cpf(.), '&quot;)'))) else ())"/>
+  </xsl:function>
+
+  <!-- Lua deployment: one connection point, its policy and its links -->
+  <xsl:function name="fp:lua-connection" as="xs:string+">
+    <xsl:param name="connection" as="element(o:connection)"/>
+    <xsl:for-each select="$connection">
+      <xsl:sequence select="(
+          '',
+          concat('  -- connection point ', @name),
+          '  do',
+          '    local cp = rtt.Variable(&quot;ConnPolicy&quot;)',
+          concat('    cp.type = rtt.globals.', @type),
+          concat('    cp.size = ', @size),
+          concat('    cp.lock_policy = rtt.globals.', @lock-policy),
+          concat('    cp.init = ', @init),
+          concat('    cp.pull = ', @pull),
+          let $e := fp:connection-ends(.)
+          return for $j in 1 to count($e) idiv 2
+                 return concat('    check(depl:connect(', fp:cpp-string($e[2 * $j - 1]), ', ', fp:cpp-string($e[2 * $j]),
+                         ', cp), &quot;connect ', $e[2 * $j - 1], ' -&gt; ', $e[2 * $j], '&quot;)'),
+          '  end')"/>
+    </xsl:for-each>
+  </xsl:function>
+
   <xsl:function name="fp:deploy-lua" as="xs:string">
-    <xsl:param name="d" as="element(o:deployment)"/>
-    <xsl:variable name="file" as="xs:string" select="concat($d/@deploy-name, '.lua')"/>
+    <xsl:param name="deployment" as="element(o:deployment)"/>
+    <xsl:variable name="file" as="xs:string" select="concat($deployment/@deploy-name, '.lua')"/>
     <xsl:sequence select="fp:lines((
-        fp:banner('-- ', $fp:deploy-xsl, concat('the deployment of model ''', $d/@model-name, ''''), false()),
+        fp:banner('-- ', $fp:deploy-xsl, concat('the deployment of model ''', $deployment/@model-name, ''''), false()),
         concat('-- Run: deployer -s ', $file, '   or   rttlua -i ', $file),
         '-- (from any folder; RTT_COMPONENT_PATH must hold the installed package). The components keep',
-        concat('-- running until the deployer is stopped (Ctrl-C). ', $d/@deploy-name, '-check.lua runs this deployment'),
+        concat('-- running until the deployer is stopped (Ctrl-C). ', $deployment/@deploy-name, '-check.lua runs this deployment'),
         '-- for a second, checks it and exits with a verdict. A failed step is logged as an [ ERROR ] line;',
         '-- nothing starts when a step before the start failed, and the script ends with a Lua error.',
         'require(&quot;rttlib&quot;)',
@@ -357,49 +399,23 @@
         'local tc = rtt.getTC()',
         'local depl',
         'if tc:getName() == &quot;Deployer&quot; then depl = tc else depl = tc:getPeer(&quot;Deployer&quot;) end',
-        concat('local names = {', string-join($d/o:instance/@name ! fp:cpp-string(.), ', '), '}'),
+        concat('local names = {', string-join($deployment/o:instance/@name ! fp:cpp-string(.), ', '), '}'),
         'local comps = {}',
         '',
-        concat('check(depl:loadLibrary(', fp:cpp-string(fp:library($d)), '), &quot;loadLibrary ', fp:library($d), '&quot;)'),
-        $d/o:instance ! (concat('check(depl:loadComponent(', fp:cpp-string(@name), ', ', fp:cpp-string(@type-name),
+        concat('check(depl:loadLibrary(', fp:cpp-string(fp:library($deployment)), '), &quot;loadLibrary ', fp:library($deployment), '&quot;)'),
+        $deployment/o:instance ! (concat('check(depl:loadComponent(', fp:cpp-string(@name), ', ', fp:cpp-string(@type-name),
                           '), &quot;loadComponent ', @name, '&quot;)')),
         '',
         'if #failures == 0 then',
         '  for _, n in ipairs(names) do comps[n] = depl:getPeer(n) end',
         '',
         '  -- activities (R5): setActivity(name, period [s], priority, scheduler)',
-        $d/o:instance ! fp:lua-activity(.),
-        if ($d/o:instance/o:peer) then ('', '  -- peers', $d/o:instance ! (for $p in o:peer return
-            concat('  check(depl:addPeer(', fp:cpp-string(@name), ', ', fp:cpp-string($p/@instance),
-             '), &quot;addPeer ', @name, ' -&gt; ', $p/@instance, '&quot;)'))) else (),
-        if ($d/o:instance/o:property-value) then ('', '  -- properties (R4)',
-            $d/o:instance ! (for $p in o:property-value return
-              concat('  check(pcall(function() comps[', fp:cpp-string(@name), ']:getProperty(', fp:cpp-string($p/@name),
-               '):set(', $p/@script-value, ') end), &quot;property ', @name, '.', $p/@name, '&quot;)')),
-            '',
-            '  -- then your tuned values (files of yours, beside this file)',
-            $d/o:instance[o:property-value] ! (
-              concat('  check(depl:loadService(', fp:cpp-string(@name), ', &quot;marshalling&quot;), &quot;loadService ', @name, ' marshalling&quot;)'),
-              concat('  check(comps[', fp:cpp-string(@name), ']:provides(&quot;marshalling&quot;):getOperation(&quot;updateProperties&quot;)(here .. ',
-                     fp:cpp-string(concat('/', fp:user-cpf(.))), '), &quot;load ', fp:user-cpf(.), '&quot;)'))) else (),
-        $d/o:connection ! (
-          '',
-          concat('  -- connection point ', @name),
-          '  do',
-          '    local cp = rtt.Variable(&quot;ConnPolicy&quot;)',
-          concat('    cp.type = rtt.globals.', @type),
-          concat('    cp.size = ', @size),
-          concat('    cp.lock_policy = rtt.globals.', @lock-policy),
-          concat('    cp.init = ', @init),
-          concat('    cp.pull = ', @pull),
-          let $e := fp:connection-ends(.)
-          return for $j in 1 to count($e) idiv 2
-                 return concat('    check(depl:connect(', fp:cpp-string($e[2 * $j - 1]), ', ', fp:cpp-string($e[2 * $j]),
-                         ', cp), &quot;connect ', $e[2 * $j - 1], ' -&gt; ', $e[2 * $j], '&quot;)'),
-          '  end'),
+        $deployment/o:instance ! fp:lua-activity(.),
+        fp:lua-settings($deployment),
+        $deployment/o:connection ! fp:lua-connection(.),
         '',
         '  -- lifecycle: configure all, then start all',
-        fp:sequence-note($d) ! (concat('  -- in start order (deployment sequence: ', ., ')')),
+        fp:sequence-note($deployment) ! (concat('  -- in start order (deployment sequence: ', ., ')')),
         '  for _, n in ipairs(names) do check(comps[n]:configure(), n .. &quot;.configure()&quot;) end',
         '  if #failures == 0 then',
         '    for _, n in ipairs(names) do check(comps[n]:start(), n .. &quot;.start()&quot;) end',
@@ -415,20 +431,65 @@
 
   <!-- the self-check: deploy with <model>.lua, read back what can be read
        (state, period, CPU affinity, property values), stop, verdict -->
+  <!-- check script: the value each property should have, the tuned one of
+       <instance>.user.cpf (read with Lua patterns), else the model's -->
+  <xsl:variable name="fp:lua-tuned-values" as="xs:string+" select="(
+        '  -- the value a property should have: the tuned one of &lt;instance&gt;.user.cpf, else the model''s',
+        '  local tuned = {}',
+        '  for _, n in ipairs(names) do',
+        '    tuned[n] = {}',
+        '    local f = io.open(here .. &quot;/&quot; .. n .. &quot;.user.cpf&quot;)',
+        '    if f then',
+        '      local text = f:read(&quot;*a&quot;):gsub(&quot;&lt;!%-%-.-%-%-&gt;&quot;, &quot;&quot;)',
+        '      f:close()',
+        '      for p, v in text:gmatch(&quot;&lt;simple%s+name=\&quot;([^\&quot;]*)\&quot;[^&gt;]*&gt;%s*&lt;value&gt;(.-)&lt;/value&gt;&quot;) do tuned[n][p] = v end',
+        '    end',
+        '  end',
+        '  local function want(n, p, model)',
+        '    local v = tuned[n][p]',
+        '    if v == nil then return model end',
+        '    if type(model) == &quot;number&quot; then return tonumber(v) end',
+        '    if type(model) == &quot;boolean&quot; then return v == &quot;1&quot; or v == &quot;true&quot; end',
+        '    v = v:gsub(&quot;&amp;lt;&quot;, &quot;&lt;&quot;):gsub(&quot;&amp;gt;&quot;, &quot;&gt;&quot;):gsub(&quot;&amp;quot;&quot;, &quot;\&quot;&quot;):gsub(&quot;&amp;apos;&quot;, &quot;''&quot;)',
+        '    return (v:gsub(&quot;&amp;amp;&quot;, &quot;&amp;&quot;))',
+        '  end')"/>
+
+  <!-- check script: the period, CPU affinity and property values of one
+       instance read back through the deployer -->
+  <xsl:function name="fp:lua-instance-checks" as="xs:string+">
+    <xsl:param name="instance" as="element(o:instance)"/>
+    <xsl:for-each select="$instance">
+      <xsl:sequence select="(
+          concat('  check(near(comps[', fp:cpp-string(@name), ']:getPeriod(), ', fp:period(o:activity/@period), '), &quot;',
+                 @name, ' period ', fp:period(o:activity/@period), ' (is &quot; .. tostring(comps[', fp:cpp-string(@name), ']:getPeriod()) .. &quot;)&quot;)'),
+          if (xs:integer(o:activity/@cpu-affinity) eq 0) then () else
+          concat('  check(comps[', fp:cpp-string(@name), ']:getCpuAffinity() == ', o:activity/@cpu-affinity, ', &quot;',
+                 @name, ' ', fp:affinity-note(xs:integer(o:activity/@cpu-affinity)), ' (is &quot; .. tostring(comps[',
+                 fp:cpp-string(@name), ']:getCpuAffinity()) .. &quot;)&quot;)'),
+          for $property in o:property-value return
+          let $get := concat('comps[', fp:cpp-string(@name), ']:getProperty(', fp:cpp-string($property/@name), '):get()'),
+              $want := concat('want(', fp:cpp-string(@name), ', ', fp:cpp-string($property/@name), ', ', $property/@script-value, ')')
+          return concat('  check(', if ($property/@xml-type = ('double', 'float')) then concat('near(', $get, ', ', $want, ')')
+                                     else concat($get, ' == ', $want),
+                        ', ', fp:cpp-string(concat('property ', @name, '.', $property/@name, ' = ')), ' .. tostring(', $want,
+                        ') .. &quot; (is &quot; .. tostring(', $get, ') .. &quot;)&quot;)'))"/>
+    </xsl:for-each>
+  </xsl:function>
+
   <xsl:function name="fp:deploy-check-lua" as="xs:string">
-    <xsl:param name="d" as="element(o:deployment)"/>
-    <xsl:variable name="file" as="xs:string" select="concat($d/@deploy-name, '-check.lua')"/>
+    <xsl:param name="deployment" as="element(o:deployment)"/>
+    <xsl:variable name="file" as="xs:string" select="concat($deployment/@deploy-name, '-check.lua')"/>
     <xsl:sequence select="fp:lines((
-        fp:banner('-- ', $fp:deploy-xsl, concat('the self-check of the deployment of model ''', $d/@model-name, ''''), false()),
+        fp:banner('-- ', $fp:deploy-xsl, concat('the self-check of the deployment of model ''', $deployment/@model-name, ''''), false()),
         concat('-- Run: rttlua ', $file, '   (or deployer -s ', $file, ')'),
-        concat('-- Runs ', $d/@deploy-name, '.lua (beside this file) for one second, checks that every component is Running'),
+        concat('-- Runs ', $deployment/@deploy-name, '.lua (beside this file) for one second, checks that every component is Running'),
         '-- with the modelled period, CPU affinity and property values, stops and unloads everything, and',
         '-- exits 0 when all is as modelled, 1 otherwise.',
         'require(&quot;rttlib&quot;)',
         'rttlib.color = false',
         '',
         $fp:lua-here,
-        concat('local loaded, deployment = pcall(dofile, here .. ', fp:cpp-string(concat('/', $d/@deploy-name, '.lua')), ')'),
+        concat('local loaded, deployment = pcall(dofile, here .. ', fp:cpp-string(concat('/', $deployment/@deploy-name, '.lua')), ')'),
         'local ok = loaded',
         'local function check(cond, what)',
         '  if not cond then',
@@ -448,39 +509,8 @@
         '  end',
         '  -- numbers read back as doubles (a float property to about 7 digits)',
         '  local function near(a, b) return math.abs(a - b) &lt;= 1e-6 * math.max(1, math.abs(b)) end',
-        '  -- the value a property should have: the tuned one of &lt;instance&gt;.user.cpf, else the model''s',
-        '  local tuned = {}',
-        '  for _, n in ipairs(names) do',
-        '    tuned[n] = {}',
-        '    local f = io.open(here .. &quot;/&quot; .. n .. &quot;.user.cpf&quot;)',
-        '    if f then',
-        '      local text = f:read(&quot;*a&quot;):gsub(&quot;&lt;!%-%-.-%-%-&gt;&quot;, &quot;&quot;)',
-        '      f:close()',
-        '      for p, v in text:gmatch(&quot;&lt;simple%s+name=\&quot;([^\&quot;]*)\&quot;[^&gt;]*&gt;%s*&lt;value&gt;(.-)&lt;/value&gt;&quot;) do tuned[n][p] = v end',
-        '    end',
-        '  end',
-        '  local function want(n, p, model)',
-        '    local v = tuned[n][p]',
-        '    if v == nil then return model end',
-        '    if type(model) == &quot;number&quot; then return tonumber(v) end',
-        '    if type(model) == &quot;boolean&quot; then return v == &quot;1&quot; or v == &quot;true&quot; end',
-        '    v = v:gsub(&quot;&amp;lt;&quot;, &quot;&lt;&quot;):gsub(&quot;&amp;gt;&quot;, &quot;&gt;&quot;):gsub(&quot;&amp;quot;&quot;, &quot;\&quot;&quot;):gsub(&quot;&amp;apos;&quot;, &quot;''&quot;)',
-        '    return (v:gsub(&quot;&amp;amp;&quot;, &quot;&amp;&quot;))',
-        '  end',
-        $d/o:instance ! (
-          concat('  check(near(comps[', fp:cpp-string(@name), ']:getPeriod(), ', fp:period(o:activity/@period), '), &quot;',
-                 @name, ' period ', fp:period(o:activity/@period), ' (is &quot; .. tostring(comps[', fp:cpp-string(@name), ']:getPeriod()) .. &quot;)&quot;)'),
-          if (xs:integer(o:activity/@cpu-affinity) eq 0) then () else
-          concat('  check(comps[', fp:cpp-string(@name), ']:getCpuAffinity() == ', o:activity/@cpu-affinity, ', &quot;',
-                 @name, ' ', fp:affinity-note(xs:integer(o:activity/@cpu-affinity)), ' (is &quot; .. tostring(comps[',
-                 fp:cpp-string(@name), ']:getCpuAffinity()) .. &quot;)&quot;)'),
-          for $p in o:property-value return
-          let $get := concat('comps[', fp:cpp-string(@name), ']:getProperty(', fp:cpp-string($p/@name), '):get()'),
-              $want := concat('want(', fp:cpp-string(@name), ', ', fp:cpp-string($p/@name), ', ', $p/@script-value, ')')
-          return concat('  check(', if ($p/@xml-type = ('double', 'float')) then concat('near(', $get, ', ', $want, ')')
-                                     else concat($get, ' == ', $want),
-                        ', ', fp:cpp-string(concat('property ', @name, '.', $p/@name, ' = ')), ' .. tostring(', $want,
-                        ') .. &quot; (is &quot; .. tostring(', $get, ') .. &quot;)&quot;)')),
+        $fp:lua-tuned-values,
+        $deployment/o:instance ! fp:lua-instance-checks(.),
         '  for _, n in ipairs(names) do comps[n]:stop() end',
         '  for _, n in ipairs(names) do comps[n]:cleanup() end',
         '  for i = #names, 1, -1 do depl:unloadComponent(names[i]) end',

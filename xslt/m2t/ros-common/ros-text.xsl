@@ -10,6 +10,11 @@
     fp:double-literal($v)  a C++ / YAML floating literal of a number
     fp:service-body($s, $rc, $acc)  the statements of a std_srvs callback
     fp:from-msg / fp:to-msg  datum <-> message conversion (ROS 1 and 2 alike)
+    fp:ros-step($node, $types, $publish)  the body of a node's step()
+    fp:ros-header-opening / fp:ros-source-opening($node)  banner and guard /
+                           banner and include of a node's C++ files
+    fp:ros-package-xml-opening($package)  package.xml up to its name
+    fp:ros-on-input($port, $rc)  the body of a subscription callback
     fp:msg-parts($msg, $pkg)  (package, Name) of a message: a generated
                            message (no "/") lives in package $pkg
     fp:ros-snake($name)    rosidl's file-name form of a type name (UInt8 -> u_int8)
@@ -28,8 +33,8 @@
     exclude-result-prefixes="#all">
 
   <xsl:function name="fp:yaml-string" as="xs:string">
-    <xsl:param name="s" as="xs:string?"/>
-    <xsl:sequence select="fp:cpp-string($s)"/>
+    <xsl:param name="text" as="xs:string?"/>
+    <xsl:sequence select="fp:cpp-string($text)"/>
   </xsl:function>
 
   <!-- a user-owned parameter file, loaded after the generated one: the place
@@ -58,30 +63,30 @@
   </xsl:function>
 
   <xsl:function name="fp:double-literal" as="xs:string">
-    <xsl:param name="v" as="xs:string"/>
-    <xsl:sequence select="if (contains($v, '.') or contains(lower-case($v), 'e')) then $v else concat($v, '.0')"/>
+    <xsl:param name="value" as="xs:string"/>
+    <xsl:sequence select="if (contains($value, '.') or contains(lower-case($value), 'e')) then $value else concat($value, '.0')"/>
   </xsl:function>
 
   <!-- body of a std_srvs service callback; $acc is "." (ROS 1) or "->" (ROS 2) -->
   <xsl:function name="fp:service-body" as="xs:string*">
-    <xsl:param name="s" as="element(r:service)"/>
+    <xsl:param name="service" as="element(r:service)"/>
     <xsl:param name="rc" as="xs:string"/>
     <xsl:param name="acc" as="xs:string"/>
     <xsl:variable name="call" as="xs:string"
-        select="concat($rc, '::', $s/@name, '(', (if ($s/@srv eq 'std_srvs/SetBool') then concat('request', $acc, 'data') else ''), ')')"/>
+        select="concat($rc, '::', $service/@name, '(', (if ($service/@srv eq 'std_srvs/SetBool') then concat('request', $acc, 'data') else ''), ')')"/>
     <xsl:sequence select="
-        if ($s/@srv eq 'std_srvs/Empty') then concat('  ', $call, ';')
-        else if (xs:boolean($s/@returns-bool)) then concat('  response', $acc, 'success = ', $call, ';')
+        if ($service/@srv eq 'std_srvs/Empty') then concat('  ', $call, ';')
+        else if (xs:boolean($service/@returns-bool)) then concat('  response', $acc, 'success = ', $call, ';')
         else (concat('  ', $call, ';'), concat('  response', $acc, 'success = true;'))"/>
   </xsl:function>
 
   <!-- the statements converting message expression $m to the datum, or the datum to message $var -->
   <xsl:function name="fp:from-msg" as="xs:string">
     <xsl:param name="msg" as="element(r:message)"/>
-    <xsl:param name="m" as="xs:string"/>
+    <xsl:param name="model" as="xs:string"/>
     <xsl:sequence select="if ($msg/@generated eq 'true')
-        then concat($msg/@cpp-type, '{', string-join($msg/r:field ! (concat($m, '.', @name)), ', '), '}')
-        else if ($msg/@field ne '') then concat($m, '.', $msg/@field) else $m"/>
+        then concat($msg/@cpp-type, '{', string-join($msg/r:field ! (concat($model, '.', @name)), ', '), '}')
+        else if ($msg/@field ne '') then concat($model, '.', $msg/@field) else $model"/>
   </xsl:function>
 
   <xsl:function name="fp:to-msg" as="xs:string*">
@@ -94,9 +99,76 @@
         else concat($var, ' = ', $value, ';')"/>
   </xsl:function>
 
+  <!-- the body of step(): update(), then each output port published;
+       $types: the C++ message type of each output port, in order;
+       $publish: '.publish' (ROS 1) or '-&gt;publish' (ROS 2) -->
+  <xsl:function name="fp:ros-step" as="xs:string*">
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:param name="types" as="xs:string*"/>
+    <xsl:param name="publish" as="xs:string"/>
+    <xsl:variable name="realizing-class" as="xs:string" select="$node/r:realizing-class/@cpp-name"/>
+    <xsl:variable name="outputs" as="element(r:port)*" select="$node/r:port[@direction eq 'out']"/>
+    <xsl:sequence select="(
+        '  if (!running_) {',
+        '    return;',
+        '  }',
+        $node/r:hook[@name eq 'update'][@call] ! concat('  ', $realizing-class, '::update();'),
+        for $k in 1 to count($outputs) return
+          let $port := $outputs[$k] return
+          if (xs:boolean($port/@accessor-declared)) then (
+            '  {',
+            concat('    ', $types[$k], ' msg;'),
+            fp:indent(4, fp:to-msg($port/r:message, 'msg', concat($realizing-class, '::', $port/@accessor, '()'))),
+            concat('    ', $port/@member, $publish, '(msg);'),
+            '  }')
+          else concat('  // ', $node/r:realizing-class/@name, ' declares no ', $port/@accessor, '(): ', $port/@name,
+                      ' is not published'))"/>
+  </xsl:function>
+
+  <!-- the body of the callback of input port $port: the datum handed to
+       the realizing class, then step() when the node is data-driven -->
+  <xsl:function name="fp:ros-on-input" as="xs:string+">
+    <xsl:param name="port" as="element(r:port)"/>
+    <xsl:param name="realizing-class" as="xs:string"/>
+    <xsl:sequence select="(
+        if (xs:boolean($port/@accessor-declared))
+        then concat('  ', $realizing-class, '::', $port/@accessor, '(', fp:from-msg($port/r:message, '(*msg)'), ');')
+        else concat('  (void)msg;  // ', $port/../r:realizing-class/@name, ' declares no ', $port/@accessor, '()'),
+        '  if (period_ &lt;= 0.0) {',
+        '    step();  // data-driven (period 0)',
+        '  }')"/>
+  </xsl:function>
+
+  <!-- the first lines of a node's header: banner, include guard -->
+  <xsl:function name="fp:ros-header-opening" as="xs:string+">
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:variable name="guard" as="xs:string" select="fp:guard($node/@namespace, $node/@class)"/>
+    <xsl:sequence select="(fp:banner('// ', $fp:cpp-xsl, fp:what($node), false()),
+                           concat('#ifndef ', $guard), concat('#define ', $guard))"/>
+  </xsl:function>
+
+  <!-- the first lines of a node's source: banner, its own header -->
+  <xsl:function name="fp:ros-source-opening" as="xs:string+">
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:sequence select="(fp:banner('// ', $fp:cpp-xsl, fp:what($node), false()),
+                           concat('#include &lt;', $node/@namespace, '/', $node/@class, '.hpp&gt;'))"/>
+  </xsl:function>
+
+  <!-- package.xml up to the package's name (format 3) -->
+  <xsl:function name="fp:ros-package-xml-opening" as="xs:string+">
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:sequence select="(
+        '&lt;?xml version=&quot;1.0&quot;?&gt;',
+        '&lt;!--',
+        fp:indent(2, fp:banner('', $fp:build-xsl, concat('model ''', fp:xml-text($package/@model-name), ''''), false())),
+        '--&gt;',
+        '&lt;package format=&quot;3&quot;&gt;',
+        concat('  &lt;name&gt;', $package/@name, '&lt;/name&gt;'))"/>
+  </xsl:function>
+
   <xsl:function name="fp:library-external-project" as="xs:string*">
     <xsl:param name="lib" as="element(r:library)"/>
-    <xsl:variable name="v" as="xs:string" select="concat('${', $lib/@cmake-var, '}')"/>
+    <xsl:variable name="value" as="xs:string" select="concat('${', $lib/@cmake-var, '}')"/>
     <xsl:variable name="var" as="xs:string" select="replace($lib/@cmake-var, '_DIR$', '')"/>
     <xsl:variable name="bin" as="xs:string" select="concat('${CMAKE_CURRENT_BINARY_DIR}/', $lib/@build-dir)"/>
     <xsl:sequence select="
@@ -107,16 +179,16 @@
         '# library is searched in the folder, its lib/ and build/.',
         concat('set(', $lib/@cmake-var, ' &quot;', fp:library-dir($lib), '&quot; CACHE PATH'),
         concat('    &quot;Directory of the atomic-code library ', $lib/@name, '&quot;)'),
-        concat('if(NOT IS_DIRECTORY &quot;', $v, '&quot;)'),
-        concat('  message(FATAL_ERROR &quot;atomic-code library ', $lib/@name, ': no directory ', $v,
+        concat('if(NOT IS_DIRECTORY &quot;', $value, '&quot;)'),
+        concat('  message(FATAL_ERROR &quot;atomic-code library ', $lib/@name, ': no directory ', $value,
                '; give its place with -D', $lib/@cmake-var, '=DIR&quot;)'),
         'endif()',
-        concat('if(EXISTS &quot;', $v, '/CMakeLists.txt&quot;)'),
+        concat('if(EXISTS &quot;', $value, '/CMakeLists.txt&quot;)'),
         '  include(ExternalProject)',
         concat('  set(', $var, '_LIBRARY'),
         concat('      &quot;', $bin, '/${CMAKE_STATIC_LIBRARY_PREFIX}', $lib/@target, '${CMAKE_STATIC_LIBRARY_SUFFIX}&quot;)'),
         concat('  ExternalProject_Add(${PROJECT_NAME}_', $lib/@build-dir),
-        concat('    SOURCE_DIR &quot;', $v, '&quot;'),
+        concat('    SOURCE_DIR &quot;', $value, '&quot;'),
         concat('    BINARY_DIR &quot;', $bin, '&quot;'),
         '    CMAKE_ARGS -DCMAKE_BUILD_TYPE=${CMAKE_BUILD_TYPE} -DCMAKE_POSITION_INDEPENDENT_CODE=ON',
         '    INSTALL_COMMAND &quot;&quot;',
@@ -124,17 +196,17 @@
         concat('  set(', $var, '_DEPENDS ${PROJECT_NAME}_', $lib/@build-dir, ')'),
         'else()',
         concat('  find_library(', $var, '_LIBRARY NAMES ', $lib/@target),
-        concat('    PATHS &quot;', $v, '&quot; &quot;', $v, '/lib&quot; &quot;', $v, '/build&quot; NO_DEFAULT_PATH)'),
+        concat('    PATHS &quot;', $value, '&quot; &quot;', $value, '/lib&quot; &quot;', $value, '/build&quot; NO_DEFAULT_PATH)'),
         concat('  set(', $var, '_DEPENDS &quot;&quot;)'),
         concat('  if(NOT ', $var, '_LIBRARY)'),
         concat('    message(FATAL_ERROR &quot;atomic-code library ', $lib/@name, ': neither a CMakeLists.txt nor a built library ',
-               $lib/@target, ' in ', $v, '; give its place with -D', $lib/@cmake-var, '=DIR&quot;)'),
+               $lib/@target, ' in ', $value, '; give its place with -D', $lib/@cmake-var, '=DIR&quot;)'),
         '  endif()',
         'endif()',
         '# an imported target: the library and its include folders travel with the link,',
         '# and no include folder outside the package is added to the package itself',
         concat('set(', $var, '_INCLUDE_DIRS &quot;&quot;)'),
-        concat('foreach(dir &quot;', $v, '/', $lib/@include-dir, '&quot; &quot;', $v, '&quot;)'),
+        concat('foreach(dir &quot;', $value, '/', $lib/@include-dir, '&quot; &quot;', $value, '&quot;)'),
         '  if(IS_DIRECTORY &quot;${dir}&quot;)',
         concat('    list(APPEND ', $var, '_INCLUDE_DIRS &quot;${dir}&quot;)'),
         '  endif()',
@@ -153,14 +225,14 @@
 
   <!-- the link items and the build dependencies of the libraries -->
   <xsl:function name="fp:library-vars" as="xs:string*">
-    <xsl:param name="p" as="element(r:package)"/>
-    <xsl:sequence select="$p/r:library ! fp:library-target(.)"/>
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:sequence select="$package/r:library ! fp:library-target(.)"/>
   </xsl:function>
 
   <xsl:function name="fp:library-depends" as="xs:string*">
-    <xsl:param name="p" as="element(r:package)"/>
+    <xsl:param name="package" as="element(r:package)"/>
     <xsl:param name="target" as="xs:string"/>
-    <xsl:sequence select="$p/r:library ! (
+    <xsl:sequence select="$package/r:library ! (
         concat('if(', replace(@cmake-var, '_DIR$', '_DEPENDS'), ')'),
         concat('  add_dependencies(', $target, ' ${', replace(@cmake-var, '_DIR$', '_DEPENDS'), '})'),
         'endif()')"/>
@@ -168,11 +240,11 @@
 
   <!-- a generated .msg file: one field per attribute of the data type -->
   <xsl:function name="fp:msg-file" as="xs:string">
-    <xsl:param name="m" as="element(r:message-file)"/>
+    <xsl:param name="model" as="element(r:message-file)"/>
     <xsl:param name="stylesheet" as="xs:string"/>
     <xsl:sequence select="fp:lines((
-        fp:banner('# ', $stylesheet, concat('data type ''', $m/@name, ''' of model ''', $m/../@model-name, ''''), false()),
-        $m/r:field ! (concat(@msg-field, ' ', @name))))"/>
+        fp:banner('# ', $stylesheet, concat('data type ''', $model/@name, ''' of model ''', $model/../@model-name, ''''), false()),
+        $model/r:field ! (concat(@msg-field, ' ', @name))))"/>
   </xsl:function>
 
 </xsl:stylesheet>

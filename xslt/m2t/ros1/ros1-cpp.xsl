@@ -29,42 +29,39 @@
   <xsl:function name="fp:ros1-type" as="xs:string+">
     <xsl:param name="type" as="xs:string"/>
     <xsl:param name="pkg" as="xs:string"/>
-    <xsl:variable name="p" as="xs:string+" select="fp:msg-parts($type, $pkg)"/>
-    <xsl:sequence select="concat($p[1], '/', $p[2], '.h'), concat($p[1], '::', $p[2])"/>
+    <xsl:variable name="item" as="xs:string+" select="fp:msg-parts($type, $pkg)"/>
+    <xsl:sequence select="concat($item[1], '/', $item[2], '.h'), concat($item[1], '::', $item[2])"/>
   </xsl:function>
 
   <xsl:function name="fp:ros1-includes" as="xs:string*">
-    <xsl:param name="n" as="element(r:node)"/>
-    <xsl:variable name="pkg" as="xs:string" select="$n/@namespace"/>
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:variable name="pkg" as="xs:string" select="$node/@namespace"/>
     <xsl:sequence select="'#include &lt;ros/ros.h&gt;',
-        distinct-values(($n/r:port/r:message/@msg, $n/r:service/@srv) ! (concat('#include &lt;', fp:ros1-type(., $pkg)[1], '&gt;'))),
+        distinct-values(($node/r:port/r:message/@msg, $node/r:service/@srv) ! (concat('#include &lt;', fp:ros1-type(., $pkg)[1], '&gt;'))),
         '#include &lt;string&gt;',
-        concat('#include &lt;', $n/r:realizing-class/@header, '&gt;')"/>
+        concat('#include &lt;', $node/r:realizing-class/@header, '&gt;')"/>
   </xsl:function>
 
   <xsl:function name="fp:ros1-header" as="xs:string">
-    <xsl:param name="n" as="element(r:node)"/>
-    <xsl:variable name="cls" as="xs:string" select="$n/@class"/>
-    <xsl:variable name="pkg" as="xs:string" select="$n/@namespace"/>
-    <xsl:variable name="guard" as="xs:string" select="fp:guard($pkg, $cls)"/>
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:variable name="package" as="xs:string" select="$node/@namespace"/>
+    <xsl:variable name="class" as="xs:string" select="$node/@class"/>
     <xsl:sequence select="fp:lines((
-        fp:banner('// ', $fp:cpp-xsl, fp:what($n), false()),
-        concat('#ifndef ', $guard),
-        concat('#define ', $guard),
+        fp:ros-header-opening($node),
         '',
-        fp:ros1-includes($n),
+        fp:ros1-includes($node),
         '',
-        concat('namespace ', $pkg, ' {'),
+        concat('namespace ', $package, ' {'),
         '',
         '/**',
-        concat(' * ', fp:doc-of($n, concat('ROS 1 node of component ', $n/@name, '.'))),
-        concat(' * Wraps the atomic code ', $n/r:realizing-class/@cpp-name, ' (seed 000, R1).'),
+        concat(' * ', fp:doc-of($node, concat('ROS 1 node of component ', $node/@name, '.'))),
+        concat(' * Wraps the atomic code ', $node/r:realizing-class/@cpp-name, ' (seed 000, R1).'),
         ' */',
-        concat('class ', $cls, ' : public ', $n/r:realizing-class/@cpp-name),
+        concat('class ', $class, ' : public ', $node/r:realizing-class/@cpp-name),
         '{',
         'public:',
-        concat('  ', $cls, '(const ros::NodeHandle&amp; nh, const ros::NodeHandle&amp; private_nh);'),
-        concat('  virtual ~', $cls, '();'),
+        concat('  ', $class, '(const ros::NodeHandle&amp; nh, const ros::NodeHandle&amp; private_nh);'),
+        concat('  virtual ~', $class, '();'),
         '',
         '  /// Reads the parameters, calls configure() and start(), opens the ports,',
         '  /// services and timer. False when configure() or start() fails.',
@@ -75,144 +72,153 @@
         'private:',
         '  void step();',
         '  void onTimer(const ros::TimerEvent&amp; event);',
-        $n/r:port[@direction eq 'in'] ! (concat('  void on_', @name, '(const ', fp:ros1-type(r:message/@msg, $pkg)[2], '::ConstPtr&amp; msg);')),
-        $n/r:service ! (concat('  bool on_', @name, '(', fp:ros1-type(@srv, $pkg)[2], '::Request&amp; request, ',
-                         fp:ros1-type(@srv, $pkg)[2], '::Response&amp; response);')),
+        $node/r:port[@direction eq 'in'] ! (concat('  void on_', @name, '(const ', fp:ros1-type(r:message/@msg, $package)[2], '::ConstPtr&amp; msg);')),
+        $node/r:service ! (concat('  bool on_', @name, '(', fp:ros1-type(@srv, $package)[2], '::Request&amp; request, ',
+                         fp:ros1-type(@srv, $package)[2], '::Response&amp; response);')),
         '',
         '  ros::NodeHandle nh_;',
         '  ros::NodeHandle private_nh_;',
-        $n/r:port[@direction eq 'out'] ! (concat('  ros::Publisher ', @member, ';')),
-        $n/r:port[@direction eq 'in'] ! (concat('  ros::Subscriber ', @member, ';')),
-        $n/r:service ! (concat('  ros::ServiceServer ', @member, ';')),
+        $node/r:port[@direction eq 'out'] ! (concat('  ros::Publisher ', @member, ';')),
+        $node/r:port[@direction eq 'in'] ! (concat('  ros::Subscriber ', @member, ';')),
+        $node/r:service ! (concat('  ros::ServiceServer ', @member, ';')),
         '  ros::Timer timer_;',
         '  double period_;',
         '  bool running_;',
         '};',
         '',
-        concat('}  // namespace ', $pkg),
+        concat('}  // namespace ', $package),
         '',
-        concat('#endif  // ', $guard)))"/>
+        concat('#endif  // ', fp:guard($package, $class))))"/>
   </xsl:function>
 
   <xsl:function name="fp:ros1-source" as="xs:string">
-    <xsl:param name="n" as="element(r:node)"/>
-    <xsl:variable name="cls" as="xs:string" select="$n/@class"/>
-    <xsl:variable name="pkg" as="xs:string" select="$n/@namespace"/>
-    <xsl:variable name="rc" as="xs:string" select="$n/r:realizing-class/@cpp-name"/>
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:variable name="class" as="xs:string" select="$node/@class"/>
+    <xsl:variable name="package" as="xs:string" select="$node/@namespace"/>
     <xsl:sequence select="fp:lines((
-        fp:banner('// ', $fp:cpp-xsl, fp:what($n), false()),
-        concat('#include &lt;', $pkg, '/', $cls, '.hpp&gt;'),
+        fp:ros-source-opening($node),
         '',
-        concat('namespace ', $pkg, ' {'),
+        concat('namespace ', $package, ' {'),
         '',
-        concat($cls, '::', $cls, '(const ros::NodeHandle&amp; nh, const ros::NodeHandle&amp; private_nh)'),
-        concat('  : nh_(nh), private_nh_(private_nh), period_(', fp:double-literal($n/@period), '), running_(false)'),
+        concat($class, '::', $class, '(const ros::NodeHandle&amp; nh, const ros::NodeHandle&amp; private_nh)'),
+        concat('  : nh_(nh), private_nh_(private_nh), period_(', fp:double-literal($node/@period), '), running_(false)'),
         '{',
         '}',
         '',
-        concat($cls, '::~', $cls, '()'),
+        concat($class, '::~', $class, '()'),
         '{',
         '  tearDown();',
         '}',
         '',
-        concat('bool ', $cls, '::setUp()'),
+        concat('bool ', $class, '::setUp()'),
         '{',
-        '  // parameters (R4), private: ~name',
-        for $p in $n/r:parameter return (
-          '  {',
-          concat('    ', $p/@param1, ' value;'),
-          concat('    private_nh_.param&lt;', $p/@param1, '&gt;(', fp:cpp-string($p/@name), ', value, ',
-               (if ($p/@param1 eq 'std::string') then concat('std::string(', $p/@cpp-default, ')') else $p/@cpp-default), ');'),
-          concat('    ', $rc, '::', $p/@member, ' = ', (if ($p/@param1 eq $p/@cpp-type) then 'value' else concat('static_cast&lt;', $p/@cpp-type, '&gt;(value)')), ';'),
-          '  }'),
-        '  private_nh_.param&lt;double&gt;(&quot;update_period&quot;, period_, period_);',
-        for $h in $n/r:hook[@name = ('configure', 'start')][@call] return
-          if (xs:boolean($h/@returns-bool))
-          then (concat('  if (!', $rc, '::', $h/@call, '()) {'),
-                concat('    ROS_ERROR(&quot;', $cls, ': ', $h/@call, '() failed&quot;);'),
-                '    return false;',
-                '  }')
-          else concat('  ', $rc, '::', $h/@call, '();'),
-        $n/r:port[@direction eq 'out'] ! (concat('  ', @member, ' = nh_.advertise&lt;', fp:ros1-type(r:message/@msg, $pkg)[2], '&gt;(',
-             fp:cpp-string(@topic), ', ', r:qos/@depth, ', ', r:qos/@latch, ');')),
-        $n/r:port[@direction eq 'in'] ! (concat('  ', @member, ' = nh_.subscribe(', fp:cpp-string(@topic), ', ', r:qos/@depth,
-             ', &amp;', $cls, '::on_', @name, ', this);')),
-        $n/r:service ! (concat('  ', @member, ' = private_nh_.advertiseService(', fp:cpp-string(@name), ', &amp;', $cls, '::on_', @name, ', this);')),
-        '  if (period_ &gt; 0.0) {',
-        concat('    timer_ = nh_.createTimer(ros::Duration(period_), &amp;', $cls, '::onTimer, this);'),
-        '  }',
-        '  running_ = true;',
-        '  return true;',
+        fp:ros1-set-up($node),
         '}',
         '',
-        concat('void ', $cls, '::tearDown()'),
+        concat('void ', $class, '::tearDown()'),
         '{',
         '  if (!running_) {',
         '    return;',
         '  }',
         '  running_ = false;',
         '  timer_.stop();',
-        $n/r:hook[@name = ('stop', 'cleanup')][@call] ! (concat('  ', $rc, '::', @call, '();')),
+        $node/r:hook[@name = ('stop', 'cleanup')][@call]
+          ! concat('  ', $node/r:realizing-class/@cpp-name, '::', @call, '();'),
         '}',
         '',
-        concat('void ', $cls, '::step()'),
+        concat('void ', $class, '::step()'),
         '{',
-        '  if (!running_) {',
-        '    return;',
-        '  }',
-        $n/r:hook[@name eq 'update'][@call] ! (concat('  ', $rc, '::update();')),
-        for $p in $n/r:port[@direction eq 'out'] return
-          if (xs:boolean($p/@accessor-declared)) then (
-            '  {',
-            concat('    ', fp:ros1-type($p/r:message/@msg, $pkg)[2], ' msg;'),
-            fp:indent(4, fp:to-msg($p/r:message, 'msg', concat($rc, '::', $p/@accessor, '()'))),
-            concat('    ', $p/@member, '.publish(msg);'),
-            '  }')
-          else concat('  // ', $n/r:realizing-class/@name, ' declares no ', $p/@accessor, '(): ', $p/@name, ' is not published'),
+        fp:ros-step($node, $node/r:port[@direction eq 'out'] ! fp:ros1-type(r:message/@msg, $package)[2], '.publish'),
         '}',
         '',
-        concat('void ', $cls, '::onTimer(const ros::TimerEvent&amp; /*event*/)'),
+        concat('void ', $class, '::onTimer(const ros::TimerEvent&amp; /*event*/)'),
         '{',
         '  step();',
         '}',
-        for $p in $n/r:port[@direction eq 'in'] return (
-          '',
-          concat('void ', $cls, '::on_', $p/@name, '(const ', fp:ros1-type($p/r:message/@msg, $pkg)[2], '::ConstPtr&amp; msg)'),
-          '{',
-          if (xs:boolean($p/@accessor-declared))
-          then concat('  ', $rc, '::', $p/@accessor, '(', fp:from-msg($p/r:message, '(*msg)'), ');')
-          else concat('  (void)msg;  // ', $n/r:realizing-class/@name, ' declares no ', $p/@accessor, '()'),
-          '  if (period_ &lt;= 0.0) {',
-          '    step();  // data-driven (period 0)',
-          '  }',
-          '}'),
-        for $s in $n/r:service return (
-          '',
-          concat('bool ', $cls, '::on_', $s/@name, '(', fp:ros1-type($s/@srv, $pkg)[2], '::Request&amp; ',
-               (if ($s/@srv eq 'std_srvs/SetBool') then 'request' else '/*request*/'), ', ',
-               fp:ros1-type($s/@srv, $pkg)[2], '::Response&amp; ',
-               (if ($s/@srv eq 'std_srvs/Empty') then '/*response*/' else 'response'), ')'),
-          '{',
-          fp:service-body($s, $rc, '.'),
-          '  return true;',
-          '}'),
+        fp:ros1-callbacks($node),
         '',
-        concat('}  // namespace ', $pkg)))"/>
+        concat('}  // namespace ', $package)))"/>
+  </xsl:function>
+
+  <!-- the body of setUp(): parameters, configure() and start(), then the
+       publishers, subscribers, services and the timer -->
+  <xsl:function name="fp:ros1-set-up" as="xs:string+">
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:variable name="class" as="xs:string" select="$node/@class"/>
+    <xsl:variable name="package" as="xs:string" select="$node/@namespace"/>
+    <xsl:variable name="realizing-class" as="xs:string" select="$node/r:realizing-class/@cpp-name"/>
+    <xsl:sequence select="(
+        '  // parameters (R4), private: ~name',
+        for $parameter in $node/r:parameter return (
+          '  {',
+          concat('    ', $parameter/@param1, ' value;'),
+          concat('    private_nh_.param&lt;', $parameter/@param1, '&gt;(', fp:cpp-string($parameter/@name), ', value, ',
+               (if ($parameter/@param1 eq 'std::string') then concat('std::string(', $parameter/@cpp-default, ')')
+                else $parameter/@cpp-default), ');'),
+          concat('    ', $realizing-class, '::', $parameter/@member, ' = ',
+               (if ($parameter/@param1 eq $parameter/@cpp-type) then 'value'
+                else concat('static_cast&lt;', $parameter/@cpp-type, '&gt;(value)')), ';'),
+          '  }'),
+        '  private_nh_.param&lt;double&gt;(&quot;update_period&quot;, period_, period_);',
+        for $hook in $node/r:hook[@name = ('configure', 'start')][@call] return
+          if (xs:boolean($hook/@returns-bool))
+          then (concat('  if (!', $realizing-class, '::', $hook/@call, '()) {'),
+                concat('    ROS_ERROR(&quot;', $class, ': ', $hook/@call, '() failed&quot;);'),
+                '    return false;',
+                '  }')
+          else concat('  ', $realizing-class, '::', $hook/@call, '();'),
+        $node/r:port[@direction eq 'out'] ! concat('  ', @member, ' = nh_.advertise&lt;',
+             fp:ros1-type(r:message/@msg, $package)[2], '&gt;(', fp:cpp-string(@topic), ', ', r:qos/@depth, ', ',
+             r:qos/@latch, ');'),
+        $node/r:port[@direction eq 'in'] ! concat('  ', @member, ' = nh_.subscribe(', fp:cpp-string(@topic), ', ',
+             r:qos/@depth, ', &amp;', $class, '::on_', @name, ', this);'),
+        $node/r:service ! concat('  ', @member, ' = private_nh_.advertiseService(', fp:cpp-string(@name), ', &amp;',
+             $class, '::on_', @name, ', this);'),
+        '  if (period_ &gt; 0.0) {',
+        concat('    timer_ = nh_.createTimer(ros::Duration(period_), &amp;', $class, '::onTimer, this);'),
+        '  }',
+        '  running_ = true;',
+        '  return true;')"/>
+  </xsl:function>
+
+  <!-- the subscription and service callbacks, each after an empty line -->
+  <xsl:function name="fp:ros1-callbacks" as="xs:string*">
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:variable name="class" as="xs:string" select="$node/@class"/>
+    <xsl:variable name="realizing-class" as="xs:string" select="$node/r:realizing-class/@cpp-name"/>
+    <xsl:sequence select="(
+        for $port in $node/r:port[@direction eq 'in'] return (
+          '',
+          concat('void ', $class, '::on_', $port/@name, '(const ', fp:ros1-type($port/r:message/@msg, $node/@namespace)[2],
+                 '::ConstPtr&amp; msg)'),
+          '{',
+          fp:ros-on-input($port, $realizing-class),
+          '}'),
+        for $service in $node/r:service return (
+          '',
+          concat('bool ', $class, '::on_', $service/@name, '(', fp:ros1-type($service/@srv, $node/@namespace)[2], '::Request&amp; ',
+               (if ($service/@srv eq 'std_srvs/SetBool') then 'request' else '/*request*/'), ', ',
+               fp:ros1-type($service/@srv, $node/@namespace)[2], '::Response&amp; ',
+               (if ($service/@srv eq 'std_srvs/Empty') then '/*response*/' else 'response'), ')'),
+          '{',
+          fp:service-body($service, $realizing-class, '.'),
+          '  return true;',
+          '}'))"/>
   </xsl:function>
 
   <xsl:function name="fp:ros1-main" as="xs:string">
-    <xsl:param name="n" as="element(r:node)"/>
-    <xsl:variable name="pkg" as="xs:string" select="$n/@namespace"/>
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:variable name="pkg" as="xs:string" select="$node/@namespace"/>
     <xsl:sequence select="fp:lines((
-        fp:banner('// ', $fp:cpp-xsl, fp:what($n), false()),
-        concat('#include &lt;', $pkg, '/', $n/@class, '.hpp&gt;'),
+        fp:banner('// ', $fp:cpp-xsl, fp:what($node), false()),
+        concat('#include &lt;', $pkg, '/', $node/@class, '.hpp&gt;'),
         '',
         'int main(int argc, char** argv)',
         '{',
-        concat('  ros::init(argc, argv, ', fp:cpp-string($n/@default-name), ');'),
+        concat('  ros::init(argc, argv, ', fp:cpp-string($node/@default-name), ');'),
         '  ros::NodeHandle nh;',
         '  ros::NodeHandle private_nh(&quot;~&quot;);',
-        concat('  ', $pkg, '::', $n/@class, ' node(nh, private_nh);'),
+        concat('  ', $pkg, '::', $node/@class, ' node(nh, private_nh);'),
         '  if (!node.setUp()) {',
         '    return 1;',
         '  }',

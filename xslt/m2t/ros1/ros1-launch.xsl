@@ -24,46 +24,46 @@
     exclude-result-prefixes="#all">
 
   <xsl:function name="fp:ros1-host-launch" as="xs:string">
-    <xsl:param name="p" as="element(r:package)"/>
-    <xsl:param name="h" as="element(r:host)"/>
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:param name="host" as="element(r:host)"/>
     <xsl:sequence select="fp:lines((
         '&lt;?xml version=&quot;1.0&quot;?&gt;',
         '&lt;!--',
-        fp:indent(2, fp:banner('', $fp:launch-xsl, concat('host ''', fp:xml-text($h/@name), ''' of model ''', fp:xml-text($p/@model-name), ''''), false())),
+        fp:indent(2, fp:banner('', $fp:launch-xsl, concat('host ''', fp:xml-text($host/@name), ''' of model ''', fp:xml-text($package/@model-name), ''''), false())),
         '  Component set of this host (seed 002): roslaunch starts the nodes in no',
         '  guaranteed order. For a remote machine add env-loader=&quot;...&quot; to &lt;machine&gt;.',
         '--&gt;',
         '&lt;launch&gt;',
-        concat('  &lt;machine name=&quot;', fp:xml-text($h/@machine), '&quot; address=&quot;', fp:xml-text($h/@address), '&quot;/&gt;'),
-        for $i in $p/r:instance[@host eq $h/@name] return (
+        concat('  &lt;machine name=&quot;', fp:xml-text($host/@machine), '&quot; address=&quot;', fp:xml-text($host/@address), '&quot;/&gt;'),
+        for $i in $package/r:instance[@host eq $host/@name] return (
           '',
-          concat('  &lt;node pkg=&quot;', $p/@name, '&quot; type=&quot;', $i/@executable, '&quot; name=&quot;', $i/@name,
-               '&quot; machine=&quot;', fp:xml-text($h/@machine), '&quot; output=&quot;screen&quot;&gt;'),
-          concat('    &lt;rosparam command=&quot;load&quot; file=&quot;$(find ', $p/@name, ')/config/', $i/@name, '.yaml&quot;/&gt;'),
-          concat('    &lt;rosparam command=&quot;load&quot; file=&quot;$(find ', $p/@name, ')/config/', $i/@name, '.user.yaml&quot;/&gt;'),
+          concat('  &lt;node pkg=&quot;', $package/@name, '&quot; type=&quot;', $i/@executable, '&quot; name=&quot;', $i/@name,
+               '&quot; machine=&quot;', fp:xml-text($host/@machine), '&quot; output=&quot;screen&quot;&gt;'),
+          concat('    &lt;rosparam command=&quot;load&quot; file=&quot;$(find ', $package/@name, ')/config/', $i/@name, '.yaml&quot;/&gt;'),
+          concat('    &lt;rosparam command=&quot;load&quot; file=&quot;$(find ', $package/@name, ')/config/', $i/@name, '.user.yaml&quot;/&gt;'),
           $i/r:remap ! (concat('    &lt;remap from=&quot;', @from, '&quot; to=&quot;', @to, '&quot;/&gt;')),
           '  &lt;/node&gt;'),
         '&lt;/launch&gt;'))"/>
   </xsl:function>
 
   <xsl:function name="fp:ros1-top-launch" as="xs:string">
-    <xsl:param name="p" as="element(r:package)"/>
+    <xsl:param name="package" as="element(r:package)"/>
     <xsl:sequence select="fp:lines((
         '&lt;?xml version=&quot;1.0&quot;?&gt;',
         '&lt;!--',
-        fp:indent(2, fp:banner('', $fp:launch-xsl, concat('model ''', fp:xml-text($p/@model-name), ''''), false())),
+        fp:indent(2, fp:banner('', $fp:launch-xsl, concat('model ''', fp:xml-text($package/@model-name), ''''), false())),
         '  The whole deployment: one included launch file per host.',
         '--&gt;',
         '&lt;launch&gt;',
-        $p/r:host ! (concat('  &lt;include file=&quot;$(find ', $p/@name, ')/launch/', $p/@deploy-name, '_', @launch, '.launch&quot;/&gt;')),
+        $package/r:host ! (concat('  &lt;include file=&quot;$(find ', $package/@name, ')/launch/', $package/@deploy-name, '_', @launch, '.launch&quot;/&gt;')),
         '&lt;/launch&gt;'))"/>
   </xsl:function>
 
   <xsl:function name="fp:params-yaml" as="xs:string">
-    <xsl:param name="i" as="element(r:instance)"/>
+    <xsl:param name="instance" as="element(r:instance)"/>
     <xsl:param name="stylesheet" as="xs:string"/>
     <xsl:sequence select="fp:lines((
-        fp:banner('# ', $stylesheet, concat('instance ''', $i/@name, ''' of model ''', $i/../@model-name, ''''), false()),
-        $i/r:parameter-value ! (concat(@name, ': ', @yaml))))"/>
+        fp:banner('# ', $stylesheet, concat('instance ''', $instance/@name, ''' of model ''', $instance/../@model-name, ''''), false()),
+        $instance/r:parameter-value ! (concat(@name, ': ', @yaml))))"/>
   </xsl:function>
 </xsl:stylesheet>

@@ -21,20 +21,20 @@
     exclude-result-prefixes="#all">
 
   <xsl:function name="fp:ros2-deps" as="xs:string*">
-    <xsl:param name="p" as="element(r:package)"/>
+    <xsl:param name="package" as="element(r:package)"/>
     <xsl:sequence select="sort(distinct-values(('rclcpp', 'rclcpp_components',
-        ($p/r:node/r:port/r:message/@msg, $p/r:node/r:service/@srv)[contains(., '/')] ! substring-before(., '/'))))"/>
+        ($package/r:node/r:port/r:message/@msg, $package/r:node/r:service/@srv)[contains(., '/')] ! substring-before(., '/'))))"/>
   </xsl:function>
 
   <xsl:function name="fp:ros2-cmakelists" as="xs:string">
-    <xsl:param name="p" as="element(r:package)"/>
-    <xsl:variable name="deps" as="xs:string*" select="fp:ros2-deps($p)"/>
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:variable name="deps" as="xs:string*" select="fp:ros2-deps($package)"/>
     <xsl:variable name="lib" as="xs:string" select="'${PROJECT_NAME}_components'"/>
-    <xsl:variable name="msgs" as="xs:boolean" select="exists($p/r:message-file)"/>
+    <xsl:variable name="msgs" as="xs:boolean" select="exists($package/r:message-file)"/>
     <xsl:sequence select="fp:lines((
-        fp:banner('# ', $fp:build-xsl, concat('model ''', $p/@model-name, ''''), false()),
+        fp:banner('# ', $fp:build-xsl, concat('model ''', $package/@model-name, ''''), false()),
         'cmake_minimum_required(VERSION 3.8)',
-        concat('project(', $p/@name, ')'),
+        concat('project(', $package/@name, ')'),
         '',
         'set(CMAKE_CXX_STANDARD 17)',
         'set(CMAKE_CXX_STANDARD_REQUIRED ON)',
@@ -43,22 +43,22 @@
         $deps ! (concat('find_package(', ., ' REQUIRED)')),
         if ($msgs) then (
           'find_package(rosidl_default_generators REQUIRED)',
-          concat('rosidl_generate_interfaces(${PROJECT_NAME} ', string-join($p/r:message-file ! (concat('&quot;msg/', @name, '.msg&quot;')), ' '), ')'),
+          concat('rosidl_generate_interfaces(${PROJECT_NAME} ', string-join($package/r:message-file ! (concat('&quot;msg/', @name, '.msg&quot;')), ' '), ')'),
           'rosidl_get_typesupport_target(${PROJECT_NAME}_msgs_cpp ${PROJECT_NAME} &quot;rosidl_typesupport_cpp&quot;)')
         else (),
-        $p/r:library ! fp:library-external-project(.),
+        $package/r:library ! fp:library-external-project(.),
         '',
         '# every node class, as rclcpp components',
-        concat('add_library(', $lib, ' SHARED ', string-join($p/r:node ! (concat('src/', @class, '.cpp')), ' '), ')'),
+        concat('add_library(', $lib, ' SHARED ', string-join($package/r:node ! (concat('src/', @class, '.cpp')), ' '), ')'),
         concat('target_include_directories(', $lib, ' PUBLIC'),
         '  $&lt;BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include&gt;',
         '  $&lt;INSTALL_INTERFACE:include&gt;)',
         concat('ament_target_dependencies(', $lib, ' ', string-join($deps, ' '), ')'),
         if ($msgs) then concat('target_link_libraries(', $lib, ' ${${PROJECT_NAME}_msgs_cpp})') else (),
-        fp:library-depends($p, $lib),
-        if ($p/r:library) then concat('target_link_libraries(', $lib, ' ', string-join(fp:library-vars($p), ' '), ')') else (),
-        concat('rclcpp_components_register_nodes(', $lib, ' ', string-join($p/r:node ! (concat('&quot;', @type-name, '&quot;')), ' '), ')'),
-        for $n in $p/r:node return (
+        fp:library-depends($package, $lib),
+        if ($package/r:library) then concat('target_link_libraries(', $lib, ' ', string-join(fp:library-vars($package), ' '), ')') else (),
+        concat('rclcpp_components_register_nodes(', $lib, ' ', string-join($package/r:node ! (concat('&quot;', @type-name, '&quot;')), ' '), ')'),
+        for $n in $package/r:node return (
           '',
           concat('# node of component ', $n/@name),
           concat('add_executable(', $n/@executable, ' src/', $n/@executable, '.cpp)'),
@@ -68,7 +68,7 @@
         '  ARCHIVE DESTINATION lib',
         '  LIBRARY DESTINATION lib',
         '  RUNTIME DESTINATION bin)',
-        concat('install(TARGETS ', string-join($p/r:node/@executable, ' ')),
+        concat('install(TARGETS ', string-join($package/r:node/@executable, ' ')),
         '  DESTINATION lib/${PROJECT_NAME})',
         'install(DIRECTORY include/ DESTINATION include)',
         'install(DIRECTORY config launch',
@@ -78,20 +78,15 @@
   </xsl:function>
 
   <xsl:function name="fp:ros2-package-xml" as="xs:string">
-    <xsl:param name="p" as="element(r:package)"/>
-    <xsl:variable name="msgs" as="xs:boolean" select="exists($p/r:message-file)"/>
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:variable name="msgs" as="xs:boolean" select="exists($package/r:message-file)"/>
     <xsl:sequence select="fp:lines((
-        '&lt;?xml version=&quot;1.0&quot;?&gt;',
-        '&lt;!--',
-        fp:indent(2, fp:banner('', $fp:build-xsl, concat('model ''', fp:xml-text($p/@model-name), ''''), false())),
-        '--&gt;',
-        '&lt;package format=&quot;3&quot;&gt;',
-        concat('  &lt;name&gt;', $p/@name, '&lt;/name&gt;'),
-        f:package-manifest-fields(concat('  &lt;description&gt;Nodes of model ', fp:xml-text($p/@model-name), ' for ROS 2 (rclcpp), generated by robomda.&lt;/description&gt;')),
+        fp:ros-package-xml-opening($package),
+        f:package-manifest-fields(concat('  &lt;description&gt;Nodes of model ', fp:xml-text($package/@model-name), ' for ROS 2 (rclcpp), generated by robomda.&lt;/description&gt;')),
         '',
         '  &lt;buildtool_depend&gt;ament_cmake&lt;/buildtool_depend&gt;',
         if ($msgs) then '  &lt;buildtool_depend&gt;rosidl_default_generators&lt;/buildtool_depend&gt;' else (),
-        fp:ros2-deps($p) ! (concat('  &lt;depend&gt;', ., '&lt;/depend&gt;')),
+        fp:ros2-deps($package) ! (concat('  &lt;depend&gt;', ., '&lt;/depend&gt;')),
         if ($msgs) then ('  &lt;exec_depend&gt;rosidl_default_runtime&lt;/exec_depend&gt;',
                          '  &lt;member_of_group&gt;rosidl_interface_packages&lt;/member_of_group&gt;') else (),
         '  &lt;exec_depend&gt;ros2launch&lt;/exec_depend&gt;',

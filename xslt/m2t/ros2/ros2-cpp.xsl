@@ -28,74 +28,69 @@
     <xsl:param name="type" as="xs:string"/>
     <xsl:param name="pkg" as="xs:string"/>
     <xsl:param name="kind" as="xs:string"/>
-    <xsl:variable name="p" as="xs:string+" select="fp:msg-parts($type, $pkg)"/>
-    <xsl:sequence select="concat($p[1], '/', $kind, '/', fp:ros-snake($p[2]), '.hpp'), concat($p[1], '::', $kind, '::', $p[2])"/>
+    <xsl:variable name="item" as="xs:string+" select="fp:msg-parts($type, $pkg)"/>
+    <xsl:sequence select="concat($item[1], '/', $kind, '/', fp:ros-snake($item[2]), '.hpp'), concat($item[1], '::', $kind, '::', $item[2])"/>
   </xsl:function>
 
   <xsl:function name="fp:ros2-qos" as="xs:string">
-    <xsl:param name="q" as="element(r:qos)"/>
-    <xsl:sequence select="concat('rclcpp::QoS(rclcpp::KeepLast(', $q/@depth, '))',
-         (if ($q/@reliability eq 'reliable') then '.reliable()' else '.best_effort()'),
-         (if ($q/@durability eq 'transient_local') then '.transient_local()' else '.durability_volatile()'))"/>
+    <xsl:param name="name" as="element(r:qos)"/>
+    <xsl:sequence select="concat('rclcpp::QoS(rclcpp::KeepLast(', $name/@depth, '))',
+         (if ($name/@reliability eq 'reliable') then '.reliable()' else '.best_effort()'),
+         (if ($name/@durability eq 'transient_local') then '.transient_local()' else '.durability_volatile()'))"/>
   </xsl:function>
 
   <xsl:function name="fp:ros2-header" as="xs:string">
-    <xsl:param name="n" as="element(r:node)"/>
-    <xsl:variable name="cls" as="xs:string" select="$n/@class"/>
-    <xsl:variable name="pkg" as="xs:string" select="$n/@namespace"/>
-    <xsl:variable name="guard" as="xs:string" select="fp:guard($pkg, $cls)"/>
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:variable name="class" as="xs:string" select="$node/@class"/>
+    <xsl:variable name="package" as="xs:string" select="$node/@namespace"/>
     <xsl:sequence select="fp:lines((
-        fp:banner('// ', $fp:cpp-xsl, fp:what($n), false()),
-        concat('#ifndef ', $guard),
-        concat('#define ', $guard),
+        fp:ros-header-opening($node),
         '',
         '#include &lt;rclcpp/rclcpp.hpp&gt;',
-        distinct-values(($n/r:port/r:message/@msg ! (concat('#include &lt;', fp:ros2-type(., $pkg, 'msg')[1], '&gt;')),
-                         $n/r:service/@srv ! (concat('#include &lt;', fp:ros2-type(., $pkg, 'srv')[1], '&gt;')))),
+        distinct-values(($node/r:port/r:message/@msg ! (concat('#include &lt;', fp:ros2-type(., $package, 'msg')[1], '&gt;')),
+                         $node/r:service/@srv ! (concat('#include &lt;', fp:ros2-type(., $package, 'srv')[1], '&gt;')))),
         '#include &lt;memory&gt;',
         '#include &lt;string&gt;',
-        concat('#include &lt;', $n/r:realizing-class/@header, '&gt;'),
+        concat('#include &lt;', $node/r:realizing-class/@header, '&gt;'),
         '',
-        concat('namespace ', $pkg, ' {'),
+        concat('namespace ', $package, ' {'),
         '',
         '/**',
-        concat(' * ', fp:doc-of($n, concat('ROS 2 node of component ', $n/@name, '.'))),
-        concat(' * Wraps the atomic code ', $n/r:realizing-class/@cpp-name, ' (seed 000, R1); a component'),
-        concat(' * (rclcpp_components) named ', $n/@type-name, '.'),
+        concat(' * ', fp:doc-of($node, concat('ROS 2 node of component ', $node/@name, '.'))),
+        concat(' * Wraps the atomic code ', $node/r:realizing-class/@cpp-name, ' (seed 000, R1); a component'),
+        concat(' * (rclcpp_components) named ', $node/@type-name, '.'),
         ' */',
-        concat('class ', $cls, ' : public rclcpp::Node, public ', $n/r:realizing-class/@cpp-name),
+        concat('class ', $class, ' : public rclcpp::Node, public ', $node/r:realizing-class/@cpp-name),
         '{',
         'public:',
-        concat('  explicit ', $cls, '(const rclcpp::NodeOptions&amp; options = rclcpp::NodeOptions());'),
-        concat('  ~', $cls, '() override;'),
+        concat('  explicit ', $class, '(const rclcpp::NodeOptions&amp; options = rclcpp::NodeOptions());'),
+        concat('  ~', $class, '() override;'),
         '',
         'private:',
         '  void step();',
-        $n/r:port[@direction eq 'in'] ! (concat('  void on_', @name, '(const ', fp:ros2-type(r:message/@msg, $pkg, 'msg')[2], '::SharedPtr msg);')),
-        $n/r:service ! (concat('  void on_', @name, '(const std::shared_ptr&lt;', fp:ros2-type(@srv, $pkg, 'srv')[2], '::Request&gt; request,'),
-                        concat('    std::shared_ptr&lt;', fp:ros2-type(@srv, $pkg, 'srv')[2], '::Response&gt; response);')),
+        $node/r:port[@direction eq 'in'] ! (concat('  void on_', @name, '(const ', fp:ros2-type(r:message/@msg, $package, 'msg')[2], '::SharedPtr msg);')),
+        $node/r:service ! (concat('  void on_', @name, '(const std::shared_ptr&lt;', fp:ros2-type(@srv, $package, 'srv')[2], '::Request&gt; request,'),
+                        concat('    std::shared_ptr&lt;', fp:ros2-type(@srv, $package, 'srv')[2], '::Response&gt; response);')),
         '',
-        $n/r:port[@direction eq 'out'] ! (concat('  rclcpp::Publisher&lt;', fp:ros2-type(r:message/@msg, $pkg, 'msg')[2], '&gt;::SharedPtr ', @member, ';')),
-        $n/r:port[@direction eq 'in'] ! (concat('  rclcpp::Subscription&lt;', fp:ros2-type(r:message/@msg, $pkg, 'msg')[2], '&gt;::SharedPtr ', @member, ';')),
-        $n/r:service ! (concat('  rclcpp::Service&lt;', fp:ros2-type(@srv, $pkg, 'srv')[2], '&gt;::SharedPtr ', @member, ';')),
+        $node/r:port[@direction eq 'out'] ! (concat('  rclcpp::Publisher&lt;', fp:ros2-type(r:message/@msg, $package, 'msg')[2], '&gt;::SharedPtr ', @member, ';')),
+        $node/r:port[@direction eq 'in'] ! (concat('  rclcpp::Subscription&lt;', fp:ros2-type(r:message/@msg, $package, 'msg')[2], '&gt;::SharedPtr ', @member, ';')),
+        $node/r:service ! (concat('  rclcpp::Service&lt;', fp:ros2-type(@srv, $package, 'srv')[2], '&gt;::SharedPtr ', @member, ';')),
         '  rclcpp::TimerBase::SharedPtr timer_;',
         '  double period_;',
         '  bool running_;',
         '};',
         '',
-        concat('}  // namespace ', $pkg),
+        concat('}  // namespace ', $package),
         '',
-        concat('#endif  // ', $guard)))"/>
+        concat('#endif  // ', fp:guard($package, $class))))"/>
   </xsl:function>
 
   <xsl:function name="fp:ros2-source" as="xs:string">
-    <xsl:param name="n" as="element(r:node)"/>
-    <xsl:variable name="cls" as="xs:string" select="$n/@class"/>
-    <xsl:variable name="pkg" as="xs:string" select="$n/@namespace"/>
-    <xsl:variable name="rc" as="xs:string" select="$n/r:realizing-class/@cpp-name"/>
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:variable name="class" as="xs:string" select="$node/@class"/>
+    <xsl:variable name="package" as="xs:string" select="$node/@namespace"/>
     <xsl:sequence select="fp:lines((
-        fp:banner('// ', $fp:cpp-xsl, fp:what($n), false()),
-        concat('#include &lt;', $pkg, '/', $cls, '.hpp&gt;'),
+        fp:ros-source-opening($node),
         '',
         '#include &lt;chrono&gt;',
         '#include &lt;cstdint&gt;',
@@ -103,101 +98,115 @@
         '#include &lt;stdexcept&gt;',
         '#include &lt;rclcpp_components/register_node_macro.hpp&gt;',
         '',
-        concat('namespace ', $pkg, ' {'),
+        concat('namespace ', $package, ' {'),
         '',
-        concat($cls, '::', $cls, '(const rclcpp::NodeOptions&amp; options)'),
-        concat('  : rclcpp::Node(', fp:cpp-string($n/@default-name), ', options), period_(', fp:double-literal($n/@period), '), running_(false)'),
+        concat($class, '::', $class, '(const rclcpp::NodeOptions&amp; options)'),
+        concat('  : rclcpp::Node(', fp:cpp-string($node/@default-name), ', options), period_(',
+               fp:double-literal($node/@period), '), running_(false)'),
         '{',
-        '  // parameters (R4), declared with their type and the model default',
-        $n/r:parameter ! (concat('  ', $rc, '::', @member, ' = ',
-             (if (@param2 eq @cpp-type) then '' else concat('static_cast&lt;', @cpp-type, '&gt;(')),
-             'this->declare_parameter&lt;', @param2, '&gt;(', fp:cpp-string(@name), ', ',
-             (if (@param2 eq 'std::string') then concat('std::string(', @cpp-default, ')') else @cpp-default), ')',
-             (if (@param2 eq @cpp-type) then '' else ')'), ';')),
-        '  period_ = this->declare_parameter&lt;double&gt;(&quot;update_period&quot;, period_);',
-        for $h in $n/r:hook[@name = ('configure', 'start')][@call] return
-          if (xs:boolean($h/@returns-bool))
-          then (concat('  if (!', $rc, '::', $h/@call, '()) {'),
-                concat('    throw std::runtime_error(&quot;', $cls, ': ', $h/@call, '() failed&quot;);'),
-                '  }')
-          else concat('  ', $rc, '::', $h/@call, '();'),
-        $n/r:port[@direction eq 'out'] ! (concat('  ', @member, ' = this->create_publisher&lt;', fp:ros2-type(r:message/@msg, $pkg, 'msg')[2], '&gt;('),
-            concat('    ', fp:cpp-string(@topic), ', ', fp:ros2-qos(r:qos), ');')),
-        $n/r:port[@direction eq 'in'] ! (concat('  ', @member, ' = this->create_subscription&lt;', fp:ros2-type(r:message/@msg, $pkg, 'msg')[2], '&gt;('),
-            concat('    ', fp:cpp-string(@topic), ', ', fp:ros2-qos(r:qos), ','),
-            concat('    std::bind(&amp;', $cls, '::on_', @name, ', this, std::placeholders::_1));')),
-        $n/r:service ! (concat('  ', @member, ' = this->create_service&lt;', fp:ros2-type(@srv, $pkg, 'srv')[2], '&gt;('),
-            concat('    ', fp:cpp-string(concat('~/', @name)), ', std::bind(&amp;', $cls, '::on_', @name, ', this, std::placeholders::_1, std::placeholders::_2));')),
-        '  if (period_ &gt; 0.0) {',
-        concat('    timer_ = this->create_wall_timer(std::chrono::duration&lt;double&gt;(period_), std::bind(&amp;', $cls, '::step, this));'),
-        '  }',
-        '  running_ = true;',
+        fp:ros2-constructor($node),
         '}',
         '',
-        concat($cls, '::~', $cls, '()'),
+        concat($class, '::~', $class, '()'),
         '{',
         '  if (running_) {',
         '    running_ = false;',
         '    if (timer_) {',
         '      timer_-&gt;cancel();',
         '    }',
-        $n/r:hook[@name = ('stop', 'cleanup')][@call] ! (concat('    ', $rc, '::', @call, '();')),
+        $node/r:hook[@name = ('stop', 'cleanup')][@call]
+          ! concat('    ', $node/r:realizing-class/@cpp-name, '::', @call, '();'),
         '  }',
         '}',
         '',
-        concat('void ', $cls, '::step()'),
+        concat('void ', $class, '::step()'),
         '{',
-        '  if (!running_) {',
-        '    return;',
-        '  }',
-        $n/r:hook[@name eq 'update'][@call] ! (concat('  ', $rc, '::update();')),
-        for $p in $n/r:port[@direction eq 'out'] return
-          if (xs:boolean($p/@accessor-declared)) then (
-            '  {',
-            concat('    ', fp:ros2-type($p/r:message/@msg, $pkg, 'msg')[2], ' msg;'),
-            fp:indent(4, fp:to-msg($p/r:message, 'msg', concat($rc, '::', $p/@accessor, '()'))),
-            concat('    ', $p/@member, '-&gt;publish(msg);'),
-            '  }')
-          else concat('  // ', $n/r:realizing-class/@name, ' declares no ', $p/@accessor, '(): ', $p/@name, ' is not published'),
+        fp:ros-step($node, $node/r:port[@direction eq 'out'] ! fp:ros2-type(r:message/@msg, $package, 'msg')[2],
+                    '-&gt;publish'),
         '}',
-        for $p in $n/r:port[@direction eq 'in'] return (
-          '',
-          concat('void ', $cls, '::on_', $p/@name, '(const ', fp:ros2-type($p/r:message/@msg, $pkg, 'msg')[2], '::SharedPtr msg)'),
-          '{',
-          if (xs:boolean($p/@accessor-declared))
-          then concat('  ', $rc, '::', $p/@accessor, '(', fp:from-msg($p/r:message, '(*msg)'), ');')
-          else concat('  (void)msg;  // ', $n/r:realizing-class/@name, ' declares no ', $p/@accessor, '()'),
-          '  if (period_ &lt;= 0.0) {',
-          '    step();  // data-driven (period 0)',
-          '  }',
-          '}'),
-        for $s in $n/r:service return (
-          '',
-          concat('void ', $cls, '::on_', $s/@name, '(const std::shared_ptr&lt;', fp:ros2-type($s/@srv, $pkg, 'srv')[2], '::Request&gt; ',
-               (if ($s/@srv eq 'std_srvs/SetBool') then 'request' else '/*request*/'), ','),
-          concat('  std::shared_ptr&lt;', fp:ros2-type($s/@srv, $pkg, 'srv')[2], '::Response&gt; ',
-               (if ($s/@srv eq 'std_srvs/Empty') then '/*response*/' else 'response'), ')'),
-          '{',
-          fp:service-body($s, $rc, '-&gt;'),
-          '}'),
+        fp:ros2-callbacks($node),
         '',
-        concat('}  // namespace ', $pkg),
+        concat('}  // namespace ', $package),
         '',
-        concat('RCLCPP_COMPONENTS_REGISTER_NODE(', $n/@type-name, ')')))"/>
+        concat('RCLCPP_COMPONENTS_REGISTER_NODE(', $node/@type-name, ')')))"/>
+  </xsl:function>
+
+  <!-- the body of the constructor: parameters, configure() and start(),
+       then the publishers, subscriptions, services and the timer -->
+  <xsl:function name="fp:ros2-constructor" as="xs:string+">
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:variable name="class" as="xs:string" select="$node/@class"/>
+    <xsl:variable name="package" as="xs:string" select="$node/@namespace"/>
+    <xsl:variable name="realizing-class" as="xs:string" select="$node/r:realizing-class/@cpp-name"/>
+    <xsl:sequence select="(
+        '  // parameters (R4), declared with their type and the model default',
+        $node/r:parameter ! concat('  ', $realizing-class, '::', @member, ' = ',
+             (if (@param2 eq @cpp-type) then '' else concat('static_cast&lt;', @cpp-type, '&gt;(')),
+             'this->declare_parameter&lt;', @param2, '&gt;(', fp:cpp-string(@name), ', ',
+             (if (@param2 eq 'std::string') then concat('std::string(', @cpp-default, ')') else @cpp-default), ')',
+             (if (@param2 eq @cpp-type) then '' else ')'), ';'),
+        '  period_ = this->declare_parameter&lt;double&gt;(&quot;update_period&quot;, period_);',
+        for $hook in $node/r:hook[@name = ('configure', 'start')][@call] return
+          if (xs:boolean($hook/@returns-bool))
+          then (concat('  if (!', $realizing-class, '::', $hook/@call, '()) {'),
+                concat('    throw std::runtime_error(&quot;', $class, ': ', $hook/@call, '() failed&quot;);'),
+                '  }')
+          else concat('  ', $realizing-class, '::', $hook/@call, '();'),
+        $node/r:port[@direction eq 'out'] ! (
+            concat('  ', @member, ' = this->create_publisher&lt;', fp:ros2-type(r:message/@msg, $package, 'msg')[2], '&gt;('),
+            concat('    ', fp:cpp-string(@topic), ', ', fp:ros2-qos(r:qos), ');')),
+        $node/r:port[@direction eq 'in'] ! (
+            concat('  ', @member, ' = this->create_subscription&lt;', fp:ros2-type(r:message/@msg, $package, 'msg')[2], '&gt;('),
+            concat('    ', fp:cpp-string(@topic), ', ', fp:ros2-qos(r:qos), ','),
+            concat('    std::bind(&amp;', $class, '::on_', @name, ', this, std::placeholders::_1));')),
+        $node/r:service ! (
+            concat('  ', @member, ' = this->create_service&lt;', fp:ros2-type(@srv, $package, 'srv')[2], '&gt;('),
+            concat('    ', fp:cpp-string(concat('~/', @name)), ', std::bind(&amp;', $class, '::on_', @name,
+                   ', this, std::placeholders::_1, std::placeholders::_2));')),
+        '  if (period_ &gt; 0.0) {',
+        concat('    timer_ = this->create_wall_timer(std::chrono::duration&lt;double&gt;(period_), std::bind(&amp;',
+               $class, '::step, this));'),
+        '  }',
+        '  running_ = true;')"/>
+  </xsl:function>
+
+  <!-- the subscription and service callbacks, each after an empty line -->
+  <xsl:function name="fp:ros2-callbacks" as="xs:string*">
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:variable name="class" as="xs:string" select="$node/@class"/>
+    <xsl:variable name="realizing-class" as="xs:string" select="$node/r:realizing-class/@cpp-name"/>
+    <xsl:sequence select="(
+        for $port in $node/r:port[@direction eq 'in'] return (
+          '',
+          concat('void ', $class, '::on_', $port/@name, '(const ',
+                 fp:ros2-type($port/r:message/@msg, $node/@namespace, 'msg')[2], '::SharedPtr msg)'),
+          '{',
+          fp:ros-on-input($port, $realizing-class),
+          '}'),
+        for $service in $node/r:service return (
+          '',
+          concat('void ', $class, '::on_', $service/@name, '(const std::shared_ptr&lt;',
+                 fp:ros2-type($service/@srv, $node/@namespace, 'srv')[2], '::Request&gt; ',
+               (if ($service/@srv eq 'std_srvs/SetBool') then 'request' else '/*request*/'), ','),
+          concat('  std::shared_ptr&lt;', fp:ros2-type($service/@srv, $node/@namespace, 'srv')[2], '::Response&gt; ',
+               (if ($service/@srv eq 'std_srvs/Empty') then '/*response*/' else 'response'), ')'),
+          '{',
+          fp:service-body($service, $realizing-class, '-&gt;'),
+          '}'))"/>
   </xsl:function>
 
   <xsl:function name="fp:ros2-main" as="xs:string">
-    <xsl:param name="n" as="element(r:node)"/>
+    <xsl:param name="node" as="element(r:node)"/>
     <xsl:sequence select="fp:lines((
-        fp:banner('// ', $fp:cpp-xsl, fp:what($n), false()),
-        concat('#include &lt;', $n/@namespace, '/', $n/@class, '.hpp&gt;'),
+        fp:banner('// ', $fp:cpp-xsl, fp:what($node), false()),
+        concat('#include &lt;', $node/@namespace, '/', $node/@class, '.hpp&gt;'),
         '',
         '#include &lt;memory&gt;',
         '',
         'int main(int argc, char** argv)',
         '{',
         '  rclcpp::init(argc, argv);',
-        concat('  rclcpp::spin(std::make_shared&lt;', $n/@type-name, '&gt;());'),
+        concat('  rclcpp::spin(std::make_shared&lt;', $node/@type-name, '&gt;());'),
         '  rclcpp::shutdown();',
         '  return 0;',
         '}'))"/>

@@ -22,43 +22,43 @@
     exclude-result-prefixes="#all">
 
   <xsl:function name="fp:ros2-host-launch" as="xs:string">
-    <xsl:param name="p" as="element(r:package)"/>
-    <xsl:param name="h" as="element(r:host)"/>
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:param name="host" as="element(r:host)"/>
     <xsl:sequence select="fp:lines((
         '&lt;?xml version=&quot;1.0&quot;?&gt;',
         '&lt;!--',
-        fp:indent(2, fp:banner('', $fp:launch-xsl, concat('host ''', fp:xml-text($h/@name), ''' (', fp:xml-text($h/@address),
-             ') of model ''', fp:xml-text($p/@model-name), ''''), false())),
+        fp:indent(2, fp:banner('', $fp:launch-xsl, concat('host ''', fp:xml-text($host/@name), ''' (', fp:xml-text($host/@address),
+             ') of model ''', fp:xml-text($package/@model-name), ''''), false())),
         '  ROS 2 launch has no machine tag: start this file on that host.',
         '--&gt;',
         '&lt;launch&gt;',
-        for $i in $p/r:instance[@host eq $h/@name] return (
-          concat('  &lt;node pkg=&quot;', $p/@name, '&quot; exec=&quot;', $i/@executable, '&quot; name=&quot;', $i/@name, '&quot; output=&quot;screen&quot;&gt;'),
-          concat('    &lt;param from=&quot;$(find-pkg-share ', $p/@name, ')/config/params.yaml&quot;/&gt;'),
-          concat('    &lt;param from=&quot;$(find-pkg-share ', $p/@name, ')/config/params.user.yaml&quot;/&gt;'),
+        for $i in $package/r:instance[@host eq $host/@name] return (
+          concat('  &lt;node pkg=&quot;', $package/@name, '&quot; exec=&quot;', $i/@executable, '&quot; name=&quot;', $i/@name, '&quot; output=&quot;screen&quot;&gt;'),
+          concat('    &lt;param from=&quot;$(find-pkg-share ', $package/@name, ')/config/params.yaml&quot;/&gt;'),
+          concat('    &lt;param from=&quot;$(find-pkg-share ', $package/@name, ')/config/params.user.yaml&quot;/&gt;'),
           $i/r:remap ! (concat('    &lt;remap from=&quot;', @from, '&quot; to=&quot;', @to, '&quot;/&gt;')),
           '  &lt;/node&gt;'),
         '&lt;/launch&gt;'))"/>
   </xsl:function>
 
   <xsl:function name="fp:ros2-top-launch" as="xs:string">
-    <xsl:param name="p" as="element(r:package)"/>
+    <xsl:param name="package" as="element(r:package)"/>
     <xsl:sequence select="fp:lines((
         '&lt;?xml version=&quot;1.0&quot;?&gt;',
         '&lt;!--',
-        fp:indent(2, fp:banner('', $fp:launch-xsl, concat('model ''', fp:xml-text($p/@model-name), ''''), false())),
+        fp:indent(2, fp:banner('', $fp:launch-xsl, concat('model ''', fp:xml-text($package/@model-name), ''''), false())),
         '  Every host file, on this one machine.',
         '--&gt;',
         '&lt;launch&gt;',
-        $p/r:host ! (concat('  &lt;include file=&quot;$(find-pkg-share ', $p/@name, ')/launch/', $p/@deploy-name, '_', @launch, '.launch.xml&quot;/&gt;')),
+        $package/r:host ! (concat('  &lt;include file=&quot;$(find-pkg-share ', $package/@name, ')/launch/', $package/@deploy-name, '_', @launch, '.launch.xml&quot;/&gt;')),
         '&lt;/launch&gt;'))"/>
   </xsl:function>
 
   <xsl:function name="fp:ros2-params-yaml" as="xs:string">
-    <xsl:param name="p" as="element(r:package)"/>
+    <xsl:param name="package" as="element(r:package)"/>
     <xsl:sequence select="fp:lines((
-        fp:banner('# ', $fp:launch-xsl, concat('model ''', $p/@model-name, ''''), false()),
-        for $i in $p/r:instance return (
+        fp:banner('# ', $fp:launch-xsl, concat('model ''', $package/@model-name, ''''), false()),
+        for $i in $package/r:instance return (
           concat($i/@name, ':'),
           '  ros__parameters:',
           $i/r:parameter-value ! (concat('    ', @name, ': ', @yaml)))))"/>
