@@ -181,7 +181,7 @@
 
   <xsl:template match="*[@x:type eq 'Component']" mode="mp:packageable" as="element(pim:component)">
     <xsl:param name="root" as="element()" tunnel="yes"/>
-    <xsl:variable name="c" as="element()" select="."/>
+    <xsl:variable name="classifier" as="element()" select="."/>
     <pim:component id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}"
         abstract="{fp:bool(@isAbstract, false())}">
       <!-- owned by a Node (EA nests components in the node they run on;
@@ -196,14 +196,14 @@
                     [not(../@x:type = 'Component')]
                   | fp:ea-realizations(.)"/>
       <xsl:for-each select="$realizations">
-        <xsl:variable name="r" as="element()" select="."/>
+        <xsl:variable name="realization" as="element()" select="."/>
         <xsl:variable name="classifiers" as="element()*"
             select="if (exists(fp:ref-ids(., 'realizingClassifier')))
                     then fp:targets(., 'realizingClassifier')
-                    else (fp:targets(., 'client') except $c,
-                          fp:targets(., 'supplier') except $c)[1]"/>
+                    else (fp:targets(., 'client') except $classifier,
+                          fp:targets(., 'supplier') except $classifier)[1]"/>
         <xsl:for-each select="$classifiers">
-          <pim:realization id="{fp:nth-id($r, position())}" classifier="{fp:id(.)}"/>
+          <pim:realization id="{fp:nth-id($realization, position())}" classifier="{fp:id(.)}"/>
         </xsl:for-each>
       </xsl:for-each>
       <xsl:call-template name="tp:classifier-body">
@@ -421,9 +421,9 @@
 
   <!-- ========================================================= features -->
   <xsl:template match="generalization" mode="mp:feature" as="element(pim:generalization)?">
-    <xsl:variable name="g" as="element()" select="."/>
+    <xsl:variable name="generalization" as="element()" select="."/>
     <xsl:for-each select="fp:targets(., 'general')[1]">
-      <pim:generalization id="{fp:id($g)}" general="{fp:id(.)}"/>
+      <pim:generalization id="{fp:id($generalization)}" general="{fp:id(.)}"/>
     </xsl:for-each>
   </xsl:template>
 
@@ -487,10 +487,10 @@
                   fp:targets(., 'provided')[@x:type eq 'Interface'],
                   $provided-deps ! fp:realized-interfaces(.)"/>
       <xsl:for-each select="distinct-values($provided ! fp:id(.))">
-        <xsl:variable name="i" as="xs:string" select="."/>
-        <pim:provided interface="{$i}">
+        <xsl:variable name="interface" as="xs:string" select="."/>
+        <pim:provided interface="{$interface}">
           <xsl:call-template name="tp:via">
-            <xsl:with-param name="deps" select="$provided-deps[fp:realized-interfaces(.) ! fp:id(.) = $i]"/>
+            <xsl:with-param name="deps" select="$provided-deps[fp:realized-interfaces(.) ! fp:id(.) = $interface]"/>
           </xsl:call-template>
         </pim:provided>
       </xsl:for-each>
@@ -499,10 +499,10 @@
                   fp:targets(., 'required')[@x:type eq 'Interface'],
                   $required-deps ! fp:used-interfaces(.)"/>
       <xsl:for-each select="distinct-values($required ! fp:id(.))">
-        <xsl:variable name="i" as="xs:string" select="."/>
-        <pim:required interface="{$i}">
+        <xsl:variable name="interface" as="xs:string" select="."/>
+        <pim:required interface="{$interface}">
           <xsl:call-template name="tp:via">
-            <xsl:with-param name="deps" select="$required-deps[fp:used-interfaces(.) ! fp:id(.) = $i]"/>
+            <xsl:with-param name="deps" select="$required-deps[fp:used-interfaces(.) ! fp:id(.) = $interface]"/>
           </xsl:call-template>
         </pim:required>
       </xsl:for-each>

@@ -94,12 +94,12 @@
       </xsl:call-template>
       <xsl:apply-templates select="ownedAttribute[not(@x:type = 'Port')]" mode="mp:feature"/>
       <xsl:for-each select="manifestation | key('fp:dep-by-client', fp:id(.))[@x:type eq 'Manifestation']">
-        <xsl:variable name="m" as="element()" select="."/>
+        <xsl:variable name="member" as="element()" select="."/>
         <xsl:variable name="elements" as="element()*"
             select="if (exists(fp:ref-ids(., 'utilizedElement'))) then fp:targets(., 'utilizedElement')
                     else fp:targets(., 'supplier')"/>
         <xsl:for-each select="$elements">
-          <pim:manifestation id="{fp:nth-id($m, position())}" name="{$m/@name}" element="{fp:id(.)}"/>
+          <pim:manifestation id="{fp:nth-id($member, position())}" name="{$member/@name}" element="{fp:id(.)}"/>
         </xsl:for-each>
       </xsl:for-each>
     </pim:artifact>

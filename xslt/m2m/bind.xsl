@@ -301,9 +301,9 @@
       <xsl:sequence select="fp:libraries(.)"/>
       <xsl:sequence select="$bound, fp:sequence(., $instances, $instance-tree)"/>
       <xsl:for-each select="$raw-connections">
-        <xsl:variable name="i" as="xs:integer" select="position()"/>
+        <xsl:variable name="position" as="xs:integer" select="position()"/>
         <xsl:copy>
-          <xsl:attribute name="name" select="$names[$i]"/>
+          <xsl:attribute name="name" select="$names[$position]"/>
           <xsl:sequence select="@* except @name, node()"/>
         </xsl:copy>
       </xsl:for-each>

@@ -30,7 +30,18 @@
     xmlns:fs="urn:robomda:fileset:1"
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:m="urn:robomda:xslt:mode"
     exclude-result-prefixes="#all">
+
+  <!-- the entry of both ROS text stages: their r:package template (mode
+       m:emit-files) makes the file set. It comes out as f:indent (common/indent.xsl) would indent
+       it (one fs:file a line; their text as it is), written so directly with
+       t:indented-content: f:indent would copy all the text once more -->
+  <xsl:template match="/" as="document-node()">
+    <xsl:document>
+      <xsl:apply-templates select="r:package" mode="m:emit-files"/>
+    </xsl:document>
+  </xsl:template>
 
   <xsl:function name="fp:yaml-string" as="xs:string">
     <xsl:param name="text" as="xs:string?"/>

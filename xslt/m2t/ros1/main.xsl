@@ -44,18 +44,9 @@
   <xsl:variable name="fp:build-xsl" as="xs:string" select="'m2t/ros1/ros1-build.xsl'"/>
   <xsl:variable name="fp:launch-xsl" as="xs:string" select="'m2t/ros1/ros1-launch.xsl'"/>
 
-  <!-- the file set comes out as f:indent (common/indent.xsl) would indent
-       it (one fs:file a line; their text as it is), written so directly with
-       t:indented-content: f:indent would copy all the text once more -->
-  <xsl:template match="/" as="document-node()">
-    <xsl:document>
-      <xsl:apply-templates select="r:package" mode="m:emit-files"/>
-    </xsl:document>
-  </xsl:template>
-
   <xsl:template match="r:package" mode="m:emit-files" as="element(fs:files)">
     <xsl:variable name="pkg" as="xs:string" select="@name"/>
-    <xsl:variable name="p" as="element(r:package)" select="."/>
+    <xsl:variable name="package" as="element(r:package)" select="."/>
     <xsl:variable name="files" as="element(fs:file)*">
       <xsl:for-each select="r:node">
         <xsl:sequence select="fp:file(concat('include/', $pkg, '/', @class, '.hpp'), 'generated', $fp:cpp-xsl, fp:ros1-header(.))"/>
@@ -69,8 +60,8 @@
       <xsl:sequence select="fp:file('package.xml', 'generated', $fp:build-xsl, fp:ros1-package-xml(.))"/>
       <xsl:sequence select="fp:file(concat('launch/', @deploy-name, '.launch'), 'generated', $fp:launch-xsl, fp:ros1-top-launch(.))"/>
       <xsl:for-each select="r:host">
-        <xsl:sequence select="fp:file(concat('launch/', $p/@deploy-name, '_', @launch, '.launch'), 'generated', $fp:launch-xsl,
-                                      fp:ros1-host-launch($p, .))"/>
+        <xsl:sequence select="fp:file(concat('launch/', $package/@deploy-name, '_', @launch, '.launch'), 'generated', $fp:launch-xsl,
+                                      fp:ros1-host-launch($package, .))"/>
       </xsl:for-each>
       <xsl:for-each select="r:instance">
         <xsl:sequence select="fp:file(concat('config/', @name, '.yaml'), 'generated', $fp:launch-xsl, fp:params-yaml(., $fp:launch-xsl))"/>
