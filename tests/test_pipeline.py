@@ -65,3 +65,28 @@ def test_output_breaking_its_schema_is_reported_as_a_bug(tmp_path: Path) -> None
         pipeline.run(chain, Engine(), XMI, {})
     assert caught.value.exit_code == 3
     assert caught.value.diagnostics[0].code == "SCHEMA" and "fileset.xsd" in caught.value.diagnostics[0].message
+
+
+def test_a_target_chain_resumes_from_the_import_run_that_found_its_target(monkeypatch) -> None:
+    """generate without --target runs import + bind once, not once to find the target and once more."""
+    from robomda import api
+    from robomda.resources import pipeline_path
+
+    model = ROOT / "fixtures" / "cases" / "headlamp" / "model.xmi"
+    context = api._context(model, None, "")
+    engine = Engine()
+    bound = pipeline.run(pipeline.load(pipeline_path("import")), engine, model, context)
+    chain = pipeline.load(pipeline_path("orocos"))
+    ran: list[str] = []
+    real_run = engine.run
+    monkeypatch.setattr(engine, "run", lambda stylesheet, *a, **k: (ran.append(stylesheet.name), real_run(stylesheet, *a, **k))[1])
+    resumed = pipeline.run(chain, engine, model, context, resume=bound)
+    assert ran == ["psm.xsl", "main.xsl"]  # import.xsl and bind.xsl were not run again
+    fresh = pipeline.run(chain, Engine(), model, context)
+    assert resumed.stages == fresh.stages
+    assert [(d.code, d.line, d.message) for d in resumed.warnings] == [(d.code, d.line, d.message) for d in fresh.warnings]
+    # other parameters for the import step: nothing is taken from the earlier run
+    ran.clear()
+    other = dict(context, **{"model-path": (ROOT / "fixtures").as_uri() + "/"})
+    pipeline.run(chain, engine, model, other, resume=bound)
+    assert ran[:2] == ["import.xsl", "bind.xsl"]

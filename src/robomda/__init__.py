@@ -5,8 +5,24 @@ The public API is small: :func:`generate` (XMI to files for a target),
 with diagnostics that point at the user's XMI file and line.
 """
 
-from robomda.api import generate, import_model, targets
-from robomda.diagnostics import Diagnostic, RobomdaError
+from __future__ import annotations
 
 __all__ = ["generate", "import_model", "targets", "Diagnostic", "RobomdaError"]
 __version__ = "0.1.0"
+
+# The public names are imported on first use (PEP 562): `robomda --version`
+# and `--help` need none of the engine, schema and rule machinery, and a
+# user's `import robomda` pays for it only when it generates.
+_LAZY = {"generate": "robomda.api", "import_model": "robomda.api", "targets": "robomda.api",
+         "Diagnostic": "robomda.diagnostics", "RobomdaError": "robomda.diagnostics"}
+
+
+def __getattr__(name: str) -> object:
+    module = _LAZY.get(name)
+    if module is None:
+        raise AttributeError(f"module 'robomda' has no attribute {name!r}")
+    import importlib
+
+    value = getattr(importlib.import_module(module), name)
+    globals()[name] = value
+    return value

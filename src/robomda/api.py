@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import os
 import re
 from collections.abc import Sequence
@@ -83,15 +84,17 @@ def _check_well_formed(model: Path) -> None:
 
 
 def _run(chain: pipelines.Pipeline, model: Path, context: dict[str, str], *,
-         steps: int | None = None) -> pipelines.RunResult:
+         steps: int | None = None, resume: pipelines.RunResult | None = None) -> pipelines.RunResult:
     """Run ``chain`` on ``model``; a model Saxon cannot parse fails as XML001, located by lxml.
 
     Well-formedness is checked only after a failure: a good model is parsed
     once, by Saxon, not once more up front.
     """
     unread = _external_entities(model)
+    if resume is not None and unread:  # the earlier run's warnings start with them: _run put them there
+        resume = dataclasses.replace(resume, warnings=resume.warnings[len(unread):])
     try:
-        result = pipelines.run(chain, _engine(), model, context, steps=steps)
+        result = pipelines.run(chain, _engine(), model, context, steps=steps, resume=resume)
     except RobomdaError as exc:
         if exc.exit_code == EXIT_INTERNAL:
             _check_well_formed(model)
@@ -216,13 +219,13 @@ def check(model: Path | str, target: str | None = None, *, package_name: str = "
     rule_sets: list[str] = []
     exit_code = EXIT_OK
 
-    def run_until_text(name: str) -> pipelines.RunResult | None:
+    def run_until_text(name: str, resume: pipelines.RunResult | None = None) -> pipelines.RunResult | None:
         nonlocal exit_code
         chain = pipelines.load(pipeline_path(name))
         steps = len(chain.steps) - 1 if chain.yields == "files" else None
         ran = chain.steps[:steps]
         try:
-            result = _run(chain, model, context, steps=steps)
+            result = _run(chain, model, context, steps=steps, resume=resume)
         except RobomdaError as exc:
             if exc.exit_code != EXIT_FINDINGS:
                 raise
@@ -239,6 +242,7 @@ def check(model: Path | str, target: str | None = None, *, package_name: str = "
         _add(diagnostics, result.warnings)
         return result
 
+    shared = None
     if target is not None:
         chosen = [target]
     else:
@@ -248,7 +252,7 @@ def check(model: Path | str, target: str | None = None, *, package_name: str = "
         chosen = _targets_of(shared.tree) or [default_target()]
         diagnostics.clear()  # the targets' runs repeat the shared findings
     for name in chosen:
-        run_until_text(name)
+        run_until_text(name, shared)
     return Checked(diagnostics, chosen, exit_code, rule_sets)
 
 
@@ -283,11 +287,14 @@ def _targets_of(bound_pim: etree._Element | None) -> list[str]:
 
 def default_targets(model: Path | str, model_path: Sequence[Path | str] = ()) -> list[str]:
     """The targets ``generate`` and ``check`` use without ``--target``: the model's middlewares, else Orocos."""
-    model = Path(model)
+    return _default_targets(Path(model), _context(Path(model), None, "", model_path=_model_path(model_path)))[0]
+
+
+def _default_targets(model: Path, context: dict[str, str]) -> tuple[list[str], pipelines.RunResult]:
+    """:func:`default_targets`, and the import run that found them (a target's chain resumes from it)."""
     _check_readable(model)
-    bound = _run(pipelines.load(pipeline_path("import")), model,
-                 _context(model, None, "", model_path=_model_path(model_path)))
-    return _targets_of(bound.tree) or [default_target()]
+    bound = _run(pipelines.load(pipeline_path("import")), model, context)
+    return _targets_of(bound.tree) or [default_target()], bound
 
 
 def _add(into: list[Diagnostic], found: list[Diagnostic]) -> None:
@@ -324,8 +331,14 @@ def generate(model: Path | str, out: Path | str | None, target: str | None = Non
     ``write=False`` only the stage outputs are returned.
     """
     model = Path(model)
+    if target is not None:
+        _usage_target(target)
+    _check_readable(model)
+    out_path = Path(out) if out is not None else None
+    context = _context(model, out_path, package_name, _type_map(type_map), package, _model_path(model_path))
+    bound = None
     if target is None:
-        found = default_targets(model, model_path)
+        found, bound = _default_targets(model, context)
         if len(found) > 1:
             raise RobomdaError([Diagnostic(
                 "error", "USAGE", f"the model deploys on several middlewares ({', '.join(found)}): "
@@ -333,10 +346,8 @@ def generate(model: Path | str, out: Path | str | None, target: str | None = Non
         target = found[0]
     _usage_target(target)
     _check_readable(model)
-    out_path = Path(out) if out is not None else None
     chain = pipelines.load(pipeline_path(target))
-    context = _context(model, out_path, package_name, _type_map(type_map), package, _model_path(model_path))
-    result = _run(chain, model, context)
+    result = _run(chain, model, context, resume=bound)
     warnings = result.warnings + _package_name_note(package_name, result.stages.get("psm"), model)
     missing = [opt for opt, key in (("--maintainer", "maintainer-email"), ("--license", "license")) if not context[key]]
     writes_manifest = result.tree is not None and any(

@@ -7,14 +7,14 @@ import signal
 import sys
 from pathlib import Path
 
-from lxml import etree
-
 from robomda import __version__
-from robomda.api import PackageInfo, check, generate, import_model, targets
-from robomda.batch import ProgressBar, run_batch
 from robomda.diagnostics import EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, Diagnostic, RobomdaError
 from robomda.formats import FORMATS, render
-from robomda.output import atomic_write
+from robomda.resources import available_targets as targets
+
+# robomda.api (the engine, schemas and rules), robomda.batch and
+# robomda.output are imported by the commands that use them: `--version`
+# and `--help` stay a blink.
 
 __all__ = ["main"]
 
@@ -103,6 +103,10 @@ def _parser() -> argparse.ArgumentParser:
 
 def _write_model_file(dest: Path, text: str) -> None:
     """Write a stage model, replacing only a file that is itself a robomda model."""
+    from lxml import etree
+
+    from robomda.output import atomic_write
+
     if dest.exists():
         try:
             namespace = etree.QName(etree.parse(str(dest)).getroot()).namespace or ""
@@ -121,6 +125,8 @@ def _pim_destination(model: Path, out: Path) -> Path:
 
 
 def _batch(args: argparse.Namespace) -> int:
+    from robomda.batch import ProgressBar, run_batch
+
     if args.save_stages:
         print("robomda: --save-stages applies to one model, not to a folder", file=sys.stderr)
         return EXIT_INPUT
@@ -158,6 +164,8 @@ def _report(fmt: str, diagnostics: list[Diagnostic], exit_code: int) -> None:
 
 
 def _check(args: argparse.Namespace) -> int:
+    from robomda.api import check
+
     done = check(args.model, args.target, package_name=args.package_name, type_map=args.type_map,
                  model_path=args.model_path)
     _report(args.format, done.diagnostics, done.exit_code)
@@ -194,6 +202,8 @@ def main(argv: list[str] | None = None) -> int:
 
 def _main(args: argparse.Namespace, fmt: str) -> int:
     try:
+        from robomda.api import PackageInfo, generate, import_model
+
         if args.command == "generate" and args.model.is_dir():
             if fmt != "text":
                 print("robomda: --format json / sarif applies to one model, not to a folder", file=sys.stderr)

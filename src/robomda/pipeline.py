@@ -16,7 +16,6 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from urllib.parse import unquote, urlparse
 
-import xmlschema
 from lxml import etree
 
 from robomda.diagnostics import (
@@ -33,7 +32,7 @@ from robomda.diagnostics import (
 from robomda.engine import Engine, TransformError, Tree
 from robomda.resources import resource_root
 from robomda.rules import run_rules
-from robomda.validate import validate
+from robomda.validate import parse, schema_of, validate
 
 __all__ = ["Param", "Check", "Step", "Pipeline", "RunResult", "load", "run"]
 
@@ -82,13 +81,14 @@ class RunResult:
     # warnings and infos: from the stylesheets (f:warn) and from the rules,
     # located in the XMI, in the order the steps found them
     warnings: list[Diagnostic] = field(default_factory=list)
+    # per step: what determines its output (see _step_key), the number of
+    # warnings once it was done and the rules checked on it: what a later
+    # run may resume from
+    done: list[tuple[tuple, int, tuple[Check, ...]]] = field(default_factory=list)
 
     @property
     def output(self) -> str:
         return list(self.stages.values())[-1]
-
-
-_MANIFEST_SCHEMA: xmlschema.XMLSchema | None = None
 
 
 @functools.lru_cache(maxsize=None)
@@ -98,12 +98,16 @@ def load(manifest: Path) -> Pipeline:
     Cached per path: a batch worker generates many models with the same
     manifests, which do not change while it runs.
     """
-    global _MANIFEST_SCHEMA
-    if _MANIFEST_SCHEMA is None:
-        _MANIFEST_SCHEMA = xmlschema.XMLSchema(str(resource_root() / "schemas/pipeline/1/pipeline.xsd"))
     manifest = manifest.resolve()
-    _MANIFEST_SCHEMA.validate(str(manifest))
+    xsd = resource_root() / "schemas/pipeline/1/pipeline.xsd"
     root = etree.parse(str(manifest)).getroot()
+    # libxml2 says yes in a millisecond; xmlschema (0.3 s to import and
+    # compile) only explains a manifest that breaks the schema
+    if not schema_of(xsd).validate(root):
+        import xmlschema
+
+        xmlschema.XMLSchema(str(xsd)).validate(str(manifest))
+        raise ValueError(f"{manifest}: breaks {xsd}: {schema_of(xsd).error_log.last_error}")
     base = manifest.parent
     steps: list[Step] = []
     for node in root.iterchildren(f"{{{_NS['p']}}}include", f"{{{_NS['p']}}}step", f"{{{_NS['p']}}}check"):
@@ -124,8 +128,13 @@ def load(manifest: Path) -> Pipeline:
     return Pipeline(root.get("name"), root.get("yields"), description, tuple(steps), manifest)
 
 
+def _step_key(step: Step, params: dict[str, str]) -> tuple:
+    """What a step's output depends on, besides its input: stylesheet, parameters, schema."""
+    return (step.stylesheet, tuple(sorted(params.items())), step.schema)
+
+
 def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str], *,
-        steps: int | None = None) -> RunResult:
+        steps: int | None = None, resume: RunResult | None = None) -> RunResult:
     """Run every step (or the first ``steps``) on ``model``; raise :class:`RobomdaError` on failure.
 
     ``context`` supplies the values of parameters declared with ``from``.
@@ -136,13 +145,32 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
     check, and the error carries every finding so far (warnings included).
     Every message a stylesheet writes becomes a diagnostic: ``warning:``,
     ``error:``, or a note (code NOTE).
+
+    ``resume``: an earlier run on the same model (e.g. the import chain that
+    found the model's targets). The leading steps that it ran with the same
+    stylesheet, parameters, schema and rules are taken from it, with their
+    warnings, instead of being run again.
     """
     locator = XmiLocator(model, tuple(Path(unquote(urlparse(u).path)) for u in context.get("model-path", "").split()))
     result = RunResult()
     chain = pipeline.steps[:steps]
     previous: Path | str | Tree = model.resolve()
+    resuming = resume is not None
     for index, step in enumerate(chain):
         params = {p.name: (p.value if p.value is not None else context.get(p.source or "", "")) for p in step.params}
+        key = _step_key(step, params)
+        # only a leading run of steps: a step after one that ran has new input
+        resuming = resuming and index < len(resume.done) and resume.done[index][0] == key
+        if resuming:
+            _, warned, checked = resume.done[index]
+            result.stages[step.name] = previous = resume.stages[step.name]
+            result.tree = resume.tree if index == len(resume.done) - 1 else parse(previous)
+            result.warnings = list(resume.warnings[:warned])
+            result.timings.append(resume.timings[index])
+            # the rules this chain checks on the step and the earlier run did not
+            _checks(tuple(c for c in step.checks if c not in checked), result, step, locator)
+            result.done.append((key, len(result.warnings), step.checks))
+            continue
         started = time.perf_counter()
         try:
             # every stage but the last keeps its tree for the next one
@@ -168,17 +196,23 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
                 locator.diagnostic("SCHEMA", f"the {step.name} step wrote a model that breaks "
                                    f"{step.schema.name}: {v.reason} at {v.path}", v.element_id, step=step.name)
                 for v in violations], EXIT_INTERNAL)
-        for check in step.checks:
-            found = run_rules(check.rules, check.phase, tree, locator, step.name)
-            if any(d.severity == "error" for d in found):
-                raise RobomdaError(result.warnings + found, EXIT_FINDINGS)
-            result.warnings.extend(found)
+        result.tree = tree
+        _checks(step.checks, result, step, locator)
         result.timings.append((step.name, transformed - started, validated - transformed,
                                time.perf_counter() - validated))
         result.stages[step.name] = text
-        result.tree = tree
+        result.done.append((key, len(result.warnings), step.checks))
         previous = handed if handed is not None else text
     return result
+
+
+def _checks(checks: tuple[Check, ...], result: RunResult, step: Step, locator: XmiLocator) -> None:
+    """Run ``checks`` on ``result.tree``; their warnings join ``result``; an error stops the run."""
+    for check in checks:
+        found = run_rules(check.rules, check.phase, result.tree, locator, step.name)
+        if any(d.severity == "error" for d in found):
+            raise RobomdaError(result.warnings + found, EXIT_FINDINGS)
+        result.warnings.extend(found)
 
 
 def _messages(messages: list[str], step: Step, locator: XmiLocator) -> tuple[list[Diagnostic], list[Diagnostic]]:
