@@ -287,12 +287,14 @@ def _targets_of(bound_pim: etree._Element | None) -> list[str]:
 
 def default_targets(model: Path | str, model_path: Sequence[Path | str] = ()) -> list[str]:
     """The targets ``generate`` and ``check`` use without ``--target``: the model's middlewares, else Orocos."""
-    return _default_targets(Path(model), _context(Path(model), None, "", model_path=_model_path(model_path)))[0]
+    model = Path(model)
+    _check_readable(model)
+    return _default_targets(model, _context(model, None, "", model_path=_model_path(model_path)))[0]
 
 
 def _default_targets(model: Path, context: dict[str, str]) -> tuple[list[str], pipelines.RunResult]:
-    """:func:`default_targets`, and the import run that found them (a target's chain resumes from it)."""
-    _check_readable(model)
+    """:func:`default_targets` of a readable ``model``, and the import run that found them (a
+    target's chain resumes from it)."""
     bound = _run(pipelines.load(pipeline_path("import")), model, context)
     return _targets_of(bound.tree) or [default_target()], bound
 
@@ -343,9 +345,7 @@ def generate(model: Path | str, out: Path | str | None, target: str | None = Non
             raise RobomdaError([Diagnostic(
                 "error", "USAGE", f"the model deploys on several middlewares ({', '.join(found)}): "
                 "name the one to generate with --target", file=str(model))], EXIT_INPUT)
-        target = found[0]
-    _usage_target(target)
-    _check_readable(model)
+        target = found[0]  # a target of the manifests: no usage check needed
     chain = pipelines.load(pipeline_path(target))
     result = _run(chain, model, context, resume=bound)
     warnings = result.warnings + _package_name_note(package_name, result.stages.get("psm"), model)

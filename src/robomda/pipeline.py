@@ -163,12 +163,16 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
         resuming = resuming and index < len(resume.done) and resume.done[index][0] == key
         if resuming:
             _, warned, checked = resume.done[index]
+            # the rules this chain checks on the step and the earlier run did not
+            pending = tuple(c for c in step.checks if c not in checked)
             result.stages[step.name] = previous = resume.stages[step.name]
-            result.tree = resume.tree if index == len(resume.done) - 1 else parse(previous)
+            # the step's tree: the earlier run kept its last one; another is
+            # parsed only when rules or the caller need it
+            result.tree = (resume.tree if index == len(resume.done) - 1
+                           else parse(previous) if pending or index == len(chain) - 1 else None)
             result.warnings = list(resume.warnings[:warned])
             result.timings.append(resume.timings[index])
-            # the rules this chain checks on the step and the earlier run did not
-            _checks(tuple(c for c in step.checks if c not in checked), result, step, locator)
+            _checks(pending, result, step, locator)
             result.done.append((key, len(result.warnings), step.checks))
             continue
         started = time.perf_counter()

@@ -137,7 +137,6 @@
   <xsl:key name="fp:ip-by-interface" match="fp:ip" use="@interface"/>
   <xsl:key name="fp:ip-by-end" match="fp:ip" use="@part || '|' || @port"/>
   <xsl:key name="fp:instance-by-part" match="pim:instance" use="@xmi-id"/>
-  <xsl:key name="fp:instance-by-name" match="pim:instance" use="@name"/>
   <xsl:key name="fp:instance-by-component" match="pim:instance" use="@component"/>
   <!-- on the temporary tree of fp:sequence -->
   <xsl:key name="fp:edge-from" match="fp:edge" use="@from"/>

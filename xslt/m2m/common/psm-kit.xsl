@@ -28,6 +28,7 @@
     fp:psm-library($library, $package)   <x:library> of a pim:library
     fp:psm-doc($e)               <x:doc> of a model element's comment
     fp:accessor($data-port)      get<Datum> (out) / set<Datum> (in)
+    fp:accessor-declared($data-port)  the realizing class has that accessor
     fp:offered-operations($bc, $excluded)  protected, not static, not excluded
     fp:configurable-attributes($bc)  the attributes stereotyped Configurable
     fp:convention-attributes($bc)    without any: the convention's choice
@@ -48,7 +49,8 @@
        (the import reads them as activity settings) -->
   <xsl:variable name="fp:convention-names" as="xs:string+" select="('sample', 'priority', 'scheduler', 'cpuAffinity')"/>
 
-  <xsl:key name="fp:kit-id" match="*[@id]" use="@id"/>
+  <!-- every PIM element by its id; the including PSMs look up with it too -->
+  <xsl:key name="fp:id" match="*[@id]" use="@id"/>
 
   <!-- ========================================================== package -->
   <xsl:function name="fp:package-name" as="xs:string">
@@ -84,13 +86,13 @@
   <!-- ================================================ component wrapper -->
   <xsl:function name="fp:realization" as="element(pim:class)?">
     <xsl:param name="bc" as="element(pim:bound-component)"/>
-    <xsl:sequence select="key('fp:kit-id', $bc/@realization, root($bc))"/>
+    <xsl:sequence select="key('fp:id', $bc/@realization, root($bc))"/>
   </xsl:function>
 
   <!-- the realizing class, else the component itself (a "base" component) -->
   <xsl:function name="fp:owner" as="element()">
     <xsl:param name="bc" as="element(pim:bound-component)"/>
-    <xsl:sequence select="(fp:realization($bc), key('fp:kit-id', $bc/@component, root($bc)))[1]"/>
+    <xsl:sequence select="(fp:realization($bc), key('fp:id', $bc/@component, root($bc)))[1]"/>
   </xsl:function>
 
   <xsl:function name="fp:callable" as="element(pim:operation)*">
@@ -154,6 +156,12 @@
     <xsl:param name="data-port" as="element(pim:data-port)"/>
     <xsl:sequence select="(if ($data-port/@direction eq 'out') then 'get' else 'set')
                           || f:upper-first(f:cpp-identifier($data-port/@datum-name))"/>
+  </xsl:function>
+
+  <xsl:function name="fp:accessor-declared" as="xs:boolean">
+    <xsl:param name="data-port" as="element(pim:data-port)"/>
+    <xsl:variable name="accessor" as="xs:string" select="fp:accessor($data-port)"/>
+    <xsl:sequence select="exists(fp:callable($data-port/..)[@name eq $accessor])"/>
   </xsl:function>
 
   <!-- the operations a component offers: the protected, non-static

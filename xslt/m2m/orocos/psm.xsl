@@ -90,7 +90,6 @@
   <xsl:variable name="fp:psm-namespace" as="xs:string" select="'urn:robomda:psm-orocos:1'"/>
   <xsl:variable name="fp:psm-prefix" as="xs:string" select="'o'"/>
 
-  <xsl:key name="fp:id" match="*[@id]" use="@id"/>
   <xsl:key name="fp:type" match="ty:type" use="@primitive"/>
   <xsl:key name="fp:instance-of" match="pim:instance" use="@component"/>
   <xsl:key name="fp:instance-by-middleware" match="pim:instance" use="@middleware"/>
@@ -291,7 +290,7 @@
               event="{@direction eq 'in' and $non-periodic}"
               rtt-class="{if (@direction eq 'out') then 'RTT::OutputPort' else 'RTT::InputPort'}&lt;{$type/@cpp}&gt;"
               name="{@name}" member="port_{@name}" interface="{@interface-name}" datum="{@datum-name}"
-              accessor="{$accessor}" accessor-declared="{exists(fp:callable(..)[@name eq $accessor])}"
+              accessor="{$accessor}" accessor-declared="{fp:accessor-declared(.)}"
               primitive="{$type/@primitive}" cpp-type="{$type/@cpp}" xml-type="{$type/@xml}" sample="{$type/@sample}">
         <xsl:sequence select="fp:psm-doc(key('fp:id', @port, root(.)))"/>
       </o:port>

@@ -99,7 +99,6 @@
   <xsl:variable name="fp:psm-namespace" as="xs:string" select="'urn:robomda:psm-ros:1'"/>
   <xsl:variable name="fp:psm-prefix" as="xs:string" select="'r'"/>
 
-  <xsl:key name="fp:id" match="*[@id]" use="@id"/>
   <xsl:key name="fp:type-by-primitive" match="ty:type[@primitive]" use="@primitive"/>
   <xsl:key name="fp:type-by-name" match="ty:type[@type-name]" use="@type-name"/>
   <xsl:key name="fp:instance-of" match="pim:instance" use="@component"/>
@@ -344,7 +343,7 @@
       <r:port xmi-id="{@port}" direction="{@direction}" name="{@name}" topic="{@name}"
               member="{if (@direction eq 'out') then 'pub_' else 'sub_'}{@name}_"
               interface="{@interface-name}" datum="{@datum-name}"
-              accessor="{$accessor}" accessor-declared="{exists(fp:callable(..)[@name eq $accessor])}">
+              accessor="{$accessor}" accessor-declared="{fp:accessor-declared(.)}">
         <xsl:sequence select="fp:psm-doc(key('fp:id', @port, root(.)))"/>
         <xsl:sequence select="fp:message(.)"/>
         <xsl:sequence select="fp:qos($connections[1]/pim:policy)"/>
