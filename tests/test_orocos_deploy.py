@@ -47,7 +47,7 @@ pytestmark = [
 ]
 
 MODELS = ["headlamp/model.xmi", "headlamp/model.ea.xmi", "meka/model.xmi", "meka/model.ea.xmi",
-          "pid/model.xmi", "tuned/model.xmi", "split/model.xmi"]
+          "pid/model.xmi", "tuned/model.xmi", "split/model.xmi", "calligraphy/model.xmi", "learning/model.xmi"]
 
 
 def _bash(script: str, cwd: Path, timeout: int = 1200) -> subprocess.CompletedProcess[str]:

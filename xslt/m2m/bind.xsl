@@ -121,6 +121,7 @@
   <xsl:include href="bind/ports.xsl"/>
   <xsl:include href="bind/connections.xsl"/>
   <xsl:include href="bind/sequence.xsl"/>
+  <xsl:include href="bind/composites.xsl"/>
 
   <xsl:output method="xml" indent="no" encoding="UTF-8"/>
 
@@ -135,7 +136,7 @@
   <!-- keys on the temporary trees of fp:binding ($work, $instance-tree, $bound-tree) -->
   <xsl:key name="fp:bc" match="pim:bound-component" use="@component"/>
   <xsl:key name="fp:ip-by-interface" match="fp:ip" use="@interface"/>
-  <xsl:key name="fp:ip-by-end" match="fp:ip" use="@part || '|' || @port"/>
+  <xsl:key name="fp:ip-by-end" match="fp:ip" use="@instance || '|' || @port"/>
   <xsl:key name="fp:instance-by-part" match="pim:instance" use="@xmi-id"/>
   <xsl:key name="fp:instance-by-component" match="pim:instance" use="@component"/>
   <!-- on the temporary tree of fp:sequence -->
@@ -259,14 +260,17 @@
     <xsl:variable name="root" as="document-node()" select="root(.)"/>
     <xsl:variable name="components" as="element(pim:component)*" select="pim:application//pim:component"/>
     <xsl:variable name="tops" as="element(pim:component)*"
-        select="$components[pim:part[key('fp:id', @type, $root)/self::pim:component]]
-                           [empty(key('fp:part-by-type', @id, $root))]"/>
+        select="$components[fp:is-composite(.)][empty(key('fp:part-by-type', @id, $root))]"/>
     <xsl:variable name="ees" as="element(pim:node)*" select="fp:execution-environments($root)"/>
     <xsl:variable name="hosts" as="element(pim:node)*" select="fp:hosts($root)"/>
+    <!-- a composite inside itself would make the walk endless: refused first -->
+    <xsl:sequence select="f:fail-all(fp:composition-cycles($components))"/>
+    <!-- the parts of the top composites, any depth (bind/composites.xsl) -->
+    <xsl:variable name="expansion" as="document-node()" select="fp:expansion($tops)"/>
     <!-- instances and bound components live in documents of their own, so
          that keys find them (temporary trees, copied to the result) -->
-    <xsl:sequence select="f:fail-all(fp:deployment-problems($tops, $components, $ees))"/>
-    <xsl:variable name="instance-tree" as="document-node()" select="fp:instance-tree($tops, $components, $ees, $hosts)"/>
+    <xsl:sequence select="f:fail-all(fp:deployment-problems($expansion, $components, $ees))"/>
+    <xsl:variable name="instance-tree" as="document-node()" select="fp:instance-tree($expansion, $components, $ees, $hosts)"/>
     <!-- an error of one instance (a bad value: BND010, BND006 ...) does not
          hide those of the others: each was caught, all are raised here -->
     <xsl:sequence select="f:fail-all($instance-tree/fp:error ! f:error-map(@description))"/>
@@ -275,7 +279,8 @@
       <xsl:for-each-group select="$instances" group-by="@name">
         <xsl:if test="count(current-group()) gt 1">
           <xsl:sequence select="map { 'code': 'BND009', 'id': string(current-group()[2]/@xmi-id),
-              'message': 'two instances are named ''' || current-grouping-key() || '''' }"/>
+              'message': 'two instances are named ''' || current-grouping-key() || ''''
+              || fp:paths-text(current-group()) }"/>
         </xsl:if>
       </xsl:for-each-group>
     </xsl:variable>
@@ -283,22 +288,24 @@
     <!-- every port problem of every instantiated component at once -->
     <xsl:sequence select="f:fail-all($components[exists(key('fp:instance-by-component', @id, $instance-tree))]
                           ! (let $c := ., $r := fp:realizing-class(.) return $c/pim:port ! fp:port-problems(., $c, $r)))"/>
+    <xsl:if test="exists($tops)">
+      <xsl:sequence select="f:fail-all(fp:delegation-problems(($tops, key('fp:id', $expansion/fp:composite/@component, $root))))"/>
+    </xsl:if>
     <xsl:variable name="bound-tree" as="document-node()" select="fp:bound-tree($components, $instance-tree)"/>
     <xsl:sequence select="f:fail-all($bound-tree/fp:error ! f:error-map(@description))"/>
     <xsl:variable name="bound" as="element(pim:bound-component)*" select="$bound-tree/pim:bound-component"/>
     <!-- working tree: one fp:ip per instance data port -->
     <xsl:variable name="work" as="document-node()" select="fp:work($instances, $bound-tree)"/>
-    <xsl:variable name="connectors" as="element(pim:connector)*"
-        select="$tops/pim:connector[not(@kind eq 'delegation')][count(pim:end[@part]) ge 2]"/>
+    <xsl:variable name="uses" as="element(fp:use)*" select="fp:connector-uses($tops, $expansion)"/>
     <xsl:variable name="raw-connections" as="element(pim:connection)*"
-        select="if (exists($connectors)) then fp:connections-from-connectors($connectors, $work)
+        select="if (exists($uses)) then fp:connections-from-connectors(., $uses, $work)
                 else fp:connections-from-interfaces(., $work)"/>
     <xsl:variable name="names" as="xs:string*" select="f:unique-names($raw-connections/@name)"/>
     <pim:binding instances-from="{if (exists($tops)) then 'parts' else 'components'}"
-                 connections-from="{if (exists($connectors)) then 'connectors' else 'interfaces'}">
+                 connections-from="{if (exists($uses)) then 'connectors' else 'interfaces'}">
       <xsl:sequence select="$hosts ! fp:host(., count($hosts))"/>
       <xsl:sequence select="fp:libraries(.)"/>
-      <xsl:sequence select="$bound, fp:sequence(., $instances, $instance-tree)"/>
+      <xsl:sequence select="$bound, $instance-tree/pim:composite-instance, fp:sequence(., $instances, $instance-tree)"/>
       <xsl:for-each select="$raw-connections">
         <xsl:variable name="position" as="xs:integer" select="position()"/>
         <xsl:copy>
@@ -309,41 +316,57 @@
     </pim:binding>
   </xsl:template>
 
+  <!-- " (parts a.b and a_b) ...": the paths of same-named nested instances -->
+  <xsl:function name="fp:paths-text" as="xs:string">
+    <xsl:param name="instances" as="element(pim:instance)+"/>
+    <xsl:sequence select="if (empty($instances/@path)) then ''
+        else ' (parts ' || string-join($instances ! string((@path, @name)[1]), ' and ')
+             || '): rename a part so that the names differ with the dots made underscores'"/>
+  </xsl:function>
+
   <!-- every instance without an execution environment (BND006) and every
        environment of an unknown middleware (BND003), as maps for
        f:fail-all: all of them at once -->
   <xsl:function name="fp:deployment-problems" as="map(*)*">
-    <xsl:param name="tops" as="element(pim:component)*"/>
+    <xsl:param name="expansion" as="document-node()"/>
     <xsl:param name="components" as="element(pim:component)*"/>
     <xsl:param name="ees" as="element(pim:node)*"/>
-    <!-- the part (if any), component and top composite of each instance -->
+    <!-- the part (if any), component and enclosing elements of each instance -->
     <xsl:variable name="placed" as="map(*)*"
-        select="if (exists($tops))
-                then $tops/pim:part[key('fp:id', @type, root(.))/self::pim:component]
-                     ! map { 'part': ., 'component': key('fp:id', @type, root(.)), 'top': .. }
+        select="if (exists($expansion/fp:unit))
+                then $expansion/fp:unit ! (let $root := root($components[1]) return
+                     map { 'part': key('fp:id', @part, $root), 'component': key('fp:id', @component, $root),
+                           'around': tokenize(@around) })
                 else $components[not(@abstract = ('true', '1'))][pim:port or pim:realization]
-                     ! map { 'component': . }"/>
+                     ! map { 'component': ., 'around': () }"/>
     <xsl:variable name="found" as="element(pim:node)*"
-        select="$placed ! fp:instance-ee(?part, ?component, ?top, $ees)"/>
-    <xsl:sequence select="$placed[empty(fp:instance-ee(?part, ?component, ?top, $ees))]
+        select="$placed ! fp:instance-ee(?part, ?component, ?around, $ees)"/>
+    <xsl:sequence select="$placed[empty(fp:instance-ee(?part, ?component, ?around, $ees))]
                             ! fp:no-ee-problem(?part, ?component, $ees),
                           ($found/.) ! fp:middleware-problems(.)"/>
   </xsl:function>
 
   <!-- the instances, in a document of their own (keys find them there):
-       the parts of the top composites, else one per component with ports
-       or a realization; an instance that fails is an fp:error element -->
+       the units of the expansion (after a pim:composite-instance per
+       composite part), else one per component with ports or a
+       realization; an instance that fails is an fp:error element -->
   <xsl:function name="fp:instance-tree" as="document-node()">
-    <xsl:param name="tops" as="element(pim:component)*"/>
+    <xsl:param name="expansion" as="document-node()"/>
     <xsl:param name="components" as="element(pim:component)*"/>
     <xsl:param name="ees" as="element(pim:node)*"/>
     <xsl:param name="hosts" as="element(pim:node)*"/>
     <xsl:document>
       <xsl:choose>
-        <xsl:when test="exists($tops)">
-          <xsl:for-each select="$tops/pim:part[key('fp:id', @type, root(.))/self::pim:component]">
+        <xsl:when test="exists($expansion/fp:unit)">
+          <xsl:variable name="root" as="document-node()" select="root($components[1])"/>
+          <xsl:for-each select="$expansion/fp:composite">
+            <pim:composite-instance name="{@name}" path="{@path}" xmi-id="{@part}" component="{@component}">
+              <xsl:sequence select="@parent"/>
+            </pim:composite-instance>
+          </xsl:for-each>
+          <xsl:for-each select="$expansion/fp:unit">
             <xsl:try>
-              <xsl:sequence select="fp:instance(., key('fp:id', @type, root(.)), .., $ees, $hosts)"/>
+              <xsl:sequence select="fp:instance(key('fp:id', @part, $root), key('fp:id', @component, $root), ., $ees, $hosts)"/>
               <xsl:catch><xsl:sequence select="fp:caught($err:code, $err:description, $err:value)"/></xsl:catch>
             </xsl:try>
           </xsl:for-each>
@@ -384,7 +407,7 @@
         <xsl:for-each select="$instances">
           <xsl:variable name="inst" as="element(pim:instance)" select="."/>
           <xsl:for-each select="key('fp:bc', $inst/@component, $bound-tree)/pim:data-port">
-            <fp:ip instance="{$inst/@name}" part="{$inst/@xmi-id}" port="{@port}" data-port="{@name}"
+            <fp:ip instance="{$inst/@name}" port="{@port}" data-port="{@name}"
                    direction="{@direction}" interface="{@interface}"
                    type-key="{(@primitive, @type)[1]}"/>
           </xsl:for-each>

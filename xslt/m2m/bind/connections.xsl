@@ -60,7 +60,7 @@
 
   <xsl:function name="fp:connection-name" as="xs:string">
     <xsl:param name="connector" as="element(pim:connector)?"/>
-    <xsl:param name="interface" as="element(pim:interface)"/>
+    <xsl:param name="interface" as="element()"/>
     <xsl:sequence select="if (normalize-space($connector/@name)) then f:cpp-identifier($connector/@name)
                           else f:cpp-identifier($interface/@name || 'Conn')"/>
   </xsl:function>
@@ -84,33 +84,43 @@
     </xsl:for-each>
   </xsl:function>
 
-  <!-- connector mode: writer->reader pairs grouped by writer port -->
+  <!-- connector mode: writer->reader pairs grouped by writer port. $uses:
+       each assembly connector with the path of the composite it is drawn
+       in (bind/composites.xsl); its ends resolve through delegations -->
   <xsl:function name="fp:connections-from-connectors" as="element(pim:connection)*">
-    <xsl:param name="connectors" as="element(pim:connector)*"/>
+    <xsl:param name="model" as="element(pim:model)"/>
+    <xsl:param name="uses" as="element(fp:use)*"/>
     <xsl:param name="work" as="document-node()"/>
-    <xsl:variable name="root" as="document-node()" select="root($connectors[1])"/>
-    <xsl:variable name="pairs" as="element(fp:pair)*">
-      <xsl:for-each select="$connectors">
-        <xsl:variable name="connection" as="element(pim:connector)" select="."/>
+    <xsl:variable name="root" as="document-node()" select="root($model)"/>
+    <xsl:variable name="resolved" as="element()*">
+      <xsl:for-each select="$uses">
+        <xsl:variable name="use" as="element(fp:use)" select="."/>
+        <xsl:variable name="connection" as="element(pim:connector)" select="key('fp:id', @connector, $root)"/>
+        <xsl:variable name="targets" as="element()*"
+            select="$connection/pim:end[@part] ! fp:end-targets(., tokenize($use/@path, '\.'))"/>
+        <xsl:sequence select="$targets/self::fp:unresolved"/>
         <xsl:variable name="ips" as="element(fp:ip)*"
-            select="pim:end[@part] ! key('fp:ip-by-end', @part || '|' || @role, $work)"/>
-        <xsl:variable name="found" as="element(fp:pair)*">
-          <xsl:for-each select="$ips[@direction eq 'out']">
-            <xsl:variable name="wr" as="element(fp:ip)" select="."/>
-            <xsl:for-each select="$ips[@direction eq 'in'][@part ne $wr/@part or @port ne $wr/@port]
-                                      [@interface eq $wr/@interface or @type-key eq $wr/@type-key]">
-              <fp:pair connector="{$connection/@id}" interface="{$wr/@interface}"
-                       w-instance="{$wr/@instance}" w-port="{$wr/@port}" w-dp="{$wr/@data-port}"
-                       r-instance="{@instance}" r-port="{@port}" r-dp="{@data-port}"/>
-            </xsl:for-each>
+            select="$targets/self::fp:target ! key('fp:ip-by-end', @instance || '|' || @port, $work)"/>
+        <xsl:for-each select="$ips[@direction eq 'out']">
+          <xsl:variable name="wr" as="element(fp:ip)" select="."/>
+          <xsl:for-each select="$ips[@direction eq 'in'][@instance ne $wr/@instance or @port ne $wr/@port]
+                                    [@interface eq $wr/@interface or @type-key eq $wr/@type-key]">
+            <fp:pair connector="{$connection/@id}" prefix="{translate($use/@path, '.', '_')}" interface="{$wr/@interface}"
+                     w-instance="{$wr/@instance}" w-port="{$wr/@port}" w-dp="{$wr/@data-port}"
+                     r-instance="{@instance}" r-port="{@port}" r-dp="{@data-port}"/>
           </xsl:for-each>
-        </xsl:variable>
-        <xsl:sequence select="$found"/>
+        </xsl:for-each>
       </xsl:for-each>
     </xsl:variable>
-    <!-- every connector that joins nothing and every input fed twice, at once -->
+    <xsl:variable name="pairs" as="element(fp:pair)*" select="$resolved/self::fp:pair"/>
+    <!-- every promoted port delegated to nothing, every connector that
+         joins nothing and every input fed twice, at once -->
     <xsl:variable name="problems" as="map(*)*">
-      <xsl:for-each select="$connectors[not(@id = $pairs/@connector)]">
+      <xsl:for-each-group select="$resolved/self::fp:unresolved" group-by="@message">
+        <xsl:sequence select="map { 'code': 'BND014', 'id': string(@connector), 'message': string(@message) }"/>
+      </xsl:for-each-group>
+      <xsl:for-each select="key('fp:id', distinct-values($uses/@connector), $root)
+                            [not(@id = ($pairs/@connector, $resolved/self::fp:unresolved/@connector))]">
         <xsl:sequence select="map { 'code': 'BND007', 'id': string(@id), 'message': 'connector ''' || @name
             || ''' joins no output port to an input port of the same data type' }"/>
       </xsl:for-each>
@@ -127,9 +137,13 @@
       <xsl:variable name="group" as="element(fp:pair)+" select="current-group()"/>
       <xsl:variable name="ks" as="element(pim:connector)*"
           select="key('fp:id', distinct-values($group/@connector), $root)"/>
-      <xsl:variable name="iface" as="element(pim:interface)" select="key('fp:id', $group[1]/@interface, $root)"/>
-      <pim:connection name="{fp:connection-name($ks[1], $iface)}" xmi-id="{$ks[1]/@id}"
-                      interface="{$iface/@id}" connectors="{$ks/@id}">
+      <!-- an interface, or the data type (the port, for a library primitive) a port is typed by -->
+      <xsl:variable name="iface" as="element()" select="key('fp:id', $group[1]/@interface, $root)"/>
+      <!-- a connector inside a composite part: named after the part's path too -->
+      <xsl:variable name="prefix" as="xs:string" select="$group[@connector eq $ks[1]/@id][1]/@prefix"/>
+      <pim:connection name="{if ($prefix eq '') then fp:connection-name($ks[1], $iface)
+                             else f:cpp-identifier($prefix || '_' || fp:connection-name($ks[1], $iface))}"
+                      xmi-id="{$ks[1]/@id}" interface="{$iface/@id}" connectors="{$ks/@id}">
         <xsl:sequence select="fp:policy(($ks, key('fp:id', ($group[1]/@w-port, $group/@r-port), $root), $iface))"/>
         <pim:writer instance="{$group[1]/@w-instance}" port="{$group[1]/@w-port}" data-port="{$group[1]/@w-dp}"/>
         <xsl:for-each-group select="$group" group-by="@r-instance || '.' || @r-dp">

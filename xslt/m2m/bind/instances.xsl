@@ -63,26 +63,30 @@
   <xsl:function name="fp:instance" as="element(pim:instance)">
     <xsl:param name="part" as="element(pim:part)?"/>
     <xsl:param name="component" as="element(pim:component)"/>
-    <xsl:param name="top" as="element(pim:component)?"/>
+    <!-- the unit of the expansion (bind/composites.xsl), when instances
+         come from parts -->
+    <xsl:param name="unit" as="element(fp:unit)?"/>
     <xsl:param name="ees" as="element(pim:node)*"/>
     <xsl:param name="hosts" as="element(pim:node)*"/>
     <xsl:variable name="root" as="document-node()" select="root($component)"/>
     <xsl:variable name="realization-item" as="element(pim:class)?" select="fp:realizing-class($component)"/>
-    <xsl:variable name="ids" as="xs:string*" select="($part/@id, $component/@id, $top/@id, $realization-item/@id) ! string(.)"/>
-    <xsl:variable name="artifact-ids" as="xs:string*"
-        select="key('fp:manifestation-by-element', $ids, $root)/../@id ! string(.)"/>
+    <xsl:variable name="around" as="xs:string*" select="tokenize($unit/@around)"/>
     <xsl:variable name="deployments" as="element(pim:deployment)*"
-        select="key('fp:deployment-by-deployed', ($ids, $artifact-ids), $root)"/>
-    <xsl:variable name="ee" as="element(pim:node)?" select="fp:instance-ee($part, $component, $top, $ees)"/>
+        select="fp:deployments-of($part, $component, $around, $realization-item)"/>
+    <xsl:variable name="ee" as="element(pim:node)?" select="fp:instance-ee($part, $component, $around, $ees)"/>
     <xsl:variable name="inst-id" as="xs:string" select="string(($part/@id, $component/@id)[1])"/>
     <xsl:if test="empty($ee)">
       <xsl:sequence select="f:fail-all(fp:no-ee-problem($part, $component, $ees))"/>
     </xsl:if>
     <xsl:variable name="host" as="element(pim:node)?"
         select="(fp:host-of($ee, $deployments/.., $hosts), if (count($hosts) eq 1) then $hosts else ())[1]"/>
-    <pim:instance name="{f:cpp-identifier(($part/@name[normalize-space(.)], $component/@name)[1])}"
+    <pim:instance name="{($unit/@name, f:cpp-identifier(($part/@name[normalize-space(.)], $component/@name)[1]))[1]}"
                   xmi-id="{$inst-id}" component="{$component/@id}">
-      <xsl:if test="$top"><xsl:attribute name="composite" select="$top/@id"/></xsl:if>
+      <xsl:if test="$unit"><xsl:attribute name="composite" select="$unit/@top"/></xsl:if>
+      <!-- inside a composite part: where in the hierarchy -->
+      <xsl:if test="$unit/@parent">
+        <xsl:sequence select="$unit/(@path, @parent)"/>
+      </xsl:if>
       <xsl:if test="$host"><xsl:attribute name="host" select="$host/@id"/></xsl:if>
       <xsl:attribute name="execution-environment" select="$ee/@id"/>
       <xsl:attribute name="middleware" select="fp:middleware($ee)"/>
@@ -105,20 +109,31 @@
     </pim:instance>
   </xsl:function>
 
+  <!-- the deployments that place the instance of $part (or of component
+       $component): of the part, the component, the enclosing composites and
+       composite parts ($around: ids), the realizing class, or an artifact
+       that manifests one of them -->
+  <xsl:function name="fp:deployments-of" as="element(pim:deployment)*">
+    <xsl:param name="part" as="element(pim:part)?"/>
+    <xsl:param name="component" as="element(pim:component)"/>
+    <xsl:param name="around" as="xs:string*"/>
+    <xsl:param name="realization" as="element(pim:class)?"/>
+    <xsl:variable name="root" as="document-node()" select="root($component)"/>
+    <xsl:variable name="ids" as="xs:string*" select="($part/@id, $component/@id, $around, $realization/@id) ! string(.)"/>
+    <xsl:variable name="artifact-ids" as="xs:string*"
+        select="key('fp:manifestation-by-element', $ids, $root)/../@id ! string(.)"/>
+    <xsl:sequence select="key('fp:deployment-by-deployed', ($ids, $artifact-ids), $root)"/>
+  </xsl:function>
+
   <!-- the execution environment of the instance of $part (or of
        component $c when instances come from components), as fp:instance
        finds it -->
   <xsl:function name="fp:instance-ee" as="element(pim:node)?">
     <xsl:param name="part" as="element(pim:part)?"/>
     <xsl:param name="component" as="element(pim:component)"/>
-    <xsl:param name="top" as="element(pim:component)?"/>
+    <xsl:param name="around" as="xs:string*"/>
     <xsl:param name="ees" as="element(pim:node)*"/>
-    <xsl:variable name="root" as="document-node()" select="root($component)"/>
-    <xsl:variable name="realization" as="element(pim:class)?" select="fp:realizing-class($component)"/>
-    <xsl:variable name="ids" as="xs:string*" select="($part/@id, $component/@id, $top/@id, $realization/@id) ! string(.)"/>
-    <xsl:variable name="artifact-ids" as="xs:string*"
-        select="key('fp:manifestation-by-element', $ids, $root)/../@id ! string(.)"/>
-    <xsl:sequence select="(key('fp:deployment-by-deployed', ($ids, $artifact-ids), $root) ! fp:deployment-ee(.),
+    <xsl:sequence select="(fp:deployments-of($part, $component, $around, fp:realizing-class($component)) ! fp:deployment-ee(.),
                            fp:owner-ee($component),
                            if (count($ees) eq 1) then $ees else ())[1]"/>
   </xsl:function>

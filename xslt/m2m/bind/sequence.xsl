@@ -60,20 +60,18 @@
     <xsl:param name="model" as="element(pim:model)"/>
     <xsl:param name="instances" as="element(pim:instance)*"/>
     <xsl:param name="instance-tree" as="document-node()"/>
-    <!-- instance xmi-id -> position in document order -->
+    <!-- instance name (unique: BND009) -> position in document order -->
     <xsl:variable name="position" as="map(xs:string, xs:integer)"
-        select="map:merge(for $k in 1 to count($instances) return map { string($instances[$k]/@xmi-id): $k })"/>
+        select="map:merge(for $k in 1 to count($instances) return map { string($instances[$k]/@name): $k })"/>
     <xsl:document>
       <xsl:for-each select="fp:start-after-dependencies($model)">
         <xsl:variable name="dependency" as="element(pim:dependency)" select="."/>
         <!-- clients first: a wrong client is reported before a wrong supplier -->
-        <xsl:variable name="ends" as="element(pim:instance)*"
-            select="(pim:client, pim:supplier) ! fp:dependency-end(., $instance-tree)"/>
-        <xsl:variable name="clients" as="element(pim:instance)*" select="$ends[position() le count($dependency/pim:client)]"/>
-        <xsl:for-each select="$ends[position() gt count($dependency/pim:client)]">
+        <xsl:variable name="clients" as="element(pim:instance)*" select="pim:client ! fp:dependency-end(., $instance-tree)"/>
+        <xsl:for-each select="pim:supplier ! fp:dependency-end(., $instance-tree)">
           <xsl:variable name="supplier" as="element(pim:instance)" select="."/>
           <xsl:for-each select="$clients">
-            <fp:edge from="{$position($supplier/@xmi-id)}" to="{$position(@xmi-id)}"
+            <fp:edge from="{$position($supplier/@name)}" to="{$position(@name)}"
                      instance="{$supplier/@name}" dependency="{$dependency/@id}"/>
           </xsl:for-each>
         </xsl:for-each>
@@ -83,11 +81,16 @@
 
   <!-- the instance a client or supplier of a StartAfter dependency names;
        BND012 when it names something that is not one -->
-  <xsl:function name="fp:dependency-end" as="element(pim:instance)">
+  <xsl:function name="fp:dependency-end" as="element(pim:instance)+">
     <xsl:param name="end" as="element()"/>
     <xsl:param name="instance-tree" as="document-node()"/>
-    <xsl:variable name="instance" as="element(pim:instance)?"
-        select="key('fp:instance-by-part', $end/@element, $instance-tree)"/>
+    <!-- a part inside a composite used twice is two instances; a composite
+         part stands for every instance inside it -->
+    <xsl:variable name="composites" as="element(pim:composite-instance)*"
+        select="$instance-tree/pim:composite-instance[@xmi-id eq $end/@element]"/>
+    <xsl:variable name="instance" as="element(pim:instance)*"
+        select="key('fp:instance-by-part', $end/@element, $instance-tree)
+                | $instance-tree/pim:instance[some $c in $composites satisfies starts-with(@path, $c/@path || '.')]"/>
     <xsl:variable name="dependency" as="element(pim:dependency)" select="$end/.."/>
     <xsl:variable name="element" as="element()?" select="key('fp:id', $end/@element, root($end))"/>
     <xsl:sequence select="if (exists($instance)) then $instance
@@ -95,7 +98,7 @@
                     || ''' has ' || local-name($end) || ' '
                     || (if (empty($element)) then '''' || $end/@element || ''', which is not in the model'
                         else local-name($element) || ' ''' || $element/@name || ''', which is not a component instance')
-                    || ': client and supplier must be parts that become instances'
+                    || ': client and supplier must be parts (or composite parts) that become instances'
                     || ' (or components, in a model without a composite component)')"/>
   </xsl:function>
 
