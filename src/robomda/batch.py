@@ -211,14 +211,15 @@ def run_batch(folder: Path, out: Path, target: str | None = None, *, package_nam
     search = tuple(Path(d).resolve() for d in model_path)
     path_arg = tuple(str(d) for d in search)
     links = {model: linked_files(model, search) for model in models}
-    used_by = {lib: model for model in models for lib in links[model]}
+    # by real path: a model may reach a library of the batch through a symlinked folder
+    used_by = {lib.resolve(): model for model in models for lib in links[model]}
     state = _read_state(out)
     results: list[ModelResult] = []
     todo: list[tuple[Path, Path, str]] = []
     for model in models:
         rel = model.relative_to(folder).as_posix()
-        if model in used_by:
-            user = os.path.relpath(used_by[model], folder)
+        if model.resolve() in used_by:
+            user = os.path.relpath(used_by[model.resolve()], folder)
             results.append(ModelResult(model=rel, status="library", diagnostics=[
                 f"{model}: note: a library of {Path(user).as_posix()} (it references this file): generated with it, "
                 "not on its own"]))

@@ -9,6 +9,7 @@ of the XMI element that carries it.
 
 from __future__ import annotations
 
+import os
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -170,8 +171,14 @@ def linked_files(model: Path, search: tuple[Path, ...] = ()) -> list[Path]:
     ``search`` folder (the model path), that exist. Used only to locate
     diagnostics; the import decides what the model holds.
     """
-    roots = [model.resolve().parent, *(d.resolve() for d in search)]
-    seen, order, todo = {model.resolve()}, [], [model.resolve()]
+    # by path as written, not by real path, as the import resolves URIs: a
+    # library reached through a symlinked folder inside the model's folder is
+    # inside it, as it is for the import
+    def lexical(path: Path) -> Path:
+        return Path(os.path.normpath(path.absolute()))
+
+    roots = [lexical(model).parent, *(lexical(d) for d in search)]
+    seen, order, todo = {lexical(model)}, [], [lexical(model)]
     while todo:
         current = todo.pop(0)
         try:
@@ -182,7 +189,7 @@ def linked_files(model: Path, search: tuple[Path, ...] = ()) -> list[Path]:
             if _PROFILE.search(ref) or (_SCHEME.match(ref) and not ref.lower().startswith("file:")):
                 continue
             target = Path(ref[5:].lstrip("/") if ref.lower().startswith("file:") else ref)
-            target = (Path("/") / target if ref.lower().startswith("file:") else current.parent / target).resolve()
+            target = lexical(Path("/") / target if ref.lower().startswith("file:") else current.parent / target)
             if target in seen or not target.is_file() or not any(target.is_relative_to(r) for r in roots):
                 continue
             seen.add(target)

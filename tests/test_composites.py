@@ -1,0 +1,163 @@
+"""Composites of any depth (seed 003, issue 13): nothing of a nested model is lost.
+
+The fixtures fixtures/cases/calligraphy and fixtures/cases/learning are two
+applications of seed 003 that reuse the Arm Trajectory Follower reference
+architecture from one library file (fixtures/libraries/atf, reached through
+each case's atf/ link), three levels deep. These tests count, independently
+of the stylesheets, what the imported model holds (the leaf parts below the
+top composite, every composite part, every use of every assembly connector)
+and find each of them in every later stage and in the generated deployment
+files of every target; and they check that a change to the library file
+regenerates both applications in a batch run, and nothing else.
+"""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import pytest
+from lxml import etree
+
+from robomda.api import generate, targets
+from robomda.batch import run_batch
+
+ROOT = Path(__file__).resolve().parent.parent
+CASES = ROOT / "fixtures" / "cases"
+APPS = ["calligraphy", "learning"]
+PIM = "{urn:robomda:pim:1}"
+
+
+def _walk(model: etree._Element) -> tuple[list[str], list[str], list[tuple[str, str]]]:
+    """(leaf part paths, composite part paths, (connector id, path of its composite) per assembly use),
+    read from the imported PIM by walking the parts of the top composites."""
+    by_id = {e.get("id"): e for e in model.iter() if e.get("id")}
+    components = [c for c in model.iter(f"{PIM}component")]
+
+    def part_type(part: etree._Element):
+        found = by_id.get(part.get("type"))
+        return found if found is not None and found.tag == f"{PIM}component" else None
+
+    def is_composite(component) -> bool:
+        return any(part_type(p) is not None for p in component.findall(f"{PIM}part"))
+
+    used_as_part = {p.get("type") for p in model.iter(f"{PIM}part")}
+    tops = [c for c in components if is_composite(c) and c.get("id") not in used_as_part]
+    leaves, composites, uses = [], [], []
+
+    def assemblies(component, path: str) -> None:
+        own_ports = {p.get("id") for p in component.findall(f"{PIM}port")}
+        for connector in component.findall(f"{PIM}connector"):
+            ends = connector.findall(f"{PIM}end")
+            delegation = connector.get("kind") == "delegation" or any(
+                e.get("part") is None and e.get("role") in own_ports for e in ends)
+            if not delegation and sum(e.get("part") is not None for e in ends) >= 2:
+                uses.append((connector.get("id"), path))
+
+    def expand(component, prefix: list[str]) -> None:
+        for part in component.findall(f"{PIM}part"):
+            kind = part_type(part)
+            if kind is None:
+                continue
+            path = prefix + [part.get("name") or kind.get("name")]
+            if is_composite(kind):
+                composites.append(".".join(path))
+                assemblies(kind, ".".join(path))
+                expand(kind, path)
+            else:
+                leaves.append(".".join(path))
+
+    for top in tops:
+        assemblies(top, "")
+        expand(top, [])
+    return leaves, composites, uses
+
+
+@pytest.fixture(scope="module")
+def runs() -> dict[tuple[str, str], object]:
+    return {(app, target): generate(CASES / app / "model.xmi", CASES / app / "out", target, write=False)
+            for app in APPS for target in targets()}
+
+
+@pytest.mark.parametrize("app", APPS)
+def test_every_part_and_connector_reaches_the_binding(app: str, runs) -> None:
+    done = runs[(app, "orocos")]
+    leaves, composites, uses = _walk(etree.fromstring(done.stages["import"].encode("utf-8")))
+    assert len(leaves) == 6 and len(composites) == 2 and len(uses) >= 7  # the fixture is what it says
+    assert max(p.count(".") for p in leaves) == 2  # three levels: atf > driver > fri
+    binding = etree.fromstring(done.stages["bind"].encode("utf-8")).find(f"{PIM}binding")
+    instances = binding.findall(f"{PIM}instance")
+    assert sorted(i.get("path") or i.get("name") for i in instances) == sorted(leaves)
+    assert sorted(i.get("name") for i in instances) == sorted(p.replace(".", "_") for p in leaves)
+    assert [c.get("path") for c in binding.findall(f"{PIM}composite-instance")] == composites
+    # every assembly connector, at every level, is in a connection point
+    joined = {k for c in binding.findall(f"{PIM}connection") for k in c.get("connectors").split()}
+    assert {connector for connector, _ in uses} <= joined
+    # and every connection joins instances that exist
+    names = {i.get("name") for i in instances}
+    for connection in binding.findall(f"{PIM}connection"):
+        ends = connection.findall(f"{PIM}writer") + connection.findall(f"{PIM}reader")
+        assert {e.get("instance") for e in ends} <= names
+
+
+def _connections(binding: etree._Element) -> list[tuple[str, str, str, str]]:
+    """(writer instance, writer port, reader instance, reader port) of every connection of the binding."""
+    pairs = []
+    for connection in binding.findall(f"{PIM}connection"):
+        writer = connection.find(f"{PIM}writer")
+        for reader in connection.findall(f"{PIM}reader"):
+            pairs.append((writer.get("instance"), writer.get("data-port"), reader.get("instance"),
+                          reader.get("data-port")))
+    return pairs
+
+
+@pytest.mark.parametrize("app", APPS)
+def test_every_instance_and_connection_reaches_the_orocos_deployment(app: str, runs) -> None:
+    done = runs[(app, "orocos")]
+    binding = etree.fromstring(done.stages["bind"].encode("utf-8")).find(f"{PIM}binding")
+    files = {f.get("path"): f.text or "" for f in etree.fromstring(done.stages["text"].encode("utf-8"))}
+    xml = etree.fromstring(files[f"deploy/{app}.xml"].encode("utf-8"))
+    loaded = {s.get("name") for s in xml.findall("struct") if s.get("type") not in ("ConnPolicy", "PropertyBag")}
+    assert {i.get("name") for i in binding.findall(f"{PIM}instance")} <= loaded
+    ops, lua = files[f"deploy/{app}.ops"], files[f"deploy/{app}.lua"]
+    for writer, wport, reader, rport in _connections(binding):
+        assert f'connect("{writer}.{wport}", "{reader}.{rport}"' in ops
+        assert f'"{writer}", "{wport}", "{reader}", "{rport}"' in lua or f'{writer}.{wport}' in lua
+
+
+@pytest.mark.parametrize("app", APPS)
+@pytest.mark.parametrize("target", ["ros1", "ros2"])
+def test_every_instance_and_connection_reaches_the_ros_launch(app: str, target: str, runs) -> None:
+    done = runs[(app, target)]
+    binding = etree.fromstring(done.stages["bind"].encode("utf-8")).find(f"{PIM}binding")
+    files = {f.get("path"): f.text or "" for f in etree.fromstring(done.stages["text"].encode("utf-8"))}
+    launch = "\n".join(text for path, text in files.items() if path.startswith("launch/"))
+    for instance in binding.findall(f"{PIM}instance"):
+        assert f'name="{instance.get("name")}"' in launch
+    # both ends of every connection are remapped onto one topic
+    for connection in binding.findall(f"{PIM}connection"):
+        assert launch.count(f'to="{connection.get("name")}"') >= 2
+
+
+def test_a_changed_library_regenerates_both_applications_and_nothing_else(tmp_path: Path) -> None:
+    apps = tmp_path / "apps"
+    shutil.copytree(ROOT / "fixtures" / "libraries" / "atf", apps / "lib" / "atf")
+    for app in APPS:
+        shutil.copytree(CASES / app, apps / app, symlinks=True, ignore=shutil.ignore_patterns("expected", "atf"))
+        (apps / app / "atf").symlink_to(Path("..") / "lib" / "atf")
+    shutil.copytree(CASES / "pid", apps / "pid", ignore=shutil.ignore_patterns("expected"))
+    out = tmp_path / "out"
+    first = run_batch(apps, out, "ros1", jobs=1)
+    assert {r.model: r.status for r in first.results} == {
+        "calligraphy/model.xmi": "ok", "learning/model.xmi": "ok", "pid/model.xmi": "ok",
+        "lib/atf/ArmTrajectoryFollower.uml": "library"}
+    assert first.exit_code == 0
+    library = apps / "lib" / "atf" / "ArmTrajectoryFollower.uml"
+    library.write_text(library.read_text(encoding="utf-8").replace(
+        'xmi:id="_atfCsV1v" value="position"', 'xmi:id="_atfCsV1v" value="impedance"'), encoding="utf-8")
+    again = run_batch(apps, out, "ros1", jobs=1)
+    assert {r.model: r.status for r in again.results} == {
+        "calligraphy/model.xmi": "ok", "learning/model.xmi": "ok", "pid/model.xmi": "skipped",
+        "lib/atf/ArmTrajectoryFollower.uml": "library"}
+    for app in APPS:
+        assert "impedance" in (out / app / "model.xmi" / "config" / "atf_csIter.yaml").read_text()
