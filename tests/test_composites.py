@@ -132,11 +132,17 @@ def test_every_instance_and_connection_reaches_the_ros_launch(app: str, target: 
     binding = etree.fromstring(done.stages["bind"].encode("utf-8")).find(f"{PIM}binding")
     files = {f.get("path"): f.text or "" for f in etree.fromstring(done.stages["text"].encode("utf-8"))}
     launch = "\n".join(text for path, text in files.items() if path.startswith("launch/"))
+    namespace = "ns" if target == "ros1" else "namespace"
     for instance in binding.findall(f"{PIM}instance"):
-        assert f'name="{instance.get("name")}"' in launch
-    # both ends of every connection are remapped onto one topic
+        if instance.get("parent"):  # a node in the namespace of its composite parts
+            name = instance.get("path").rsplit(".", 1)[1]
+            assert f'name="{name}" {namespace}="{instance.get("parent").replace(".", "/")}"' in launch
+        else:
+            assert f'name="{instance.get("name")}" ' in launch
+    # both ends of every connection are remapped onto one topic (named from the root in a namespace)
     for connection in binding.findall(f"{PIM}connection"):
-        assert launch.count(f'to="{connection.get("name")}"') >= 2
+        name = connection.get("name")
+        assert launch.count(f'to="{name}"') + launch.count(f'to="/{name}"') >= 2
 
 
 def test_a_changed_library_regenerates_both_applications_and_nothing_else(tmp_path: Path) -> None:

@@ -9,6 +9,7 @@ the layout of tests/test_golden.py; regenerate with ROBOMDA_REGEN_ROS=1.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import re
 import shutil
@@ -257,7 +258,9 @@ def _free_port() -> int:
         return s.getsockname()[1]
 
 
-def test_ros1_pid_runs_under_roscore(catkin_ws: Path) -> None:
+@contextlib.contextmanager
+def _roscore_running(catkin_ws: Path, launch: Path):
+    """A roscore on a free port with ``launch`` running under it; yields the environment of its tools."""
     for tool in ("roscore", "roslaunch", "rostopic", "rosnode"):
         _need(tool)
     port = _free_port()
@@ -273,18 +276,36 @@ def test_ros1_pid_runs_under_roscore(catkin_ws: Path) -> None:
         while subprocess.run(["rosnode", "list"], env=env, capture_output=True).returncode != 0:
             assert time.monotonic() < deadline, "roscore did not come up"
             time.sleep(0.5)
-        procs.append(subprocess.Popen(["roslaunch", str(catkin_ws / "src/pid/launch/pid.launch")], env=env,
+        procs.append(subprocess.Popen(["roslaunch", str(launch)], env=env,
                                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True))
+        yield env
+    finally:
+        for proc in reversed(procs):
+            if proc.poll() is None:
+                os.killpg(proc.pid, signal.SIGINT)
+                try:
+                    proc.wait(timeout=15)
+                except subprocess.TimeoutExpired:
+                    os.killpg(proc.pid, signal.SIGKILL)
+                    proc.wait()
+
+
+def _wait_for(env: dict, want_nodes: set[str], want_topics: set[str]) -> None:
+    deadline = time.monotonic() + 30
+    while True:
+        nodes = set(subprocess.run(["rosnode", "list"], env=env, capture_output=True, text=True).stdout.split())
+        topics = set(subprocess.run(["rostopic", "list"], env=env, capture_output=True, text=True).stdout.split())
+        if want_nodes <= nodes and want_topics <= topics:
+            return
+        assert time.monotonic() < deadline, f"nodes {sorted(nodes)}, topics {sorted(topics)}"
+        time.sleep(0.5)
+
+
+def test_ros1_pid_runs_under_roscore(catkin_ws: Path) -> None:
+    with _roscore_running(catkin_ws, catkin_ws / "src/pid/launch/pid.launch") as env:
         want_nodes = {"/TrajectoryGenerator", "/PIDController", "/RobotInterface"}
         want_topics = {"/IDesiredPositionConn", "/IMeasuredPositionConn", "/IReferenceTorqueConn"}
-        deadline = time.monotonic() + 30
-        while True:
-            nodes = set(subprocess.run(["rosnode", "list"], env=env, capture_output=True, text=True).stdout.split())
-            topics = set(subprocess.run(["rostopic", "list"], env=env, capture_output=True, text=True).stdout.split())
-            if want_nodes <= nodes and want_topics <= topics:
-                break
-            assert time.monotonic() < deadline, f"nodes {sorted(nodes)}, topics {sorted(topics)}"
-            time.sleep(0.5)
+        _wait_for(env, want_nodes, want_topics)
         for topic in sorted(want_topics):
             info = subprocess.run(["rostopic", "type", topic], env=env, capture_output=True, text=True, timeout=20)
             assert info.stdout.strip() == "std_msgs/Float64"
@@ -300,15 +321,6 @@ def test_ros1_pid_runs_under_roscore(catkin_ws: Path) -> None:
                                  text=True, timeout=20) if shutil.which("rosservice", path=ROS_ENV_PATH) else None
         if service is not None:
             assert service.returncode == 0, service.stderr
-    finally:
-        for proc in reversed(procs):
-            if proc.poll() is None:
-                os.killpg(proc.pid, signal.SIGINT)
-                try:
-                    proc.wait(timeout=15)
-                except subprocess.TimeoutExpired:
-                    os.killpg(proc.pid, signal.SIGKILL)
-                    proc.wait()
 
 
 def test_ros1_package_moved_away_names_the_option_then_configures(tmp_path: Path) -> None:
@@ -346,3 +358,34 @@ def test_ros1_tuned_parameters_in_the_user_file_win(tmp_path: Path) -> None:
     # regeneration keeps the tuned value and rewrites the generated files
     done = generate(ROOT / "fixtures" / "cases" / "pid" / "model.xmi", pkg, "ros1")
     assert "kp: 42.5" in user.read_text() and "config/PIDController.user.yaml" in done.report.kept_user
+
+
+@pytest.mark.parametrize("app", ["calligraphy", "learning"])
+def test_ros1_composites_run_under_roscore_with_every_connection_live(app: str, catkin_ws: Path) -> None:
+    """Seed 003's applications: each node in the namespace of its composite parts, and every
+    connection of the model, at any depth, a topic with its writer publishing and its readers
+    subscribed."""
+    binding = etree.fromstring(_run(ROOT / "fixtures" / "cases" / app, "ros1").stages["bind"].encode()).find(
+        "{urn:robomda:pim:1}binding")
+    pim = "{urn:robomda:pim:1}"
+
+    def node(instance_name: str) -> str:
+        found = binding.find(f"{pim}instance[@name='{instance_name}']")
+        return "/" + (found.get("path") or found.get("name")).replace(".", "/")
+
+    want_nodes = {node(i.get("name")) for i in binding.findall(f"{pim}instance")}
+    assert "/atf/driver/fri" in want_nodes
+    connections = {"/" + c.get("name"): c for c in binding.findall(f"{pim}connection")}
+    with _roscore_running(catkin_ws, catkin_ws / "src" / app / "launch" / f"{app}.launch") as env:
+        _wait_for(env, want_nodes, set(connections))
+        for topic, connection in sorted(connections.items()):
+            info = subprocess.run(["rostopic", "info", topic], env=env, capture_output=True, text=True,
+                                  timeout=20).stdout
+            publishers = info.split("Subscribers:")[0]
+            subscribers = info.split("Subscribers:")[1] if "Subscribers:" in info else ""
+            assert f"* {node(connection.find(f'{pim}writer').get('instance'))} " in publishers, info
+            for reader in connection.findall(f"{pim}reader"):
+                assert f"* {node(reader.get('instance'))} " in subscribers, (topic, info)
+            echo = subprocess.run(["rostopic", "echo", "-n", "2", topic], env=env, capture_output=True,
+                                  text=True, timeout=30)
+            assert echo.stdout.count("data:") == 2, (topic, echo.stdout + echo.stderr)

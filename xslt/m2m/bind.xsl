@@ -14,7 +14,8 @@
            instances.xsl (hosts, libraries, instances, activities),
            ports.xsl (bound components, data ports), connections.xsl
            (connection points and policies), sequence.xsl (deployment
-           sequence). This file: the keys, the entry, the reference checks
+           sequence), composites.xsl (composites of any depth flattened,
+           connector ends resolved through delegations). This file: the keys, the entry, the reference checks
            and fp:binding, which puts the binding together.
 
   What it resolves (docs/profile.md: stereotypes of profile "robomda" first,
@@ -22,7 +23,11 @@
   - instances: when a composite component has parts typed by components and
     is not itself the type of a part ("top composite"), the parts of all top
     composites are the instances and their assembly connectors the
-    connections; otherwise one instance per non-abstract component that has
+    connections; a part typed by a composite is no instance but contributes
+    its own parts, at any depth, named by their path (bind/composites.xsl:
+    pim:composite-instance, pim:instance/@path, @parent), and the assembly
+    connectors of each composite part are connections too, their ends on a
+    composite's port resolved through its delegation connectors; otherwise one instance per non-abstract component that has
     ports or a realization, named after the component. Instance names are
     made valid C++ identifiers (xslt/common/naming.xsl).
   - per instance: execution environment (the ExecutionEnvironment that the
@@ -96,6 +101,12 @@
     BND012  a StartAfter dependency whose client or supplier is not a
             component instance (a part that became an instance, or the
             component in a model without composites); names the dependency
+    BND013  a composite is a part of itself at any depth (each composite on
+            the cycle; raised before anything else is bound)
+    BND014  a connector reaches a promoted port that its composite
+            delegates to nothing
+    BND015  a delegation joins ports that do not carry the same data in the
+            same direction
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"

@@ -442,10 +442,17 @@
     <xsl:param name="host-keys" as="map(xs:string, xs:string)"/>
     <xsl:variable name="node" as="element(r:node)" select="key('fp:node', $instance/@component, $nodes)"/>
     <xsl:variable name="activity" as="element(pim:activity)" select="$instance/pim:activity"/>
-    <r:instance xmi-id="{$instance/@xmi-id}" name="{$instance/@name}" node="{$node/@class}"
-                executable="{$node/@executable}" host="{$host-keys(string($instance/@host))}"
-                middleware="{$instance/@middleware}"
-                period="{$activity/@period}" periodic="{number($activity/@period) ne 0}">
+    <r:instance xmi-id="{$instance/@xmi-id}" name="{$instance/@name}" node="{$node/@class}">
+      <!-- inside a composite part: a node in the namespace of its path -->
+      <xsl:if test="$instance/@parent">
+        <xsl:attribute name="node-name" select="substring-after($instance/@path, $instance/@parent || '.')"/>
+        <xsl:attribute name="namespace" select="translate($instance/@parent, '.', '/')"/>
+      </xsl:if>
+      <xsl:attribute name="executable" select="$node/@executable"/>
+      <xsl:attribute name="host" select="$host-keys(string($instance/@host))"/>
+      <xsl:attribute name="middleware" select="$instance/@middleware"/>
+      <xsl:attribute name="period" select="$activity/@period"/>
+      <xsl:attribute name="periodic" select="number($activity/@period) ne 0"/>
       <xsl:for-each select="$node/r:port">
         <xsl:variable name="port" as="element(r:port)" select="."/>
         <xsl:variable name="connections" as="element(pim:connection)*"
@@ -456,7 +463,11 @@
               || ''': ROS remaps a port to one topic; ''' || $connections[1]/@name || ''' is used')"/>
         </xsl:if>
         <xsl:for-each select="$connections[1]">
-          <r:remap from="{$port/@topic}" to="{(pim:policy/@topic[normalize-space(.)], @name)[1]}"/>
+          <!-- a node in a namespace resolves a relative name in it: the
+               topic is named from the root so that all ends meet -->
+          <xsl:variable name="topic" as="xs:string" select="(pim:policy/@topic[normalize-space(.)], @name)[1]"/>
+          <r:remap from="{$port/@topic}"
+                   to="{if ($instance/@parent and not(starts-with($topic, '/'))) then '/' || $topic else $topic}"/>
         </xsl:for-each>
       </xsl:for-each>
       <r:parameter-value name="update_period" yaml="{fp:decimal($activity/@period)}"/>

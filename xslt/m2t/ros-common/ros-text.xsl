@@ -43,6 +43,17 @@
     </xsl:document>
   </xsl:template>
 
+  <!-- the name attributes of a launch file's node: name="..." and, for a
+       node inside a composite part (seed 003), its namespace in the
+       attribute $namespace-attribute (ROS 1 ns, ROS 2 namespace), relative
+       to the launch file's namespace -->
+  <xsl:function name="fp:node-name-attributes" as="xs:string">
+    <xsl:param name="instance" as="element(r:instance)"/>
+    <xsl:param name="namespace-attribute" as="xs:string"/>
+    <xsl:sequence select="concat('name=&quot;', ($instance/@node-name, $instance/@name)[1], '&quot;',
+        $instance/@namespace ! concat(' ', $namespace-attribute, '=&quot;', ., '&quot;'))"/>
+  </xsl:function>
+
   <xsl:function name="fp:yaml-string" as="xs:string">
     <xsl:param name="text" as="xs:string?"/>
     <xsl:sequence select="fp:cpp-string($text)"/>

@@ -37,8 +37,8 @@
         concat('  &lt;machine name=&quot;', fp:xml-text($host/@machine), '&quot; address=&quot;', fp:xml-text($host/@address), '&quot;/&gt;'),
         for $i in $package/r:instance[@host eq $host/@name] return (
           '',
-          concat('  &lt;node pkg=&quot;', $package/@name, '&quot; type=&quot;', $i/@executable, '&quot; name=&quot;', $i/@name,
-               '&quot; machine=&quot;', fp:xml-text($host/@machine), '&quot; output=&quot;screen&quot;&gt;'),
+          concat('  &lt;node pkg=&quot;', $package/@name, '&quot; type=&quot;', $i/@executable, '&quot; ', fp:node-name-attributes($i, 'ns'),
+               ' machine=&quot;', fp:xml-text($host/@machine), '&quot; output=&quot;screen&quot;&gt;'),
           concat('    &lt;rosparam command=&quot;load&quot; file=&quot;$(find ', $package/@name, ')/config/', $i/@name, '.yaml&quot;/&gt;'),
           concat('    &lt;rosparam command=&quot;load&quot; file=&quot;$(find ', $package/@name, ')/config/', $i/@name, '.user.yaml&quot;/&gt;'),
           $i/r:remap ! (concat('    &lt;remap from=&quot;', @from, '&quot; to=&quot;', @to, '&quot;/&gt;')),

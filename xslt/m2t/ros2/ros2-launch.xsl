@@ -33,7 +33,7 @@
         '--&gt;',
         '&lt;launch&gt;',
         for $i in $package/r:instance[@host eq $host/@name] return (
-          concat('  &lt;node pkg=&quot;', $package/@name, '&quot; exec=&quot;', $i/@executable, '&quot; name=&quot;', $i/@name, '&quot; output=&quot;screen&quot;&gt;'),
+          concat('  &lt;node pkg=&quot;', $package/@name, '&quot; exec=&quot;', $i/@executable, '&quot; ', fp:node-name-attributes($i, 'namespace'), ' output=&quot;screen&quot;&gt;'),
           concat('    &lt;param from=&quot;$(find-pkg-share ', $package/@name, ')/config/params.yaml&quot;/&gt;'),
           concat('    &lt;param from=&quot;$(find-pkg-share ', $package/@name, ')/config/params.user.yaml&quot;/&gt;'),
           $i/r:remap ! (concat('    &lt;remap from=&quot;', @from, '&quot; to=&quot;', @to, '&quot;/&gt;')),
@@ -59,7 +59,8 @@
     <xsl:sequence select="fp:lines((
         fp:banner('# ', $fp:launch-xsl, concat('model ''', $package/@model-name, ''''), false()),
         for $i in $package/r:instance return (
-          concat($i/@name, ':'),
+          (: a node in a namespace: its fully qualified name :)
+          concat(if ($i/@namespace) then concat('/', $i/@namespace, '/', $i/@node-name) else $i/@name, ':'),
           '  ros__parameters:',
           $i/r:parameter-value ! (concat('    ', @name, ': ', @yaml)))))"/>
   </xsl:function>
