@@ -13,6 +13,7 @@ regenerates both applications in a batch run, and nothing else.
 
 from __future__ import annotations
 
+import itertools
 import shutil
 from pathlib import Path
 
@@ -167,3 +168,33 @@ def test_a_changed_library_regenerates_both_applications_and_nothing_else(tmp_pa
         "lib/atf/ArmTrajectoryFollower.uml": "library"}
     for app in APPS:
         assert "impedance" in (out / app / "model.xmi" / "config" / "atf_csIter.yaml").read_text()
+
+
+# (application, instance, property, value): a part's slot three levels up (calligraphy's gain), a
+# composite's own default for a property it promotes (learning's gain), a slot on a part typed by a
+# composite reaching the property it promotes (learning's controlMode), a slot on a plain part
+VALUES = [("calligraphy", "atf_driver_jointCtrl", "gain", "20.0"),
+          ("calligraphy", "planner", "characterFile", "hiragana.xml"),
+          ("calligraphy", "atf_csIter", "controlMode", "position"),
+          ("learning", "atf_driver_jointCtrl", "gain", "12.5"),
+          ("learning", "atf_csIter", "controlMode", "impedance")]
+
+
+@pytest.mark.parametrize(("app", "instance", "prop", "value"), VALUES)
+def test_values_set_above_reach_every_target(app: str, instance: str, prop: str, value: str, runs) -> None:
+    orocos = {f.get("path"): f.text or "" for f in etree.fromstring(runs[(app, "orocos")].stages["text"].encode())}
+    xml = etree.fromstring(orocos[f"deploy/{app}.xml"].encode("utf-8"))
+    component = xml.find(f"struct[@name='{instance}']")
+    assert component.find(f"struct[@name='Properties']/simple[@name='{prop}']/value").text == value
+    literal = f'"{value}"' if not value[0].isdigit() else value
+    assert f"{instance}.{prop} = {literal}" in orocos[f"deploy/{app}.ops"]
+    ros1 = {f.get("path"): f.text or "" for f in etree.fromstring(runs[(app, "ros1")].stages["text"].encode())}
+    assert f"{prop}: {literal}" in ros1[f"config/{instance}.yaml"]
+    ros2 = {f.get("path"): f.text or "" for f in etree.fromstring(runs[(app, "ros2")].stages["text"].encode())}
+    # a node in a namespace is keyed by its full name in the ROS 2 parameter file
+    path = next(i.get("path") or i.get("name") for i in etree.fromstring(runs[(app, "ros2")].stages["bind"].encode())
+                .iter(f"{PIM}instance") if i.get("name") == instance)
+    key = ("/" + path.replace(".", "/") if "." in path else path) + ":"
+    lines = ros2["config/params.yaml"].splitlines()
+    block = list(itertools.takewhile(lambda line: line.startswith(" "), lines[lines.index(key) + 1:]))
+    assert f"    {prop}: {literal}" in block

@@ -232,7 +232,9 @@ def test_ros1_launch_files_load_with_roslaunch(case: Path, catkin_ws: Path) -> N
     assert len(launches) >= 2
     env = _ros_env(ROS_PACKAGE_PATH=str(catkin_ws / "src") + ":/usr/share",
                    CMAKE_PREFIX_PATH=str(catkin_ws / "devel") + ":/usr")
-    expected = sorted("/" + i.get("name") for i in etree.fromstring(
+    # a node inside a composite part runs in the namespace of its path
+    expected = sorted("/" + "".join(i.get("namespace", "") + "/" if i.get("namespace") else "")
+                      + i.get("node-name", i.get("name")) for i in etree.fromstring(
         _run(case, "ros1").stages["psm"].encode()).iter("{urn:robomda:psm-ros:1}instance"))
     for launch in launches:
         script = ("import sys, roslaunch.config, roslaunch.xmlloader\n"

@@ -296,6 +296,7 @@
       <pim:part id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
         <xsl:sequence select="fp:typed(., $href-types)"/>
         <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
+        <xsl:sequence select="fp:part-values(.)"/>
       </pim:part>
     </xsl:for-each>
     <xsl:apply-templates select="ownedOperation" mode="mp:feature"/>
@@ -306,6 +307,21 @@
       <xsl:with-param name="owner" select="."/>
     </xsl:apply-templates>
   </xsl:template>
+
+  <!-- the values a part sets on the properties of its type (UML's way: the
+       part's defaultValue is an InstanceValue whose InstanceSpecification
+       has a Slot per property, definingFeature = the property, value = a
+       literal): a pim:value per slot whose property is known -->
+  <xsl:function name="fp:part-values" as="element(pim:value)*">
+    <xsl:param name="part" as="element()"/>
+    <xsl:for-each select="$part/defaultValue[fp:meta(.) eq 'InstanceValue'] ! fp:targets(., 'instance')
+                          /slot[exists(fp:targets(., 'definingFeature'))]">
+      <xsl:variable name="value" as="xs:string?" select="fp:value(value[1])"/>
+      <pim:value id="{fp:id(.)}" attribute="{fp:id(fp:targets(., 'definingFeature')[1])}">
+        <xsl:if test="exists($value)"><xsl:attribute name="value" select="$value"/></xsl:if>
+      </pim:value>
+    </xsl:for-each>
+  </xsl:function>
 
   <!-- connectors that are not an ownedConnector of a class, component or
        interface, by the classifier they belong to (fp:connector-owner) -->

@@ -107,6 +107,9 @@
             delegates to nothing
     BND015  a delegation joins ports that do not carry the same data in the
             same direction
+    BND016  a property of a composite promotes the property of no part
+    BND017  a property of a composite names the properties of several parts
+    BND018  a part sets a value on a property its type does not have
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -245,6 +248,7 @@
       <xsl:for-each select="$model//pim:realization/@classifier, $model//pim:part/@type,
                             $model//pim:generalization/@general,
                             $model//pim:connector/pim:end/(@role | @part),
+                            $model//pim:part/pim:value/@attribute,
                             $model//pim:manifestation/@element,
                             $model//pim:communication-path/pim:end/@node,
                             $model//(pim:provides | pim:requires)/@interface,
@@ -300,7 +304,8 @@
     <xsl:sequence select="f:fail-all($components[exists(key('fp:instance-by-component', @id, $instance-tree))]
                           ! (let $c := ., $r := fp:realizing-class(.) return $c/pim:port ! fp:port-problems(., $c, $r)))"/>
     <xsl:if test="exists($tops)">
-      <xsl:sequence select="f:fail-all(fp:delegation-problems(($tops, key('fp:id', $expansion/fp:composite/@component, $root))))"/>
+      <xsl:variable name="composites" as="element(pim:component)*" select="$tops | key('fp:id', $expansion/fp:composite/@component, $root)"/>
+      <xsl:sequence select="f:fail-all((fp:delegation-problems($composites), fp:promotion-problems($composites)))"/>
     </xsl:if>
     <xsl:variable name="bound-tree" as="document-node()" select="fp:bound-tree($components, $instance-tree)"/>
     <xsl:sequence select="f:fail-all($bound-tree/fp:error ! f:error-map(@description))"/>

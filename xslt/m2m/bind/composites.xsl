@@ -260,4 +260,93 @@
     <xsl:param name="signature" as="xs:string"/>
     <xsl:sequence select="if ($signature eq '') then 'no data' else $signature"/>
   </xsl:function>
+
+  <!-- ============================================ promoted properties -->
+  <!-- the properties a part's type offers by name: a composite's own
+       attributes (its promoted properties), else the attributes of the
+       component's realizing class (else of the component) -->
+  <xsl:function name="fp:property-owner" as="element()">
+    <xsl:param name="component" as="element(pim:component)"/>
+    <xsl:sequence select="if (fp:is-composite($component)) then $component
+                          else (fp:realizing-class($component), $component)[1]"/>
+  </xsl:function>
+
+  <!-- the parts of composite $composite whose type offers a property named
+       like $attribute (one of $composite's): exactly one is the part whose
+       property it promotes -->
+  <xsl:function name="fp:promoting-parts" as="element(pim:part)*">
+    <xsl:param name="attribute" as="element(pim:attribute)"/>
+    <xsl:param name="composite" as="element(pim:component)"/>
+    <xsl:sequence select="$composite/pim:part[exists(fp:part-component(.))]
+                          [fp:property-owner(fp:part-component(.))/pim:attribute/@name = $attribute/@name]"/>
+  </xsl:function>
+
+  <!-- BND016 / BND017 for a property of a composite that promotes the
+       property of no part or of several; BND018 for a value a part sets on
+       a property its type does not have -->
+  <xsl:function name="fp:promotion-problems" as="map(*)*">
+    <xsl:param name="composites" as="element(pim:component)*"/>
+    <xsl:variable name="root" as="document-node()?" select="root($composites[1])"/>
+    <xsl:for-each select="$composites/pim:attribute">
+      <xsl:variable name="parts" as="element(pim:part)*" select="fp:promoting-parts(., ..)"/>
+      <xsl:if test="count($parts) ne 1">
+        <xsl:sequence select="map { 'code': if (empty($parts)) then 'BND016' else 'BND017', 'id': string(@id),
+            'message': 'property ''' || @name || ''' of composite ''' || ../@name || ''' promotes '
+            || (if (empty($parts)) then 'no property of its parts: a composite runs no code of its own, its properties are those of its parts; name it like the property it promotes'
+                else 'property ''' || @name || ''' of ' || count($parts) || ' parts (' || string-join($parts/@name, ', ')
+                     || '): a promoted property is the property of exactly one part; rename one') }"/>
+      </xsl:if>
+    </xsl:for-each>
+    <xsl:for-each select="$composites/pim:part[exists(fp:part-component(.))]/pim:value">
+      <xsl:variable name="type" as="element(pim:component)" select="fp:part-component(..)"/>
+      <xsl:if test="not(@attribute = fp:property-owner($type)/pim:attribute/@id)">
+        <xsl:variable name="attribute" as="element()?" select="key('fp:id', @attribute, $root)"/>
+        <xsl:sequence select="map { 'code': 'BND018', 'id': string(@id), 'message': 'part ''' || ../@name
+            || ''' sets ''' || ($attribute/@name, @attribute)[1] || ''', which is no property of its type '''
+            || $type/@name || '''' || (if (fp:is-composite($type)) then ' (a composite: a property it promotes)' else '') }"/>
+      </xsl:if>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- the values that parts and composites set on the properties of the
+       instance of $part ($around: the ids of the top composite, then of
+       each enclosing composite part and its type, outermost first; $owner:
+       the element whose attributes are the instance's properties): for
+       each property, the outermost value wins -->
+  <xsl:function name="fp:property-values" as="element(pim:property-value)*">
+    <xsl:param name="part" as="element(pim:part)?"/>
+    <xsl:param name="around" as="xs:string*"/>
+    <xsl:param name="owner" as="element()"/>
+    <xsl:variable name="root" as="document-node()" select="root($owner)"/>
+    <xsl:variable name="parts" as="element(pim:part)*"
+        select="($around[position() mod 2 eq 0] ! key('fp:id', ., $root), $part)"/>
+    <xsl:variable name="composites" as="element(pim:component)*"
+        select="$around[position() mod 2 eq 1] ! key('fp:id', ., $root)"/>
+    <xsl:for-each select="if (exists($part)) then $owner/pim:attribute else ()">
+      <xsl:variable name="holder" as="element()?" select="fp:outermost-value(., count($parts), $parts, $composites, ())"/>
+      <xsl:if test="exists($holder)">
+        <pim:property-value attribute="{@id}" name="{@name}" value="{($holder/@value, $holder/@default)[1]}"
+            source="{if ($holder/self::pim:value) then 'part' else 'composite'}" holder="{$holder/@id}"/>
+      </xsl:if>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- walk up from part $level of $parts: the value its part sets on
+       $property, then the default of the property of the enclosing
+       composite that promotes it, and so on up; the last found wins -->
+  <xsl:function name="fp:outermost-value" as="element()?">
+    <xsl:param name="property" as="element(pim:attribute)"/>
+    <xsl:param name="level" as="xs:integer"/>
+    <xsl:param name="parts" as="element(pim:part)*"/>
+    <xsl:param name="composites" as="element(pim:component)*"/>
+    <xsl:param name="found" as="element()?"/>
+    <xsl:variable name="set" as="element(pim:value)?" select="$parts[$level]/pim:value[@attribute eq $property/@id][@value][1]"/>
+    <xsl:variable name="promoted" as="element(pim:attribute)?"
+        select="$composites[$level]/pim:attribute[@name eq $property/@name]
+                [fp:promoting-parts(., $composites[$level])[1] is $parts[$level]][1]"/>
+    <xsl:variable name="here" as="element()?" select="($promoted[@default], $set, $found)[1]"/>
+    <xsl:sequence select="if ($level gt 1 and exists($promoted))
+                          then fp:outermost-value($promoted, $level - 1, $parts, $composites, $here)
+                          else $here"/>
+  </xsl:function>
 </xsl:stylesheet>

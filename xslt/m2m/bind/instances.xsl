@@ -96,6 +96,8 @@
       <xsl:if test="$realization-item"><xsl:attribute name="realization" select="$realization-item/@id"/></xsl:if>
       <!-- only the elements with an Activity stereotype can give a tag -->
       <xsl:sequence select="fp:activity(($part, $component, $realization-item)[exists(f:stereotype(., 'Activity'))], $realization-item, $ee, $inst-id)"/>
+      <!-- values set by the enclosing parts and composites (seed 003) -->
+      <xsl:sequence select="fp:property-values($part, $around, ($realization-item, $component)[1])"/>
       <!-- every deployment that reaches the instance, so the deployment
            rules (schemas/pim/1/pim.sch) can see one deployed twice -->
       <xsl:for-each select="$deployments">

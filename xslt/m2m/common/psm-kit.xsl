@@ -30,6 +30,7 @@
     fp:accessor($data-port)      get<Datum> (out) / set<Datum> (in)
     fp:accessor-declared($data-port)  the realizing class has that accessor
     fp:offered-operations($bc, $excluded)  protected, not static, not excluded
+    fp:warn-unused-values($instance, $exposed, $code)  values set on properties the target does not expose
     fp:configurable-attributes($bc)  the attributes stereotyped Configurable
     fp:convention-attributes($bc)    without any: the convention's choice
     fp:parse-default($value, $kind, $primitive, $id, $code)  see below
@@ -171,6 +172,22 @@
     <xsl:param name="excluded" as="xs:string*"/>
     <xsl:sequence select="fp:owner($bc)/pim:operation[@visibility eq 'protected'][not(@static = ('true', '1'))]
                                                      [not(@name = $excluded)]"/>
+  </xsl:function>
+
+  <!-- a warning $code for each value the model sets on a property of
+       $instance beyond its default (pim:property-value: a part's slot or a
+       composite's promoted property, seed 003) that the target does not
+       use: $exposed, the ids of the attributes it makes properties or
+       parameters, does not hold it -->
+  <xsl:function name="fp:warn-unused-values" as="empty-sequence()">
+    <xsl:param name="instance" as="element(pim:instance)"/>
+    <xsl:param name="exposed" as="xs:string*"/>
+    <xsl:param name="code" as="xs:string"/>
+    <xsl:for-each select="$instance/pim:property-value[not(@attribute = $exposed)]">
+      <xsl:sequence select="f:warn($code, string(@holder), 'the value ''' || @value || ''' the model sets on '''
+          || @name || ''' of instance ''' || $instance/@name || ''' is not used: that attribute is no property of the'
+          || ' component (mark it Configurable, or, without any Configurable, make it public or protected)')"/>
+    </xsl:for-each>
   </xsl:function>
 
   <xsl:function name="fp:configurable-attributes" as="element(pim:attribute)*">

@@ -399,8 +399,17 @@
           <o:port-connection port="{.}" connection="{$connection/@name}"/>
         </xsl:for-each>
       </xsl:for-each>
-      <xsl:for-each select="$task-context/o:property[@xml-default]">
-        <o:property-value name="{@name}" xml-type="{@xml-type}" value="{@xml-default}" script-value="{@script-default}"/>
+      <!-- the model's value: one set by the enclosing parts and composites
+           (seed 003), else the default -->
+      <xsl:sequence select="fp:warn-unused-values($instance, $task-context/o:property/@xmi-id, 'ORO008')"/>
+      <xsl:for-each select="$task-context/o:property">
+        <xsl:variable name="set" as="element(pim:property-value)?" select="$instance/pim:property-value[@attribute eq current()/@xmi-id]"/>
+        <xsl:variable name="values" as="xs:string*"
+            select="if ($set) then fp:oro-values($set/@value, fp:oro-required-type(key('fp:id', @xmi-id, root($instance)), @xmi-id, 'property ''' || @name || ''''), $set/@holder)
+                    else (@xml-default, @script-default)"/>
+        <xsl:if test="exists($values)">
+          <o:property-value name="{@name}" xml-type="{@xml-type}" value="{$values[1]}" script-value="{$values[2]}"/>
+        </xsl:if>
       </xsl:for-each>
       <xsl:for-each select="$instance/pim:start-after[@instance ! map:contains($targets, string(.))]">
         <o:start-after instance="{@instance}" xmi-id="{@xmi-id}"/>

@@ -471,8 +471,14 @@
         </xsl:for-each>
       </xsl:for-each>
       <r:parameter-value name="update_period" yaml="{fp:decimal($activity/@period)}"/>
+      <!-- the model's value: one set by the enclosing parts and composites
+           (seed 003), else the default -->
+      <xsl:sequence select="fp:warn-unused-values($instance, $node/r:parameter/@xmi-id, 'ROS104')"/>
       <xsl:for-each select="$node/r:parameter">
-        <r:parameter-value name="{@name}" yaml="{@yaml-default}"/>
+        <xsl:variable name="set" as="element(pim:property-value)?" select="$instance/pim:property-value[@attribute eq current()/@xmi-id]"/>
+        <r:parameter-value name="{@name}"
+            yaml="{if ($set) then fp:values($set/@value, fp:required-type(key('fp:id', @xmi-id, root($instance)), @xmi-id, 'parameter ''' || @name || ''''), $set/@holder)[2]
+                   else @yaml-default}"/>
       </xsl:for-each>
     </r:instance>
   </xsl:function>
