@@ -147,11 +147,7 @@ def test_every_instance_and_connection_reaches_the_ros_launch(app: str, target: 
 
 
 def test_a_changed_library_regenerates_both_applications_and_nothing_else(tmp_path: Path) -> None:
-    apps = tmp_path / "apps"
-    shutil.copytree(ROOT / "fixtures" / "libraries" / "atf", apps / "lib" / "atf")
-    for app in APPS:
-        shutil.copytree(CASES / app, apps / app, symlinks=True, ignore=shutil.ignore_patterns("expected", "atf"))
-        (apps / app / "atf").symlink_to(Path("..") / "lib" / "atf")
+    apps = _apps_copy(tmp_path)
     shutil.copytree(CASES / "pid", apps / "pid", ignore=shutil.ignore_patterns("expected"))
     out = tmp_path / "out"
     first = run_batch(apps, out, "ros1", jobs=1)
@@ -198,3 +194,28 @@ def test_values_set_above_reach_every_target(app: str, instance: str, prop: str,
     lines = ros2["config/params.yaml"].splitlines()
     block = list(itertools.takewhile(lambda line: line.startswith(" "), lines[lines.index(key) + 1:]))
     assert f"    {prop}: {literal}" in block
+
+
+def _apps_copy(tmp_path: Path) -> Path:
+    """The two applications and their library, copied into TMP/apps (each app's atf/ a link to lib/atf)."""
+    apps = tmp_path / "apps"
+    shutil.copytree(ROOT / "fixtures" / "libraries" / "atf", apps / "lib" / "atf")
+    for app in APPS:
+        shutil.copytree(CASES / app, apps / app, ignore=shutil.ignore_patterns("expected", "atf"))
+        (apps / app / "atf").symlink_to(Path("..") / "lib" / "atf")
+    return apps
+
+
+@pytest.mark.parametrize(("target", "code"), [("orocos", "ORO008"), ("ros1", "ROS104"), ("ros2", "ROS104")])
+def test_a_value_on_an_attribute_the_target_does_not_expose_is_named(tmp_path: Path, target: str, code: str) -> None:
+    apps = _apps_copy(tmp_path)
+    model = apps / "calligraphy" / "model.xmi"
+    text = model.read_text(encoding="utf-8")
+    # the planner's characterFile, which the application sets, made private: no property any more
+    old = 'xmi:id="_calPlV1" name="characterFile" visibility="protected"'
+    assert old in text
+    model.write_text(text.replace(old, old.replace("protected", "private")), encoding="utf-8")
+    done = generate(model, tmp_path / "out", target, write=False)
+    found = [d for d in done.warnings if d.code == code]
+    assert len(found) == 1 and "'hiragana.xml'" in found[0].message and "'planner'" in found[0].message
+    assert found[0].line is not None  # located on the slot
