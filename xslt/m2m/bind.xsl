@@ -303,10 +303,7 @@
     <!-- every port problem of every instantiated component at once -->
     <xsl:sequence select="f:fail-all($components[exists(key('fp:instance-by-component', @id, $instance-tree))]
                           ! (let $c := ., $r := fp:realizing-class(.) return $c/pim:port ! fp:port-problems(., $c, $r)))"/>
-    <xsl:if test="exists($tops)">
-      <xsl:variable name="composites" as="element(pim:component)*" select="$tops | key('fp:id', $expansion/fp:composite/@component, $root)"/>
-      <xsl:sequence select="f:fail-all((fp:delegation-problems($composites), fp:promotion-problems($composites)))"/>
-    </xsl:if>
+    <xsl:sequence select="f:fail-all(fp:composite-problems($tops | key('fp:id', $expansion/fp:composite/@component, $root)))"/>
     <xsl:variable name="bound-tree" as="document-node()" select="fp:bound-tree($components, $instance-tree)"/>
     <xsl:sequence select="f:fail-all($bound-tree/fp:error ! f:error-map(@description))"/>
     <xsl:variable name="bound" as="element(pim:bound-component)*" select="$bound-tree/pim:bound-component"/>

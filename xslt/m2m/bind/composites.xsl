@@ -11,7 +11,7 @@
   Params:  none.  Keys: those of bind.xsl.
   Provides: fp:is-composite, fp:is-delegation, fp:is-assembly, fp:expansion,
            fp:end-targets, fp:connector-uses, fp:composition-cycles,
-           fp:delegation-problems.
+           fp:delegation-problems, fp:promotion-problems, fp:property-values.
 
   The expansion: a depth-first walk of the parts of the top composites. A
   part typed by a composite (a component with parts typed by components)
@@ -37,9 +37,20 @@
   composite stands for the ports its delegations from q reach, through
   any depth of composites (fp:end-targets).
 
+  Promoted properties: a property (attribute) of a composite promotes the
+  property of the same name of exactly one of its parts (at any depth: a
+  composite part's own properties are the ones it promotes). A part sets
+  values on the properties of its type with UML's construct: its default
+  value is an InstanceValue whose InstanceSpecification has a Slot per
+  property (pim:part/pim:value). Per instance, the outermost value wins
+  (fp:property-values): the part's slot, then the default of the composite
+  property that promotes it, then the slot of the enclosing part, and so on.
+
   Errors (codes of bind.xsl): BND013 composition cycle; BND014 a connector
   reaches a promoted port that is delegated to no inner port; BND015 a
-  delegation joins ports of another direction or data type.
+  delegation joins ports of another direction or data type; BND016 /
+  BND017 a composite property that promotes the property of no part / of
+  several; BND018 a slot on a property the part's type does not have.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -230,6 +241,13 @@
     <xsl:param name="id" as="xs:string"/>
     <xsl:param name="readable" as="xs:boolean"/>
     <xsl:sequence select="string(($data/self::pim:port/@primitive, if ($readable) then $data/@name else (), $id)[1])"/>
+  </xsl:function>
+
+  <!-- every delegation and promotion problem of the composites in use -->
+  <xsl:function name="fp:composite-problems" as="map(*)*">
+    <xsl:param name="composites" as="element(pim:component)*"/>
+    <xsl:sequence select="if (empty($composites)) then ()
+                          else (fp:delegation-problems($composites), fp:promotion-problems($composites))"/>
   </xsl:function>
 
   <!-- BND015 for each delegation of $composites that joins ports that do

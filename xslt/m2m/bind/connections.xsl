@@ -92,26 +92,7 @@
     <xsl:param name="uses" as="element(fp:use)*"/>
     <xsl:param name="work" as="document-node()"/>
     <xsl:variable name="root" as="document-node()" select="root($model)"/>
-    <xsl:variable name="resolved" as="element()*">
-      <xsl:for-each select="$uses">
-        <xsl:variable name="use" as="element(fp:use)" select="."/>
-        <xsl:variable name="connection" as="element(pim:connector)" select="key('fp:id', @connector, $root)"/>
-        <xsl:variable name="targets" as="element()*"
-            select="$connection/pim:end[@part] ! fp:end-targets(., tokenize($use/@path, '\.'))"/>
-        <xsl:sequence select="$targets/self::fp:unresolved"/>
-        <xsl:variable name="ips" as="element(fp:ip)*"
-            select="$targets/self::fp:target ! key('fp:ip-by-end', @instance || '|' || @port, $work)"/>
-        <xsl:for-each select="$ips[@direction eq 'out']">
-          <xsl:variable name="wr" as="element(fp:ip)" select="."/>
-          <xsl:for-each select="$ips[@direction eq 'in'][@instance ne $wr/@instance or @port ne $wr/@port]
-                                    [@interface eq $wr/@interface or @type-key eq $wr/@type-key]">
-            <fp:pair connector="{$connection/@id}" prefix="{translate($use/@path, '.', '_')}" interface="{$wr/@interface}"
-                     w-instance="{$wr/@instance}" w-port="{$wr/@port}" w-dp="{$wr/@data-port}"
-                     r-instance="{@instance}" r-port="{@port}" r-dp="{@data-port}"/>
-          </xsl:for-each>
-        </xsl:for-each>
-      </xsl:for-each>
-    </xsl:variable>
+    <xsl:variable name="resolved" as="element()*" select="fp:connector-pairs($root, $uses, $work)"/>
     <xsl:variable name="pairs" as="element(fp:pair)*" select="$resolved/self::fp:pair"/>
     <!-- every promoted port delegated to nothing, every connector that
          joins nothing and every input fed twice, at once -->
@@ -151,5 +132,32 @@
         </xsl:for-each-group>
       </pim:connection>
     </xsl:for-each-group>
+  </xsl:function>
+
+  <!-- the writer -> reader pairs (fp:pair) of each use of an assembly
+       connector, and an fp:unresolved for each end on a promoted port that
+       is delegated to nothing -->
+  <xsl:function name="fp:connector-pairs" as="element()*">
+    <xsl:param name="root" as="document-node()"/>
+    <xsl:param name="uses" as="element(fp:use)*"/>
+    <xsl:param name="work" as="document-node()"/>
+    <xsl:for-each select="$uses">
+      <xsl:variable name="use" as="element(fp:use)" select="."/>
+      <xsl:variable name="connection" as="element(pim:connector)" select="key('fp:id', @connector, $root)"/>
+      <xsl:variable name="targets" as="element()*"
+          select="$connection/pim:end[@part] ! fp:end-targets(., tokenize($use/@path, '\.'))"/>
+      <xsl:sequence select="$targets/self::fp:unresolved"/>
+      <xsl:variable name="ips" as="element(fp:ip)*"
+          select="$targets/self::fp:target ! key('fp:ip-by-end', @instance || '|' || @port, $work)"/>
+      <xsl:for-each select="$ips[@direction eq 'out']">
+        <xsl:variable name="wr" as="element(fp:ip)" select="."/>
+        <xsl:for-each select="$ips[@direction eq 'in'][@instance ne $wr/@instance or @port ne $wr/@port]
+                                  [@interface eq $wr/@interface or @type-key eq $wr/@type-key]">
+          <fp:pair connector="{$connection/@id}" prefix="{translate($use/@path, '.', '_')}" interface="{$wr/@interface}"
+                   w-instance="{$wr/@instance}" w-port="{$wr/@port}" w-dp="{$wr/@data-port}"
+                   r-instance="{@instance}" r-port="{@port}" r-dp="{@data-port}"/>
+        </xsl:for-each>
+      </xsl:for-each>
+    </xsl:for-each>
   </xsl:function>
 </xsl:stylesheet>
