@@ -20,8 +20,9 @@ from pathlib import Path
 import pytest
 from lxml import etree
 
-from robomda.api import generate, targets
+from robomda.api import generate, import_model, targets
 from robomda.batch import run_batch
+from robomda.diagnostics import RobomdaError
 
 ROOT = Path(__file__).resolve().parent.parent
 CASES = ROOT / "fixtures" / "cases"
@@ -219,3 +220,53 @@ def test_a_value_on_an_attribute_the_target_does_not_expose_is_named(tmp_path: P
     found = [d for d in done.warnings if d.code == code]
     assert len(found) == 1 and "'hiragana.xml'" in found[0].message and "'planner'" in found[0].message
     assert found[0].line is not None  # located on the slot
+
+
+def _edit(path: Path, old: str, new: str) -> None:
+    text = path.read_text(encoding="utf-8")
+    assert old in text, old
+    path.write_text(text.replace(old, new, 1), encoding="utf-8")
+
+
+def test_an_operation_call_is_bound_through_a_promoted_port_and_refused_by_the_targets(tmp_path: Path) -> None:
+    """The cartesian iterator provides ICompliance (fixtures/broken/operation-calls-not-generated),
+    the follower promotes it through a delegation, the planner calls it: bind binds the call to the
+    iterator; the targets, which do not generate calls yet, say so with a located error."""
+    case = tmp_path / "calligraphy"
+    shutil.copytree(ROOT / "fixtures" / "broken" / "operation-calls-not-generated", case)
+    library = case / "atf" / "ArmTrajectoryFollower.uml"
+    _edit(library, '<ownedAttribute xmi:type="uml:Port" xmi:id="_atfAtfP1"',
+          '<ownedAttribute xmi:type="uml:Port" xmi:id="_atfAtfPc" name="compliance" visibility="public" '
+          'aggregation="composite" type="_atfIC"/>\n        <ownedAttribute xmi:type="uml:Port" xmi:id="_atfAtfP1"')
+    _edit(library, '<ownedConnector xmi:type="uml:Connector" xmi:id="_atfAtfD6"',
+          '<ownedConnector xmi:type="uml:Connector" xmi:id="_atfAtfDc" name="complianceIn" kind="delegation">\n'
+          '          <end xmi:type="uml:ConnectorEnd" xmi:id="_atfAtfDce1" role="_atfAtfPc"/>\n'
+          '          <end xmi:type="uml:ConnectorEnd" xmi:id="_atfAtfDce2" role="_atfCsPc" partWithPort="_atfAtfA3"/>\n'
+          '        </ownedConnector>\n        <ownedConnector xmi:type="uml:Connector" xmi:id="_atfAtfD6"')
+    model = case / "model.xmi"
+    _edit(model, '<ownedAttribute xmi:type="uml:Port" xmi:id="_calPlP1"',
+          '<ownedAttribute xmi:type="uml:Port" xmi:id="_calPlPc" name="compliance" visibility="public" '
+          'aggregation="composite">\n          <type xmi:type="uml:Interface" href="atf/ArmTrajectoryFollower.uml#_atfIC"/>\n'
+          '        </ownedAttribute>\n        <ownedAttribute xmi:type="uml:Port" xmi:id="_calPlP1"')
+    _edit(model, '<ownedConnector xmi:type="uml:Connector" xmi:id="_calSysC5"',
+          '<ownedConnector xmi:type="uml:Connector" xmi:id="_calSysCc" name="compliant">\n'
+          '          <end xmi:type="uml:ConnectorEnd" xmi:id="_calSysCce1" role="_calPlPc" partWithPort="_calSysA1"/>\n'
+          '          <end xmi:type="uml:ConnectorEnd" xmi:id="_calSysCce2" partWithPort="_calSysA3">\n'
+          '            <role xmi:type="uml:Port" href="atf/ArmTrajectoryFollower.uml#_atfAtfPc"/>\n'
+          '          </end>\n        </ownedConnector>\n        <ownedConnector xmi:type="uml:Connector" xmi:id="_calSysC5"')
+    # the planner requires the interface (a Usage), the iterator provides it
+    _edit(model, '<packagedElement xmi:type="uml:Component" xmi:id="_calPl" name="CalligraphyPlanner">',
+          '<packagedElement xmi:type="uml:Usage" xmi:id="_calPlU" client="_calPl">\n'
+          '        <supplier xmi:type="uml:Interface" href="atf/ArmTrajectoryFollower.uml#_atfIC"/>\n'
+          '      </packagedElement>\n'
+          '      <packagedElement xmi:type="uml:Component" xmi:id="_calPl" name="CalligraphyPlanner">')
+    pim = etree.fromstring(import_model(model).encode("utf-8"))
+    call = pim.find(f"{PIM}binding/{PIM}call")
+    assert call is not None and call.get("name") == "compliant"
+    assert call.find(f"{PIM}caller").get("instance") == "planner"
+    assert call.find(f"{PIM}provider").get("instance") == "atf_csIter"
+    for target, code in (("orocos", "ORO009"), ("ros1", "ROS009"), ("ros2", "ROS009")):
+        with pytest.raises(RobomdaError) as failed:
+            generate(model, tmp_path / "out", target, write=False)
+        assert {d.code for d in failed.value.diagnostics} == {code}
+        assert all(d.line is not None for d in failed.value.diagnostics)

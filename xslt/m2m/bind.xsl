@@ -136,6 +136,7 @@
   <xsl:include href="bind/connections.xsl"/>
   <xsl:include href="bind/sequence.xsl"/>
   <xsl:include href="bind/composites.xsl"/>
+  <xsl:include href="bind/services.xsl"/>
 
   <xsl:output method="xml" indent="no" encoding="UTF-8"/>
 
@@ -307,13 +308,19 @@
     <xsl:variable name="bound-tree" as="document-node()" select="fp:bound-tree($components, $instance-tree)"/>
     <xsl:sequence select="f:fail-all($bound-tree/fp:error ! f:error-map(@description))"/>
     <xsl:variable name="bound" as="element(pim:bound-component)*" select="$bound-tree/pim:bound-component"/>
+    <xsl:sequence select="f:fail-all(fp:conformance-problems($root, $bound))"/>
     <!-- working tree: one fp:ip per instance data port -->
     <xsl:variable name="work" as="document-node()" select="fp:work($instances, $bound-tree)"/>
     <xsl:variable name="uses" as="element(fp:use)*" select="fp:connector-uses($tops, $expansion)"/>
+    <!-- the writer -> reader pairs and the calls each connector makes -->
+    <xsl:variable name="resolved" as="element()*" select="fp:connector-pairs($root, $uses, $work)"/>
     <xsl:variable name="raw-connections" as="element(pim:connection)*"
-        select="if (exists($uses)) then fp:connections-from-connectors(., $uses, $work)
+        select="if (exists($uses)) then fp:connections-from-connectors($root, $uses, $resolved)
                 else fp:connections-from-interfaces(., $work)"/>
     <xsl:variable name="names" as="xs:string*" select="f:unique-names($raw-connections/@name)"/>
+    <xsl:variable name="calls" as="element(pim:call)*"
+        select="if (exists($uses)) then fp:calls-from-pairs($root, $resolved/self::fp:call-pair)
+                else fp:calls-from-interfaces($root, $work)"/>
     <pim:binding instances-from="{if (exists($tops)) then 'parts' else 'components'}"
                  connections-from="{if (exists($uses)) then 'connectors' else 'interfaces'}">
       <xsl:sequence select="$hosts ! fp:host(., count($hosts))"/>
@@ -323,6 +330,13 @@
         <xsl:variable name="position" as="xs:integer" select="position()"/>
         <xsl:copy>
           <xsl:attribute name="name" select="$names[$position]"/>
+          <xsl:sequence select="@* except @name, node()"/>
+        </xsl:copy>
+      </xsl:for-each>
+      <xsl:for-each select="$calls">
+        <xsl:variable name="position" as="xs:integer" select="position()"/>
+        <xsl:copy>
+          <xsl:attribute name="name" select="f:unique-names($calls/@name)[$position]"/>
           <xsl:sequence select="@* except @name, node()"/>
         </xsl:copy>
       </xsl:for-each>
@@ -423,6 +437,11 @@
             <fp:ip instance="{$inst/@name}" port="{@port}" data-port="{@name}"
                    direction="{@direction}" interface="{@interface}"
                    type-key="{(@primitive, @type)[1]}"/>
+          </xsl:for-each>
+          <!-- a service port: out where provided, in where required -->
+          <xsl:for-each select="key('fp:bc', $inst/@component, $bound-tree)/pim:service-port">
+            <fp:ip instance="{$inst/@name}" port="{@port}" data-port="{@name}" kind="service"
+                   direction="{if (@role eq 'provided') then 'out' else 'in'}" interface="{@interface}"/>
           </xsl:for-each>
         </xsl:for-each>
       </fp:work>

@@ -88,11 +88,10 @@
        each assembly connector with the path of the composite it is drawn
        in (bind/composites.xsl); its ends resolve through delegations -->
   <xsl:function name="fp:connections-from-connectors" as="element(pim:connection)*">
-    <xsl:param name="model" as="element(pim:model)"/>
+    <xsl:param name="root" as="document-node()"/>
     <xsl:param name="uses" as="element(fp:use)*"/>
-    <xsl:param name="work" as="document-node()"/>
-    <xsl:variable name="root" as="document-node()" select="root($model)"/>
-    <xsl:variable name="resolved" as="element()*" select="fp:connector-pairs($root, $uses, $work)"/>
+    <!-- fp:connector-pairs of $uses -->
+    <xsl:param name="resolved" as="element()*"/>
     <xsl:variable name="pairs" as="element(fp:pair)*" select="$resolved/self::fp:pair"/>
     <!-- every promoted port delegated to nothing, every connector that
          joins nothing and every input fed twice, at once -->
@@ -101,7 +100,7 @@
         <xsl:sequence select="map { 'code': 'BND014', 'id': string(@connector), 'message': string(@message) }"/>
       </xsl:for-each-group>
       <xsl:for-each select="key('fp:id', distinct-values($uses/@connector), $root)
-                            [not(@id = ($pairs/@connector, $resolved/self::fp:unresolved/@connector))]">
+                            [not(@id = ($pairs/@connector, $resolved/(self::fp:unresolved | self::fp:call-pair)/@connector))]">
         <xsl:sequence select="map { 'code': 'BND007', 'id': string(@id), 'message': 'connector ''' || @name
             || ''' joins no output port to an input port of the same data type' }"/>
       </xsl:for-each>
@@ -149,9 +148,10 @@
       <xsl:sequence select="$targets/self::fp:unresolved"/>
       <xsl:variable name="ips" as="element(fp:ip)*"
           select="$targets/self::fp:target ! key('fp:ip-by-end', @instance || '|' || @port, $work)"/>
-      <xsl:for-each select="$ips[@direction eq 'out']">
+      <xsl:sequence select="fp:call-pairs($connection, translate($use/@path, '.', '_'), $ips)"/>
+      <xsl:for-each select="$ips[not(@kind)][@direction eq 'out']">
         <xsl:variable name="wr" as="element(fp:ip)" select="."/>
-        <xsl:for-each select="$ips[@direction eq 'in'][@instance ne $wr/@instance or @port ne $wr/@port]
+        <xsl:for-each select="$ips[not(@kind)][@direction eq 'in'][@instance ne $wr/@instance or @port ne $wr/@port]
                                   [@interface eq $wr/@interface or @type-key eq $wr/@type-key]">
           <fp:pair connector="{$connection/@id}" prefix="{translate($use/@path, '.', '_')}" interface="{$wr/@interface}"
                    w-instance="{$wr/@instance}" w-port="{$wr/@port}" w-dp="{$wr/@data-port}"

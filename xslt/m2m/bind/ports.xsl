@@ -46,6 +46,10 @@
       <xsl:for-each select="$component/pim:port">
         <xsl:sequence select="fp:data-ports(., $component, $realization-item)"/>
       </xsl:for-each>
+      <!-- operations provided and called (bind/services.xsl) -->
+      <xsl:for-each select="$component/pim:port">
+        <xsl:sequence select="fp:service-ports(., $component, $realization-item)"/>
+      </xsl:for-each>
     </pim:bound-component>
   </xsl:function>
 
@@ -98,7 +102,7 @@
       <xsl:variable name="instance" as="element()?" select="key('fp:id', $pairs[2 * current() - 1], $root)"/>
       <xsl:variable name="data" as="element(pim:attribute)*" select="$instance/pim:attribute"/>
       <xsl:choose>
-        <xsl:when test="fp:is-data-type($instance)"/>
+        <xsl:when test="fp:is-data-type($instance) or fp:is-service-interface($instance)"/>
         <xsl:when test="not($instance/self::pim:interface)">
           <xsl:sequence select="map { 'code': 'BND002', 'id': string($port/@id), 'message': 'port ''' || $port/@name
               || ''' refers to ''' || $pairs[2 * current() - 1] || ''', which is not an interface' }"/>
@@ -135,6 +139,7 @@
     <xsl:for-each select="1 to $name">
       <xsl:variable name="instance" as="element()?" select="key('fp:id', $pairs[2 * current() - 1], $root)"/>
       <xsl:choose>
+        <xsl:when test="fp:is-service-interface($instance)"/>
         <xsl:when test="fp:is-data-type($instance)">
           <!-- a port typed by a data type carries that data itself: the
                type stands for the interface, the port for the datum -->

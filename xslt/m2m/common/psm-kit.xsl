@@ -30,6 +30,7 @@
     fp:accessor($data-port)      get<Datum> (out) / set<Datum> (in)
     fp:accessor-declared($data-port)  the realizing class has that accessor
     fp:offered-operations($bc, $excluded)  protected, not static, not excluded
+    fp:refuse-services($components, $code)  an error per service port: calls not generated yet
     fp:warn-unused-values($instance, $exposed, $code)  values set on properties the target does not expose
     fp:configurable-attributes($bc)  the attributes stereotyped Configurable
     fp:convention-attributes($bc)    without any: the convention's choice
@@ -61,6 +62,20 @@
   </xsl:function>
 
   <!-- fails with $code when two of $components map to one C++ class -->
+  <!-- operation calls between components (service ports and pim:call,
+       seed 003) are bound but no target generates them yet: an error
+       ($code) per service port of $components, so that none is lost in
+       silence -->
+  <xsl:function name="fp:refuse-services" as="item()*">
+    <xsl:param name="components" as="element(pim:bound-component)*"/>
+    <xsl:param name="code" as="xs:string"/>
+    <xsl:sequence select="f:fail-all($components/pim:service-port ! map { 'code': $code, 'id': string(@port),
+        'message': 'component ''' || ../@name || ''' ' || (if (@role eq 'provided') then 'provides' else 'requires')
+        || ' the operations of interface '''
+        || @interface-name || ''' (port ''' || @port-name || '''): operation calls between components are'
+        || ' bound (robomda import writes them in the bound model) but not generated yet; exchange the data through data ports' })"/>
+  </xsl:function>
+
   <xsl:function name="fp:check-class-names" as="empty-sequence()">
     <xsl:param name="components" as="element(pim:bound-component)*"/>
     <xsl:param name="code" as="xs:string"/>

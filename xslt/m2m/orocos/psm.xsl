@@ -134,6 +134,7 @@
     <xsl:variable name="components" as="element(pim:bound-component)*"
         select="$binding/pim:bound-component[@component ! map:contains($target-components, string(.))]"/>
     <xsl:sequence select="fp:check-class-names($components, 'ORO004')"/>
+    <xsl:sequence select="fp:refuse-services($components, 'ORO009')"/>
     <!-- each task context is made once: listed here, and looked up (key
          fp:task-context) by the instances for their property values -->
     <xsl:variable name="task-contexts" as="document-node()">

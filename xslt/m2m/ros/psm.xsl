@@ -136,6 +136,7 @@
     <xsl:variable name="components" as="element(pim:bound-component)*"
         select="$binding/pim:bound-component[exists(key('fp:instance-of', @component))]"/>
     <xsl:sequence select="fp:check-class-names($components, 'ROS004')"/>
+    <xsl:sequence select="fp:refuse-services($components, 'ROS009')"/>
     <xsl:sequence select="fp:ros-check-targets(.)"/>
     <!-- fp:host-key of each host the instances name, made once per host -->
     <xsl:variable name="host-keys" as="map(xs:string, xs:string)"
