@@ -48,9 +48,10 @@
 
   Errors (codes of bind.xsl): BND013 composition cycle; BND014 a connector
   reaches a promoted port that is delegated to no inner port; BND015 a
-  delegation joins ports of another direction or data type; BND016 /
-  BND017 a composite property that promotes the property of no part / of
-  several; BND018 a slot on a property the part's type does not have.
+  delegation joins ports of another direction or data type; BND017 a
+  composite property that promotes the property of several parts; BND018 a
+  slot on a property the part's type does not have. Warning BND016: a
+  composite property that promotes none.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -299,21 +300,27 @@
                           [fp:property-owner(fp:part-component(.))/pim:attribute/@name = $attribute/@name]"/>
   </xsl:function>
 
-  <!-- BND016 / BND017 for a property of a composite that promotes the
-       property of no part or of several; BND018 for a value a part sets on
-       a property its type does not have -->
+  <!-- BND017 for a property of a composite that promotes the property of
+       several parts, BND018 for a value a part sets on a property its type
+       does not have; warning BND016 for a property that promotes none (it
+       has no effect: a composite runs no code) -->
   <xsl:function name="fp:promotion-problems" as="map(*)*">
     <xsl:param name="composites" as="element(pim:component)*"/>
     <xsl:variable name="root" as="document-node()?" select="root($composites[1])"/>
     <xsl:for-each select="$composites/pim:attribute">
       <xsl:variable name="parts" as="element(pim:part)*" select="fp:promoting-parts(., ..)"/>
-      <xsl:if test="count($parts) ne 1">
-        <xsl:sequence select="map { 'code': if (empty($parts)) then 'BND016' else 'BND017', 'id': string(@id),
-            'message': 'property ''' || @name || ''' of composite ''' || ../@name || ''' promotes '
-            || (if (empty($parts)) then 'no property of its parts: a composite runs no code of its own, its properties are those of its parts; name it like the property it promotes'
-                else 'property ''' || @name || ''' of ' || count($parts) || ' parts (' || string-join($parts/@name, ', ')
-                     || '): a promoted property is the property of exactly one part; rename one') }"/>
-      </xsl:if>
+      <xsl:choose>
+        <xsl:when test="empty($parts)">
+          <xsl:sequence select="f:warn('BND016', string(@id), 'property ''' || @name || ''' of composite ''' || ../@name
+              || ''' promotes no property of its parts, so it has no effect: a composite runs no code of its own;'
+              || ' name it like the property of the part it stands for')"/>
+        </xsl:when>
+        <xsl:when test="count($parts) gt 1">
+          <xsl:sequence select="map { 'code': 'BND017', 'id': string(@id), 'message': 'property ''' || @name
+              || ''' of composite ''' || ../@name || ''' promotes property ''' || @name || ''' of ' || count($parts)
+              || ' parts (' || string-join($parts/@name, ', ') || '): a promoted property is the property of exactly one part; rename one' }"/>
+        </xsl:when>
+      </xsl:choose>
     </xsl:for-each>
     <xsl:for-each select="$composites/pim:part[exists(fp:part-component(.))]/pim:value">
       <xsl:variable name="type" as="element(pim:component)" select="fp:part-component(..)"/>
