@@ -270,3 +270,20 @@ def test_an_operation_call_is_bound_through_a_promoted_port_and_refused_by_the_t
             generate(model, tmp_path / "out", target, write=False)
         assert {d.code for d in failed.value.diagnostics} == {code}
         assert all(d.line is not None for d in failed.value.diagnostics)
+
+
+@pytest.mark.parametrize("app", APPS)
+def test_a_policy_drawn_inside_the_library_reaches_every_orocos_file(app: str, runs) -> None:
+    """HyperFlex's flattening lost DATA / CIRCULAR_BUFFER policies and never wrote lock_policy: the
+    torque loop inside the arm driver (a CIRCULAR_BUFFER of 4, LOCKED, init) keeps every field."""
+    files = {f.get("path"): f.text or "" for f in etree.fromstring(runs[(app, "orocos")].stages["text"].encode())}
+    policy = etree.fromstring(files[f"deploy/{app}.xml"].encode()).find("struct[@name='atf_driver_torqueCmd']")
+    assert {s.get("name"): s.findtext("value") for s in policy.findall("simple")} == {
+        "type": "2", "size": "4", "lock_policy": "1", "init": "1", "pull": "0"}
+    ops = files[f"deploy/{app}.ops"]
+    for field in ("type = CIRCULAR_BUFFER", "size = 4", "lock_policy = LOCKED", "init = true", "pull = false"):
+        assert f"cp_atf_driver_torqueCmd.{field}" in ops
+    lua = files[f"deploy/{app}.lua"].split("-- connection point atf_driver_torqueCmd", 1)[1].split("end", 1)[0]
+    for field in ("cp.type = rtt.globals.CIRCULAR_BUFFER", "cp.size = 4", "cp.lock_policy = rtt.globals.LOCKED",
+                  "cp.init = true", "cp.pull = false"):
+        assert field in lua
