@@ -113,7 +113,8 @@
     <xsl:param name="start" as="element(pim:component)"/>
     <xsl:param name="from" as="element(pim:component)"/>
     <xsl:param name="seen" as="element(pim:component)*"/>
-    <xsl:iterate select="$from/pim:part ! fp:part-component(.)">
+    <!-- each part type once ("/." removes the repeats) -->
+    <xsl:iterate select="($from/pim:part ! fp:part-component(.))/.">
       <xsl:variable name="type" as="element(pim:component)" select="."/>
       <xsl:choose>
         <xsl:when test="$type is $start">
