@@ -317,7 +317,6 @@
     <xsl:variable name="raw-connections" as="element(pim:connection)*"
         select="if (exists($uses)) then fp:connections-from-connectors($root, $uses, $resolved)
                 else fp:connections-from-interfaces(., $work)"/>
-    <xsl:variable name="names" as="xs:string*" select="f:unique-names($raw-connections/@name)"/>
     <xsl:variable name="calls" as="element(pim:call)*"
         select="if (exists($uses)) then fp:calls-from-pairs($root, $resolved/self::fp:call-pair)
                 else fp:calls-from-interfaces($root, $work)"/>
@@ -326,22 +325,22 @@
       <xsl:sequence select="$hosts ! fp:host(., count($hosts))"/>
       <xsl:sequence select="fp:libraries(.)"/>
       <xsl:sequence select="$bound, $instance-tree/pim:composite-instance, fp:sequence(., $instances, $instance-tree)"/>
-      <xsl:for-each select="$raw-connections">
-        <xsl:variable name="position" as="xs:integer" select="position()"/>
-        <xsl:copy>
-          <xsl:attribute name="name" select="$names[$position]"/>
-          <xsl:sequence select="@* except @name, node()"/>
-        </xsl:copy>
-      </xsl:for-each>
-      <xsl:for-each select="$calls">
-        <xsl:variable name="position" as="xs:integer" select="position()"/>
-        <xsl:copy>
-          <xsl:attribute name="name" select="f:unique-names($calls/@name)[$position]"/>
-          <xsl:sequence select="@* except @name, node()"/>
-        </xsl:copy>
-      </xsl:for-each>
+      <xsl:sequence select="fp:uniquely-named($raw-connections), fp:uniquely-named($calls)"/>
     </pim:binding>
   </xsl:template>
+
+  <!-- $elements with their @name made unique among them (f:unique-names) -->
+  <xsl:function name="fp:uniquely-named" as="element()*">
+    <xsl:param name="elements" as="element()*"/>
+    <xsl:variable name="names" as="xs:string*" select="f:unique-names($elements/@name)"/>
+    <xsl:for-each select="$elements">
+      <xsl:variable name="position" as="xs:integer" select="position()"/>
+      <xsl:copy>
+        <xsl:attribute name="name" select="$names[$position]"/>
+        <xsl:sequence select="@* except @name, node()"/>
+      </xsl:copy>
+    </xsl:for-each>
+  </xsl:function>
 
   <!-- " (parts a.b and a_b) ...": the paths of same-named nested instances -->
   <xsl:function name="fp:paths-text" as="xs:string">

@@ -93,6 +93,12 @@
     <xsl:sequence select="f:cpp-identifier(($part/@name[normalize-space(.)], $component/@name)[1])"/>
   </xsl:function>
 
+  <!-- the instance name of a path: its segments joined by '_' -->
+  <xsl:function name="fp:path-name" as="xs:string">
+    <xsl:param name="segments" as="xs:string+"/>
+    <xsl:sequence select="f:cpp-identifier(string-join($segments, '_'))"/>
+  </xsl:function>
+
   <!-- ================================================== cycles -->
   <!-- BND013 for each composite that is a part of itself at any depth -->
   <xsl:function name="fp:composition-cycles" as="map(*)*">
@@ -155,7 +161,7 @@
         <xsl:attribute name="component" select="$type/@id"/>
         <xsl:attribute name="top" select="$top/@id"/>
         <xsl:attribute name="path" select="string-join($path, '.')"/>
-        <xsl:attribute name="name" select="f:cpp-identifier(string-join($path, '_'))"/>
+        <xsl:attribute name="name" select="fp:path-name($path)"/>
         <xsl:if test="exists($segments)">
           <xsl:attribute name="parent" select="string-join($segments, '.')"/>
         </xsl:if>
@@ -208,7 +214,7 @@
             else fp:unresolved($end, $part, $type)"/>
       </xsl:when>
       <xsl:otherwise>
-        <fp:target instance="{f:cpp-identifier(string-join($path, '_'))}" port="{$end/@role}"/>
+        <fp:target instance="{fp:path-name($path)}" port="{$end/@role}"/>
       </xsl:otherwise>
     </xsl:choose>
   </xsl:function>
@@ -282,10 +288,10 @@
   </xsl:function>
 
   <!-- ============================================ promoted properties -->
-  <!-- the properties a part's type offers by name: a composite's own
-       attributes (its promoted properties), else the attributes of the
-       component's realizing class (else of the component) -->
-  <xsl:function name="fp:property-owner" as="element()">
+  <!-- the element whose attributes and operations are those of component
+       $component: a composite itself (its attributes are its promoted
+       properties), else its realizing class, else the component -->
+  <xsl:function name="fp:feature-owner" as="element()">
     <xsl:param name="component" as="element(pim:component)"/>
     <xsl:sequence select="if (fp:is-composite($component)) then $component
                           else (fp:realizing-class($component), $component)[1]"/>
@@ -298,7 +304,7 @@
     <xsl:param name="attribute" as="element(pim:attribute)"/>
     <xsl:param name="composite" as="element(pim:component)"/>
     <xsl:sequence select="$composite/pim:part[exists(fp:part-component(.))]
-                          [fp:property-owner(fp:part-component(.))/pim:attribute/@name = $attribute/@name]"/>
+                          [fp:feature-owner(fp:part-component(.))/pim:attribute/@name = $attribute/@name]"/>
   </xsl:function>
 
   <!-- BND017 for a property of a composite that promotes the property of
@@ -325,7 +331,7 @@
     </xsl:for-each>
     <xsl:for-each select="$composites/pim:part[exists(fp:part-component(.))]/pim:value">
       <xsl:variable name="type" as="element(pim:component)" select="fp:part-component(..)"/>
-      <xsl:if test="not(@attribute = fp:property-owner($type)/pim:attribute/@id)">
+      <xsl:if test="not(@attribute = fp:feature-owner($type)/pim:attribute/@id)">
         <xsl:variable name="attribute" as="element()?" select="key('fp:id', @attribute, $root)"/>
         <xsl:sequence select="map { 'code': 'BND018', 'id': string(@id), 'message': 'part ''' || ../@name
             || ''' sets ''' || ($attribute/@name, @attribute)[1] || ''', which is no property of its type '''

@@ -142,18 +142,19 @@
     <xsl:param name="work" as="document-node()"/>
     <xsl:for-each select="$uses">
       <xsl:variable name="use" as="element(fp:use)" select="."/>
+      <xsl:variable name="prefix" as="xs:string" select="translate(@path, '.', '_')"/>
       <xsl:variable name="connection" as="element(pim:connector)" select="key('fp:id', @connector, $root)"/>
       <xsl:variable name="targets" as="element()*"
           select="$connection/pim:end[@part] ! fp:end-targets(., tokenize($use/@path, '\.'))"/>
       <xsl:sequence select="$targets/self::fp:unresolved"/>
       <xsl:variable name="ips" as="element(fp:ip)*"
           select="$targets/self::fp:target ! key('fp:ip-by-end', @instance || '|' || @port, $work)"/>
-      <xsl:sequence select="fp:call-pairs($connection, translate($use/@path, '.', '_'), $ips)"/>
+      <xsl:sequence select="fp:call-pairs($connection, $prefix, $ips)"/>
       <xsl:for-each select="$ips[not(@kind)][@direction eq 'out']">
         <xsl:variable name="wr" as="element(fp:ip)" select="."/>
         <xsl:for-each select="$ips[not(@kind)][@direction eq 'in'][@instance ne $wr/@instance or @port ne $wr/@port]
                                   [@interface eq $wr/@interface or @type-key eq $wr/@type-key]">
-          <fp:pair connector="{$connection/@id}" prefix="{translate($use/@path, '.', '_')}" interface="{$wr/@interface}"
+          <fp:pair connector="{$connection/@id}" prefix="{$prefix}" interface="{$wr/@interface}"
                    w-instance="{$wr/@instance}" w-port="{$wr/@port}" w-dp="{$wr/@data-port}"
                    r-instance="{@instance}" r-port="{@port}" r-dp="{@data-port}"/>
         </xsl:for-each>

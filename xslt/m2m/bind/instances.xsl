@@ -73,7 +73,7 @@
     <xsl:variable name="around" as="xs:string*" select="tokenize($unit/@around)"/>
     <xsl:variable name="deployments" as="element(pim:deployment)*"
         select="fp:deployments-of($part, $component, $around, $realization-item)"/>
-    <xsl:variable name="ee" as="element(pim:node)?" select="fp:instance-ee($part, $component, $around, $ees)"/>
+    <xsl:variable name="ee" as="element(pim:node)?" select="fp:ee-of($deployments, $component, $ees)"/>
     <xsl:variable name="inst-id" as="xs:string" select="string(($part/@id, $component/@id)[1])"/>
     <xsl:if test="empty($ee)">
       <xsl:sequence select="f:fail-all(fp:no-ee-problem($part, $component, $ees))"/>
@@ -97,7 +97,7 @@
       <!-- only the elements with an Activity stereotype can give a tag -->
       <xsl:sequence select="fp:activity(($part, $component, $realization-item)[exists(f:stereotype(., 'Activity'))], $realization-item, $ee, $inst-id)"/>
       <!-- values set by the enclosing parts and composites (seed 003) -->
-      <xsl:sequence select="fp:property-values($part, $around, ($realization-item, $component)[1])"/>
+      <xsl:sequence select="fp:property-values($part, $around, fp:feature-owner($component))"/>
       <!-- every deployment that reaches the instance, so the deployment
            rules (schemas/pim/1/pim.sch) can see one deployed twice -->
       <xsl:for-each select="$deployments">
@@ -135,9 +135,17 @@
     <xsl:param name="component" as="element(pim:component)"/>
     <xsl:param name="around" as="xs:string*"/>
     <xsl:param name="ees" as="element(pim:node)*"/>
-    <xsl:sequence select="(fp:deployments-of($part, $component, $around, fp:realizing-class($component)) ! fp:deployment-ee(.),
-                           fp:owner-ee($component),
-                           if (count($ees) eq 1) then $ees else ())[1]"/>
+    <xsl:sequence select="fp:ee-of(fp:deployments-of($part, $component, $around, fp:realizing-class($component)), $component, $ees)"/>
+  </xsl:function>
+
+  <!-- the execution environment of an instance of $component placed by
+       $deployments: the first they reach, else the one that owns the
+       component, else the model's only one -->
+  <xsl:function name="fp:ee-of" as="element(pim:node)?">
+    <xsl:param name="deployments" as="element(pim:deployment)*"/>
+    <xsl:param name="component" as="element(pim:component)"/>
+    <xsl:param name="ees" as="element(pim:node)*"/>
+    <xsl:sequence select="($deployments ! fp:deployment-ee(.), fp:owner-ee($component), if (count($ees) eq 1) then $ees else ())[1]"/>
   </xsl:function>
 
   <!-- the execution environment of the node that owns component $c in

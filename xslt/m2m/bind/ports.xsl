@@ -128,6 +128,16 @@
                                      | self::pim:port[@primitive]))"/>
   </xsl:function>
 
+  <!-- the name of the data or service port of $port for $interface, one of
+       its $count interfaces: the port's name, with the interface's after it
+       when there are several -->
+  <xsl:function name="fp:sub-port-name" as="xs:string">
+    <xsl:param name="port" as="element(pim:port)"/>
+    <xsl:param name="interface" as="element()?"/>
+    <xsl:param name="count" as="xs:integer"/>
+    <xsl:sequence select="f:cpp-identifier(if ($count eq 1) then $port/@name else $port/@name || '_' || $interface/@name)"/>
+  </xsl:function>
+
   <xsl:function name="fp:data-ports" as="element(pim:data-port)*">
     <xsl:param name="port" as="element(pim:port)"/>
     <xsl:param name="component" as="element(pim:component)"/>
@@ -153,7 +163,7 @@
         <xsl:otherwise>
           <xsl:variable name="data" as="element(pim:attribute)*" select="$instance/pim:attribute"/>
           <pim:data-port port="{$port/@id}"
-                         name="{f:cpp-identifier(if ($name eq 1) then $port/@name else $port/@name || '_' || $instance/@name)}"
+                         name="{fp:sub-port-name($port, $instance, $name)}"
                          port-name="{$port/@name}" direction="{$pairs[2 * current()]}"
                          interface="{$instance/@id}" interface-name="{$instance/@name}"
                          datum="{$data/@id}" datum-name="{$data/@name}">

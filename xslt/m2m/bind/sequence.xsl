@@ -90,7 +90,9 @@
         select="$instance-tree/pim:composite-instance[@xmi-id eq $end/@element]"/>
     <xsl:variable name="instance" as="element(pim:instance)*"
         select="key('fp:instance-by-part', $end/@element, $instance-tree)
-                | $instance-tree/pim:instance[some $c in $composites satisfies starts-with(@path, $c/@path || '.')]"/>
+                | (if (exists($composites))
+                   then $instance-tree/pim:instance[some $c in $composites satisfies starts-with(@path, $c/@path || '.')]
+                   else ())"/>
     <xsl:variable name="dependency" as="element(pim:dependency)" select="$end/.."/>
     <xsl:variable name="element" as="element()?" select="key('fp:id', $end/@element, root($end))"/>
     <xsl:sequence select="if (exists($instance)) then $instance

@@ -54,7 +54,7 @@
       <xsl:variable name="interface" as="element()?" select="key('fp:id', $pairs[2 * current() - 1], $root)"/>
       <xsl:if test="fp:is-service-interface($interface)">
         <pim:service-port port="{$port/@id}"
-            name="{f:cpp-identifier(if (count($pairs) eq 2) then $port/@name else $port/@name || '_' || $interface/@name)}"
+            name="{fp:sub-port-name($port, $interface, count($pairs) idiv 2)}"
             port-name="{$port/@name}" interface="{$interface/@id}" interface-name="{$interface/@name}"
             role="{if ($pairs[2 * current()] eq 'out') then 'provided' else 'required'}"/>
       </xsl:if>
@@ -83,7 +83,7 @@
     <xsl:for-each select="$bound/pim:service-port">
       <xsl:variable name="service" as="element(pim:service-port)" select="."/>
       <xsl:variable name="component" as="element(pim:component)" select="key('fp:id', ../@component, $model-root)"/>
-      <xsl:variable name="owner" as="element()" select="(fp:realizing-class($component), $component)[1]"/>
+      <xsl:variable name="owner" as="element()" select="fp:feature-owner($component)"/>
       <xsl:for-each select="key('fp:id', @interface, $model-root)/pim:operation">
         <xsl:variable name="want" as="xs:string" select="fp:operation-signature(.)"/>
         <xsl:variable name="have" as="element(pim:operation)*" select="$owner/pim:operation[@name eq current()/@name]"/>

@@ -61,7 +61,6 @@
     <xsl:sequence select="f:snake-case(if (normalize-space($requested)) then $requested else $model/@name)"/>
   </xsl:function>
 
-  <!-- fails with $code when two of $components map to one C++ class -->
   <!-- operation calls between components (service ports and pim:call,
        seed 003) are bound but no target generates them yet: an error
        ($code) per service port of $components, so that none is lost in
@@ -76,6 +75,7 @@
         || ' bound (robomda import writes them in the bound model) but not generated yet; exchange the data through data ports' })"/>
   </xsl:function>
 
+  <!-- fails with $code when two of $components map to one C++ class -->
   <xsl:function name="fp:check-class-names" as="empty-sequence()">
     <xsl:param name="components" as="element(pim:bound-component)*"/>
     <xsl:param name="code" as="xs:string"/>
