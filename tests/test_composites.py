@@ -24,6 +24,8 @@ from robomda.api import generate, import_model, targets
 from robomda.batch import run_batch
 from robomda.diagnostics import RobomdaError
 
+from edits import edit
+
 ROOT = Path(__file__).resolve().parent.parent
 CASES = ROOT / "fixtures" / "cases"
 APPS = ["calligraphy", "learning"]
@@ -156,9 +158,8 @@ def test_a_changed_library_regenerates_both_applications_and_nothing_else(tmp_pa
         "calligraphy/model.xmi": "ok", "learning/model.xmi": "ok", "pid/model.xmi": "ok",
         "lib/atf/ArmTrajectoryFollower.uml": "library"}
     assert first.exit_code == 0
-    library = apps / "lib" / "atf" / "ArmTrajectoryFollower.uml"
-    library.write_text(library.read_text(encoding="utf-8").replace(
-        'xmi:id="_atfCsV1v" value="position"', 'xmi:id="_atfCsV1v" value="impedance"'), encoding="utf-8")
+    edit(apps / "lib" / "atf" / "ArmTrajectoryFollower.uml",
+         'xmi:id="_atfCsV1v" value="position"', 'xmi:id="_atfCsV1v" value="impedance"')
     again = run_batch(apps, out, "ros1", jobs=1)
     assert {r.model: r.status for r in again.results} == {
         "calligraphy/model.xmi": "ok", "learning/model.xmi": "ok", "pid/model.xmi": "skipped",
@@ -211,21 +212,13 @@ def _apps_copy(tmp_path: Path) -> Path:
 def test_a_value_on_an_attribute_the_target_does_not_expose_is_named(tmp_path: Path, target: str, code: str) -> None:
     apps = _apps_copy(tmp_path)
     model = apps / "calligraphy" / "model.xmi"
-    text = model.read_text(encoding="utf-8")
     # the planner's characterFile, which the application sets, made private: no property any more
-    old = 'xmi:id="_calPlV1" name="characterFile" visibility="protected"'
-    assert old in text
-    model.write_text(text.replace(old, old.replace("protected", "private")), encoding="utf-8")
+    edit(model, 'xmi:id="_calPlV1" name="characterFile" visibility="protected"',
+         'xmi:id="_calPlV1" name="characterFile" visibility="private"')
     done = generate(model, tmp_path / "out", target, write=False)
     found = [d for d in done.warnings if d.code == code]
     assert len(found) == 1 and "'hiragana.xml'" in found[0].message and "'planner'" in found[0].message
     assert found[0].line is not None  # located on the slot
-
-
-def _edit(path: Path, old: str, new: str) -> None:
-    text = path.read_text(encoding="utf-8")
-    assert old in text, old
-    path.write_text(text.replace(old, new, 1), encoding="utf-8")
 
 
 def test_an_operation_call_is_bound_through_a_promoted_port_and_refused_by_the_targets(tmp_path: Path) -> None:
@@ -235,27 +228,27 @@ def test_an_operation_call_is_bound_through_a_promoted_port_and_refused_by_the_t
     case = tmp_path / "calligraphy"
     shutil.copytree(ROOT / "fixtures" / "broken" / "operation-calls-not-generated", case)
     library = case / "atf" / "ArmTrajectoryFollower.uml"
-    _edit(library, '<ownedAttribute xmi:type="uml:Port" xmi:id="_atfAtfP1"',
+    edit(library, '<ownedAttribute xmi:type="uml:Port" xmi:id="_atfAtfP1"',
           '<ownedAttribute xmi:type="uml:Port" xmi:id="_atfAtfPc" name="compliance" visibility="public" '
           'aggregation="composite" type="_atfIC"/>\n        <ownedAttribute xmi:type="uml:Port" xmi:id="_atfAtfP1"')
-    _edit(library, '<ownedConnector xmi:type="uml:Connector" xmi:id="_atfAtfD6"',
+    edit(library, '<ownedConnector xmi:type="uml:Connector" xmi:id="_atfAtfD6"',
           '<ownedConnector xmi:type="uml:Connector" xmi:id="_atfAtfDc" name="complianceIn" kind="delegation">\n'
           '          <end xmi:type="uml:ConnectorEnd" xmi:id="_atfAtfDce1" role="_atfAtfPc"/>\n'
           '          <end xmi:type="uml:ConnectorEnd" xmi:id="_atfAtfDce2" role="_atfCsPc" partWithPort="_atfAtfA3"/>\n'
           '        </ownedConnector>\n        <ownedConnector xmi:type="uml:Connector" xmi:id="_atfAtfD6"')
     model = case / "model.xmi"
-    _edit(model, '<ownedAttribute xmi:type="uml:Port" xmi:id="_calPlP1"',
+    edit(model, '<ownedAttribute xmi:type="uml:Port" xmi:id="_calPlP1"',
           '<ownedAttribute xmi:type="uml:Port" xmi:id="_calPlPc" name="compliance" visibility="public" '
           'aggregation="composite">\n          <type xmi:type="uml:Interface" href="atf/ArmTrajectoryFollower.uml#_atfIC"/>\n'
           '        </ownedAttribute>\n        <ownedAttribute xmi:type="uml:Port" xmi:id="_calPlP1"')
-    _edit(model, '<ownedConnector xmi:type="uml:Connector" xmi:id="_calSysC5"',
+    edit(model, '<ownedConnector xmi:type="uml:Connector" xmi:id="_calSysC5"',
           '<ownedConnector xmi:type="uml:Connector" xmi:id="_calSysCc" name="compliant">\n'
           '          <end xmi:type="uml:ConnectorEnd" xmi:id="_calSysCce1" role="_calPlPc" partWithPort="_calSysA1"/>\n'
           '          <end xmi:type="uml:ConnectorEnd" xmi:id="_calSysCce2" partWithPort="_calSysA3">\n'
           '            <role xmi:type="uml:Port" href="atf/ArmTrajectoryFollower.uml#_atfAtfPc"/>\n'
           '          </end>\n        </ownedConnector>\n        <ownedConnector xmi:type="uml:Connector" xmi:id="_calSysC5"')
     # the planner requires the interface (a Usage), the iterator provides it
-    _edit(model, '<packagedElement xmi:type="uml:Component" xmi:id="_calPl" name="CalligraphyPlanner">',
+    edit(model, '<packagedElement xmi:type="uml:Component" xmi:id="_calPl" name="CalligraphyPlanner">',
           '<packagedElement xmi:type="uml:Usage" xmi:id="_calPlU" client="_calPl">\n'
           '        <supplier xmi:type="uml:Interface" href="atf/ArmTrajectoryFollower.uml#_atfIC"/>\n'
           '      </packagedElement>\n'

@@ -21,6 +21,8 @@ from robomda.batch import run_batch
 from robomda.cli import main
 from robomda.diagnostics import RobomdaError
 
+from edits import edit
+
 ROOT = Path(__file__).resolve().parents[1]
 SPLIT = ROOT / "fixtures" / "cases" / "split"
 PIM = "{urn:robomda:pim:1}"
@@ -32,12 +34,6 @@ def _copy(tmp_path: Path) -> Path:
     shutil.copytree(SPLIT, dest, ignore=shutil.ignore_patterns("expected"))
     (tmp_path / "cases" / "pid").symlink_to(ROOT / "fixtures" / "cases" / "pid")
     return dest
-
-
-def _edit(path: Path, old: str, new: str) -> None:
-    text = path.read_text(encoding="utf-8")
-    assert text.count(old) == 1, old
-    path.write_text(text.replace(old, new), encoding="utf-8")
 
 
 def test_the_system_keeps_its_connectors_and_parts_from_other_files() -> None:
@@ -69,7 +65,7 @@ def test_every_target_generates_the_split_model(target: str) -> None:
 def test_an_error_in_a_library_file_is_located_there(tmp_path: Path, capsys) -> None:
     model = _copy(tmp_path) / "model.xmi"
     lib = model.parent / "components" / "TrajectoryGenerator.compdef.uml"
-    _edit(lib, 'xmi:id="_spTa4v" value="0.01"', 'xmi:id="_spTa4v" value="-0.01"')
+    edit(lib, 'xmi:id="_spTa4v" value="0.01"', 'xmi:id="_spTa4v" value="-0.01"')
     assert main(["check", str(model)]) == 1
     err = capsys.readouterr().err
     line = next(line for line in err.splitlines() if "[BND010]" in line)
@@ -113,7 +109,7 @@ def test_files_that_reference_each_other_load_once(tmp_path: Path) -> None:
     model = _copy(tmp_path) / "model.xmi"
     services = model.parent / "services" / "joint.servicedef.uml"
     # the services file references the system back (a cycle of files)
-    _edit(services, '<packagedElement xmi:type="uml:Interface" xmi:id="_spS1i" name="IDesiredPosition">',
+    edit(services, '<packagedElement xmi:type="uml:Interface" xmi:id="_spS1i" name="IDesiredPosition">',
           '<packagedElement xmi:type="uml:Interface" xmi:id="_spS1i" name="IDesiredPosition">\n'
           '    <ownedComment xmi:type="uml:Comment" xmi:id="_spS1n" body="used by the system">\n'
           '      <annotatedElement href="../model.xmi#_spY1k"/>\n    </ownedComment>')
@@ -150,7 +146,7 @@ def test_batch_generates_the_system_once_and_reports_its_files_as_libraries(tmp_
     again = run_batch(tmp_path / "cases" / "split", out, "ros1", jobs=1)
     assert {r.model: r.status for r in again.results}["model.xmi"] == "skipped"
     # a changed library regenerates the model that uses it
-    _edit(model.parent / "components" / "PIDController.compdef.uml",
+    edit(model.parent / "components" / "PIDController.compdef.uml",
           'xmi:id="_spPa1v" value="20.0"', 'xmi:id="_spPa1v" value="25.0"')
     third = run_batch(tmp_path / "cases" / "split", out, "ros1", jobs=1)
     assert {r.model: r.status for r in third.results}["model.xmi"] == "ok"
@@ -159,7 +155,7 @@ def test_batch_generates_the_system_once_and_reports_its_files_as_libraries(tmp_
 
 def test_a_reference_over_the_network_is_never_followed(tmp_path: Path) -> None:
     model = _copy(tmp_path) / "model.xmi"
-    _edit(model.parent / "components" / "PIDController.compdef.uml",
+    edit(model.parent / "components" / "PIDController.compdef.uml",
           '<type xmi:type="uml:Interface" href="../services/joint.servicedef.uml#_spS1i"/>',
           '<type xmi:type="uml:Interface" href="http://127.0.0.1:9/joint.servicedef.uml#_spS1i"/>')
     warnings = []
