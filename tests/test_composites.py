@@ -95,13 +95,42 @@ def test_every_part_and_connector_reaches_the_binding(app: str, runs) -> None:
     assert sorted(i.get("name") for i in instances) == sorted(p.replace(".", "_") for p in leaves)
     assert [c.get("path") for c in binding.findall(f"{PIM}composite-instance")] == composites
     # every assembly connector, at every level, is in a connection point
-    joined = {k for c in binding.findall(f"{PIM}connection") for k in c.get("connectors").split()}
+    joined = {k for c in binding.findall(f"{PIM}connection") + binding.findall(f"{PIM}call")
+              for k in c.get("connectors").split()}
     assert {connector for connector, _ in uses} <= joined
     # and every connection joins instances that exist
     names = {i.get("name") for i in instances}
     for connection in binding.findall(f"{PIM}connection"):
         ends = connection.findall(f"{PIM}writer") + connection.findall(f"{PIM}reader")
         assert {e.get("instance") for e in ends} <= names
+
+
+@pytest.mark.parametrize("app", APPS)
+@pytest.mark.parametrize("target", targets())
+def test_every_operation_call_reaches_every_target(app: str, target: str, runs) -> None:
+    """Seed 003's promoted operation: the application's component calls ICompliance.setCompliant,
+    which the joint controller two composites down provides; each target generates both ends and
+    joins them."""
+    done = runs[(app, target)]
+    binding = etree.fromstring(done.stages["bind"].encode("utf-8")).find(f"{PIM}binding")
+    calls = binding.findall(f"{PIM}call")
+    assert [(c.find(f"{PIM}provider").get("instance")) for c in calls] == ["atf_driver_jointCtrl"]
+    files = {f.get("path"): f.text or "" for f in etree.fromstring(done.stages["text"].encode("utf-8"))}
+    caller = calls[0].find(f"{PIM}caller").get("instance")
+    code = "".join(text for path, text in files.items() if path.startswith("src/"))
+    if target == "orocos":
+        assert 'this->provides("ICompliance")->addOperation("setCompliant"' in code
+        assert 'this->requires("ICompliance")->addOperationCaller(caller_setCompliant);' in code
+        xml = etree.fromstring(files[f"deploy/{app}.xml"].encode("utf-8"))
+        peers = xml.find(f"struct[@name='{caller}']/struct[@name='Peers']")
+        assert [v.text for v in peers.iter("value")] == ["atf_driver_jointCtrl"]
+        assert f'connectServices("{caller}", "atf_driver_jointCtrl")' in files[f"deploy/{app}.ops"]
+        assert f'depl:connectServices("{caller}", "atf_driver_jointCtrl")' in files[f"deploy/{app}.lua"]
+    else:
+        assert 'advertiseService("setCompliant"' in code or 'create_service<std_srvs::srv::SetBool>(\n    "~/setCompliant"' in code
+        assert 'serviceClient<std_srvs::SetBool>("setCompliant")' in code or 'create_client<std_srvs::srv::SetBool>("setCompliant")' in code
+        launch = "".join(text for path, text in files.items() if path.startswith("launch/"))
+        assert launch.count('<remap from="setCompliant" to="/atf/driver/jointCtrl/setCompliant"/>') == 1
 
 
 def _connections(binding: etree._Element) -> list[tuple[str, str, str, str]]:
@@ -221,48 +250,27 @@ def test_a_value_on_an_attribute_the_target_does_not_expose_is_named(tmp_path: P
     assert found[0].line is not None  # located on the slot
 
 
-def test_an_operation_call_is_bound_through_a_promoted_port_and_refused_by_the_targets(tmp_path: Path) -> None:
-    """The cartesian iterator provides ICompliance (fixtures/broken/operation-calls-not-generated),
-    the follower promotes it through a delegation, the planner calls it: bind binds the call to the
-    iterator; the targets, which do not generate calls yet, say so with a located error."""
+def test_an_unbound_required_interface_and_an_undeclared_operation_are_named(tmp_path: Path) -> None:
+    """Without its connector the planner's required ICompliance is bound to nothing (the model has
+    other connectors, so bind does not guess), and a planner class that does not declare setCompliant
+    cannot call it: each target names both with a located warning, and generates the caller anyway."""
     case = tmp_path / "calligraphy"
-    shutil.copytree(ROOT / "fixtures" / "broken" / "operation-calls-not-generated", case)
-    library = case / "atf" / "ArmTrajectoryFollower.uml"
-    edit(library, '<ownedAttribute xmi:type="uml:Port" xmi:id="_atfAtfP1"',
-          '<ownedAttribute xmi:type="uml:Port" xmi:id="_atfAtfPc" name="compliance" visibility="public" '
-          'aggregation="composite" type="_atfIC"/>\n        <ownedAttribute xmi:type="uml:Port" xmi:id="_atfAtfP1"')
-    edit(library, '<ownedConnector xmi:type="uml:Connector" xmi:id="_atfAtfD6"',
-          '<ownedConnector xmi:type="uml:Connector" xmi:id="_atfAtfDc" name="complianceIn" kind="delegation">\n'
-          '          <end xmi:type="uml:ConnectorEnd" xmi:id="_atfAtfDce1" role="_atfAtfPc"/>\n'
-          '          <end xmi:type="uml:ConnectorEnd" xmi:id="_atfAtfDce2" role="_atfCsPc" partWithPort="_atfAtfA3"/>\n'
-          '        </ownedConnector>\n        <ownedConnector xmi:type="uml:Connector" xmi:id="_atfAtfD6"')
+    shutil.copytree(CASES / "calligraphy", case)  # the library link is copied as files
     model = case / "model.xmi"
-    edit(model, '<ownedAttribute xmi:type="uml:Port" xmi:id="_calPlP1"',
-          '<ownedAttribute xmi:type="uml:Port" xmi:id="_calPlPc" name="compliance" visibility="public" '
-          'aggregation="composite">\n          <type xmi:type="uml:Interface" href="atf/ArmTrajectoryFollower.uml#_atfIC"/>\n'
-          '        </ownedAttribute>\n        <ownedAttribute xmi:type="uml:Port" xmi:id="_calPlP1"')
-    edit(model, '<ownedConnector xmi:type="uml:Connector" xmi:id="_calSysC5"',
-          '<ownedConnector xmi:type="uml:Connector" xmi:id="_calSysCc" name="compliant">\n'
-          '          <end xmi:type="uml:ConnectorEnd" xmi:id="_calSysCce1" role="_calPlPc" partWithPort="_calSysA1"/>\n'
-          '          <end xmi:type="uml:ConnectorEnd" xmi:id="_calSysCce2" partWithPort="_calSysA3">\n'
-          '            <role xmi:type="uml:Port" href="atf/ArmTrajectoryFollower.uml#_atfAtfPc"/>\n'
-          '          </end>\n        </ownedConnector>\n        <ownedConnector xmi:type="uml:Connector" xmi:id="_calSysC5"')
-    # the planner requires the interface (a Usage), the iterator provides it
-    edit(model, '<packagedElement xmi:type="uml:Component" xmi:id="_calPl" name="CalligraphyPlanner">',
-          '<packagedElement xmi:type="uml:Usage" xmi:id="_calPlU" client="_calPl">\n'
-          '        <supplier xmi:type="uml:Interface" href="atf/ArmTrajectoryFollower.uml#_atfIC"/>\n'
-          '      </packagedElement>\n'
-          '      <packagedElement xmi:type="uml:Component" xmi:id="_calPl" name="CalligraphyPlanner">')
+    text = model.read_text(encoding="utf-8")
+    for opening, closing in (('<ownedConnector xmi:type="uml:Connector" xmi:id="_calSysC9"', "</ownedConnector>"),
+                             ('<ownedOperation xmi:type="uml:Operation" xmi:id="_calPlS1"', "</ownedOperation>")):
+        start = text.index(opening)
+        edit(model, text[start:text.index(closing, start) + len(closing)], "")
     pim = etree.fromstring(import_model(model).encode("utf-8"))
-    call = pim.find(f"{PIM}binding/{PIM}call")
-    assert call is not None and call.get("name") == "compliant"
-    assert call.find(f"{PIM}caller").get("instance") == "planner"
-    assert call.find(f"{PIM}provider").get("instance") == "atf_csIter"
-    for target, code in (("orocos", "ORO009"), ("ros1", "ROS009"), ("ros2", "ROS009")):
-        with pytest.raises(RobomdaError) as failed:
-            generate(model, tmp_path / "out", target, write=False)
-        assert {d.code for d in failed.value.diagnostics} == {code}
-        assert all(d.line is not None for d in failed.value.diagnostics)
+    assert pim.find(f"{PIM}binding/{PIM}call") is None
+    for target, unbound, undeclared in (("orocos", "ORO010", "ORO011"), ("ros1", "ROS105", "ROS106"),
+                                        ("ros2", "ROS105", "ROS106")):
+        done = generate(model, tmp_path / "out", target, write=False)
+        for code in (unbound, undeclared):
+            named = [d for d in done.warnings if d.code == code]
+            assert len(named) == 1 and named[0].line is not None and "ICompliance" in named[0].message, code
+        assert "caller_setCompliant" in done.stages["text"] or "client_setCompliant_" in done.stages["text"]
 
 
 @pytest.mark.parametrize("app", APPS)

@@ -391,3 +391,17 @@ def test_ros1_composites_run_under_roscore_with_every_connection_live(app: str, 
             echo = subprocess.run(["rostopic", "echo", "-n", "2", topic], env=env, capture_output=True,
                                   text=True, timeout=30)
             assert echo.stdout.count("data:") == 2, (topic, echo.stdout + echo.stderr)
+        # every operation call: the provider's service is up where the caller's client is
+        # remapped to, and answers
+        calls = binding.findall(f"{pim}call")
+        assert calls, "the fixture calls an operation (seed 003's ICompliance)"
+        launch_text = "".join(p.read_text() for p in (catkin_ws / "src" / app / "launch").glob("*.launch"))
+        services = set(subprocess.run(["rosservice", "list"], env=env, capture_output=True, text=True,
+                                      timeout=20).stdout.split())
+        for call in calls:
+            service = node(call.find(f"{pim}provider").get("instance")) + "/setCompliant"
+            assert service in services, (service, sorted(services))
+            assert f'<remap from="setCompliant" to="{service}"/>' in launch_text
+            answer = subprocess.run(["rosservice", "call", service, "true"], env=env, capture_output=True,
+                                    text=True, timeout=20)
+            assert "success: True" in answer.stdout, answer.stdout + answer.stderr

@@ -29,8 +29,13 @@
     fp:psm-doc($e)               <x:doc> of a model element's comment
     fp:accessor($data-port)      get<Datum> (out) / set<Datum> (in)
     fp:accessor-declared($data-port)  the realizing class has that accessor
-    fp:offered-operations($bc, $excluded)  protected, not static, not excluded
-    fp:refuse-services($components, $code)  an error per service port: calls not generated yet
+    fp:offered-operations($bc, $excluded)  protected, not static, not excluded, or of a
+                                 provided interface; never one of a required interface
+    fp:interface-operations($service-ports)  the operations of their interfaces
+    fp:provided-service($bc, $operation)  the provided interface it implements, if any
+    fp:check-services($components, $code)  one port per interface and role, one required operation per name
+    fp:check-calls($calls, $targets, $code)  no call crosses middlewares
+    fp:warn-unbound-services($instances, $code)  required interfaces no call binds
     fp:warn-unused-values($instance, $exposed, $code)  values set on properties the target does not expose
     fp:configurable-attributes($bc)  the attributes stereotyped Configurable
     fp:convention-attributes($bc)    without any: the convention's choice
@@ -40,6 +45,7 @@
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
     xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:map="http://www.w3.org/2005/xpath-functions/map"
     xmlns:pim="urn:robomda:pim:1"
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
@@ -61,18 +67,83 @@
     <xsl:sequence select="f:snake-case(if (normalize-space($requested)) then $requested else $model/@name)"/>
   </xsl:function>
 
-  <!-- operation calls between components (service ports and pim:call,
-       seed 003) are bound but no target generates them yet: an error
-       ($code) per service port of $components, so that none is lost in
-       silence -->
-  <xsl:function name="fp:refuse-services" as="item()*">
+  <!-- ================================================ operation calls -->
+  <!-- seed 003's operation calls between components (service ports and
+       pim:call, xslt/m2m/bind/services.xsl): a provider offers the
+       operations of its provided interfaces, a caller calls those of its
+       required ones -->
+  <xsl:function name="fp:interface-operations" as="element(pim:operation)*">
+    <xsl:param name="service-ports" as="element(pim:service-port)*"/>
+    <xsl:sequence select="$service-ports ! key('fp:id', @interface, root(.))/pim:operation"/>
+  </xsl:function>
+
+  <!-- the interface name of the provided service port whose operation
+       $operation implements, or () -->
+  <xsl:function name="fp:provided-service" as="xs:string?">
+    <xsl:param name="bc" as="element(pim:bound-component)"/>
+    <xsl:param name="operation" as="element(pim:operation)"/>
+    <xsl:sequence select="($bc/pim:service-port[@role eq 'provided']
+                           [fp:interface-operations(.)/@name = $operation/@name])[1]/@interface-name"/>
+  </xsl:function>
+
+  <!-- fails with $code where a component of $components has two service
+       ports of one interface and role (a middleware names the service after
+       its interface), or requires two operations of one name (one method
+       calls each) -->
+  <xsl:function name="fp:check-services" as="empty-sequence()">
     <xsl:param name="components" as="element(pim:bound-component)*"/>
     <xsl:param name="code" as="xs:string"/>
-    <xsl:sequence select="f:fail-all($components/pim:service-port ! map { 'code': $code, 'id': string(@port),
-        'message': 'component ''' || ../@name || ''' ' || (if (@role eq 'provided') then 'provides' else 'requires')
-        || ' the operations of interface '''
-        || @interface-name || ''' (port ''' || @port-name || '''): operation calls between components are'
-        || ' bound (robomda import writes them in the bound model) but not generated yet; exchange the data through data ports' })"/>
+    <xsl:variable name="problems" as="map(*)*">
+      <xsl:for-each select="$components">
+        <xsl:variable name="bc" as="element(pim:bound-component)" select="."/>
+        <xsl:for-each-group select="pim:service-port" group-by="@role || ' ' || @interface">
+          <xsl:if test="count(current-group()) gt 1">
+            <xsl:sequence select="map { 'code': $code, 'id': string(current-group()[2]/@port), 'message': 'component '''
+                || $bc/@name || ''' has ports ''' || string-join(current-group()/@port-name, ''', ''') || ''' that '
+                || (if (@role eq 'provided') then 'provide' else 'require') || ' interface ''' || @interface-name
+                || ''': a middleware names the service after its interface; use one port' }"/>
+          </xsl:if>
+        </xsl:for-each-group>
+        <xsl:for-each-group select="fp:interface-operations(pim:service-port[@role eq 'required'])" group-by="@name">
+          <xsl:if test="count(current-group()) gt 1">
+            <xsl:sequence select="map { 'code': $code, 'id': string(current-group()[2]/@id), 'message': 'component '''
+                || $bc/@name || ''' requires two operations named ''' || current-grouping-key()
+                || ''' (interfaces ''' || string-join(current-group()/../@name, ''', ''') || '''): one method calls each; rename one' }"/>
+          </xsl:if>
+        </xsl:for-each-group>
+      </xsl:for-each>
+    </xsl:variable>
+    <xsl:sequence select="f:fail-all($problems)"/>
+  </xsl:function>
+
+  <!-- fails with $code for each call of $calls with one end in the package
+       ($targets: the names of its instances) and the other on another
+       middleware: a call does not cross middlewares -->
+  <xsl:function name="fp:check-calls" as="empty-sequence()">
+    <xsl:param name="calls" as="element(pim:call)*"/>
+    <xsl:param name="targets" as="map(xs:string, xs:boolean)"/>
+    <xsl:param name="code" as="xs:string"/>
+    <xsl:sequence select="f:fail-all($calls[count((pim:caller, pim:provider)[map:contains($targets, string(@instance))]) eq 1]
+        ! map { 'code': $code, 'id': string(@xmi-id), 'message': 'instance ''' || pim:caller/@instance
+                || ''' calls the operations of interface ''' || key('fp:id', @interface, root(.))/@name || ''' on instance '''
+                || pim:provider/@instance || ''', which is deployed on another middleware: operation calls do not cross'
+                || ' middlewares; deploy both on one, or exchange the data through data ports' })"/>
+  </xsl:function>
+
+  <!-- a warning $code for each required service port of $instances that no
+       call binds: its calls fail at run time -->
+  <xsl:function name="fp:warn-unbound-services" as="empty-sequence()">
+    <xsl:param name="instances" as="element(pim:instance)*"/>
+    <xsl:param name="code" as="xs:string"/>
+    <xsl:for-each select="$instances">
+      <xsl:variable name="instance" as="element(pim:instance)" select="."/>
+      <xsl:for-each select="../pim:bound-component[@component eq $instance/@component]/pim:service-port[@role eq 'required']
+                            [not(@name = ../../pim:call/pim:caller[@instance eq $instance/@name]/@service-port)]">
+        <xsl:sequence select="f:warn($code, @port, 'instance ''' || $instance/@name || ''' requires interface '''
+            || @interface-name || ''' (port ''' || @port-name || ''') but no connector binds it to a provider:'
+            || ' the component will not configure; draw the connector to the component that provides it')"/>
+      </xsl:for-each>
+    </xsl:for-each>
   </xsl:function>
 
   <!-- fails with $code when two of $components map to one C++ class -->
@@ -185,8 +256,10 @@
   <xsl:function name="fp:offered-operations" as="element(pim:operation)*">
     <xsl:param name="bc" as="element(pim:bound-component)"/>
     <xsl:param name="excluded" as="xs:string*"/>
-    <xsl:sequence select="fp:owner($bc)/pim:operation[@visibility eq 'protected'][not(@static = ('true', '1'))]
-                                                     [not(@name = $excluded)]"/>
+    <xsl:variable name="operations" as="element(pim:operation)*" select="fp:owner($bc)/pim:operation"/>
+    <xsl:sequence select="($operations[@visibility eq 'protected'][not(@static = ('true', '1'))][not(@name = $excluded)]
+                           | $operations[@visibility ne 'private'][@name = fp:interface-operations($bc/pim:service-port[@role eq 'provided'])/@name])
+                          [not(@name = fp:interface-operations($bc/pim:service-port[@role eq 'required'])/@name)]"/>
   </xsl:function>
 
   <!-- a warning $code for each value the model sets on a property of

@@ -134,7 +134,8 @@
     <xsl:variable name="components" as="element(pim:bound-component)*"
         select="$binding/pim:bound-component[@component ! map:contains($target-components, string(.))]"/>
     <xsl:sequence select="fp:check-class-names($components, 'ORO004')"/>
-    <xsl:sequence select="fp:refuse-services($components, 'ORO009')"/>
+    <xsl:sequence select="fp:check-services($components, 'ORO009'), fp:check-calls($binding/pim:call, $targets, 'ORO009'),
+                          fp:warn-unbound-services($instances, 'ORO010')"/>
     <!-- each task context is made once: listed here, and looked up (key
          fp:task-context) by the instances for their property values -->
     <xsl:variable name="task-contexts" as="document-node()">
@@ -269,7 +270,8 @@
           select="some $a in key('fp:instance-of', $bc/@component, root($bc))/pim:activity
                   satisfies number($a/@period) eq 0"/>
       <xsl:sequence select="$bc/pim:data-port ! fp:oro-port(., $non-periodic)"/>
-      <xsl:sequence select="fp:offered-operations($bc, $fp:reserved-operations) ! fp:operation(.)"/>
+      <xsl:sequence select="fp:offered-operations($bc, $fp:reserved-operations) ! fp:operation(., fp:provided-service($bc, .))"/>
+      <xsl:sequence select="$bc/pim:service-port[@role eq 'required'] ! fp:required-service(., $bc)"/>
       <xsl:variable name="configurable" as="element(pim:attribute)*" select="fp:configurable-attributes($bc)"/>
       <xsl:sequence select="if (exists($configurable)) then $configurable ! fp:property(.)
                             else fp:convention-attributes($bc)[exists(fp:oro-type(.))][@primitive ne 'void']
@@ -300,6 +302,7 @@
 
   <xsl:function name="fp:operation" as="element(o:operation)">
     <xsl:param name="operation" as="element(pim:operation)"/>
+    <xsl:param name="service" as="xs:string?"/>
     <xsl:variable name="tag" as="xs:string?"
         select="f:stereotype($operation, 'OperationThread')/pim:tag[@name eq 'thread'][1]/@value"/>
     <xsl:variable name="thread" as="xs:string"
@@ -312,6 +315,7 @@
     <o:operation xmi-id="{$operation/@id}" name="{f:cpp-identifier($operation/@name)}" thread="{$thread}"
                  return-type="{$result-type/@cpp}" return-primitive="{$result-type/@primitive}"
                  return-sample="{$result-type/@sample}">
+      <xsl:if test="exists($service)"><xsl:attribute name="service" select="$service"/></xsl:if>
       <xsl:sequence select="fp:psm-doc($operation)"/>
       <xsl:for-each select="$operation/pim:parameter[@direction ne 'return']">
         <xsl:variable name="type" as="element(ty:type)"
@@ -324,6 +328,32 @@
         </o:parameter>
       </xsl:for-each>
     </o:operation>
+  </xsl:function>
+
+  <!-- a required interface (seed 003): an RTT::OperationCaller per
+       operation, in the service requester named after the interface; the
+       component's code calls the operation by its name where the generated
+       class defines it (base kind; wrapper kind: where the realizing class
+       declares it, virtual, for the wrapper to override; else ORO011) -->
+  <xsl:function name="fp:required-service" as="element(o:required-service)">
+    <xsl:param name="service-port" as="element(pim:service-port)"/>
+    <xsl:param name="bc" as="element(pim:bound-component)"/>
+    <xsl:variable name="declared" as="xs:string*" select="fp:callable($bc)/@name"/>
+    <o:required-service xmi-id="{$service-port/@port}" name="{$service-port/@interface-name}" port="{$service-port/@port-name}">
+      <xsl:for-each select="fp:interface-operations($service-port)">
+        <xsl:variable name="operation" as="element(o:operation)" select="fp:operation(., ())"/>
+        <xsl:variable name="forward" as="xs:boolean" select="empty(fp:realization($bc)) or @name = $declared"/>
+        <xsl:if test="not($forward)">
+          <xsl:sequence select="f:warn('ORO011', $service-port/@port, 'component ''' || $bc/@name || ''' requires operation '''
+              || @name || ''' of interface ''' || $service-port/@interface-name || ''', but its class '''
+              || $bc/@realization-name || ''' does not declare it: the generated caller caller_' || $operation/@name
+              || ' is there, but the class cannot call it; declare the operation (abstract) in the class')"/>
+        </xsl:if>
+        <o:operation-caller member="caller_{$operation/@name}" forward="{$forward}">
+          <xsl:sequence select="$operation/@*, $operation/node()"/>
+        </o:operation-caller>
+      </xsl:for-each>
+    </o:required-service>
   </xsl:function>
 
   <!-- (xml value, script literal, C++ literal) of a default value -->
@@ -389,10 +419,15 @@
       <o:activity type="Activity" periodic="{number($activity/@period) ne 0}" period="{$activity/@period}"
                   priority="{$activity/@priority}" scheduler="ORO_SCHED_{$activity/@scheduler}"
                   cpu-affinity="{$activity/@cpu-affinity}"/>
-      <xsl:for-each select="distinct-values($connections[pim:reader/@instance = $instance/@name]
+      <xsl:variable name="calls" as="element(pim:call)*" select="$binding/pim:call[pim:caller/@instance eq $instance/@name]"/>
+      <xsl:for-each select="distinct-values(($connections[pim:reader/@instance = $instance/@name]
                               [exists(key('fp:id', @interface, root($instance))/pim:operation)]
-                              /pim:writer/@instance[. ne $instance/@name])">
+                              /pim:writer/@instance[. ne $instance/@name], $calls/pim:provider/@instance))">
         <o:peer instance="{.}"/>
+      </xsl:for-each>
+      <xsl:for-each select="$calls">
+        <o:call xmi-id="{@xmi-id}" name="{@name}" service="{key('fp:id', @interface, root(.))/@name}"
+                provider="{pim:provider/@instance}"/>
       </xsl:for-each>
       <xsl:for-each select="$connections">
         <xsl:variable name="connection" as="element(pim:connection)" select="."/>

@@ -136,7 +136,8 @@
     <xsl:variable name="components" as="element(pim:bound-component)*"
         select="$binding/pim:bound-component[exists(key('fp:instance-of', @component))]"/>
     <xsl:sequence select="fp:check-class-names($components, 'ROS004')"/>
-    <xsl:sequence select="fp:refuse-services($components, 'ROS009')"/>
+    <!-- every instance is generated for ROS (ROS100): no call crosses middlewares here -->
+    <xsl:sequence select="fp:check-services($components, 'ROS009'), fp:warn-unbound-services($binding/pim:instance, 'ROS105')"/>
     <xsl:sequence select="fp:ros-check-targets(.)"/>
     <!-- fp:host-key of each host the instances name, made once per host -->
     <xsl:variable name="host-keys" as="map(xs:string, xs:string)"
@@ -326,6 +327,7 @@
       <xsl:sequence select="fp:psm-hooks($bc)"/>
       <xsl:sequence select="$bc/pim:data-port ! fp:ros-port(., $instances)"/>
       <xsl:sequence select="fp:services($bc)"/>
+      <xsl:sequence select="$bc/pim:service-port[@role eq 'required'] ! fp:service-clients(., $bc)"/>
       <xsl:variable name="configurable" as="element(pim:attribute)*" select="fp:configurable-attributes($bc)"/>
       <xsl:sequence select="if (exists($configurable)) then $configurable ! fp:parameter(.)
                             else fp:convention-attributes($bc)[exists(fp:type(.)[@cpp ne 'void'])] ! fp:parameter(.)"/>
@@ -360,11 +362,52 @@
     <xsl:variable name="services" as="element(r:service)*" select="$operations ! fp:service(.)"/>
     <xsl:sequence select="$services"/>
     <xsl:variable name="left-out" as="element(pim:operation)*" select="$operations[not(@id = $services/@xmi-id)]"/>
+    <xsl:sequence select="f:fail-all($left-out[exists(fp:provided-service($bc, .))] ! fp:no-std-srv(., fp:provided-service($bc, .), 'provides'))"/>
     <xsl:if test="exists($left-out)">
       <xsl:sequence select="f:warn('ROS101', $left-out[1]/@id, 'operation(s) ''' || string-join($left-out/@name, ''', ''')
           || ''' of ''' || fp:owner($bc)/@name || ''' fit no std_srvs service (Empty: no argument, no result; Trigger: no argument,'
           || ' Boolean result; SetBool: one Boolean argument): not exposed as ROS services')"/>
     </xsl:if>
+  </xsl:function>
+
+  <!-- ROS009 for operation $operation of interface $interface that a
+       component provides or requires ($role): no std_srvs service fits -->
+  <xsl:function name="fp:no-std-srv" as="map(*)">
+    <xsl:param name="operation" as="element(pim:operation)"/>
+    <xsl:param name="interface" as="xs:string"/>
+    <xsl:param name="role" as="xs:string"/>
+    <xsl:sequence select="map { 'code': 'ROS009', 'id': string($operation/@id), 'message': 'operation '''
+        || $operation/@name || ''' of interface ''' || $interface || ''', which a component ' || $role
+        || ', fits no std_srvs service (Empty: no argument, no result; Trigger: no argument, Boolean result;'
+        || ' SetBool: one Boolean argument): the ROS targets call operations through std_srvs services only' }"/>
+  </xsl:function>
+
+  <!-- a required interface (seed 003): a service client per operation,
+       remapped per instance to the provider's service; the realizing class
+       calls the operation by its name where it declares it (virtual, for the
+       node to override; else ROS106) -->
+  <xsl:function name="fp:service-clients" as="element(r:service-client)*">
+    <xsl:param name="service-port" as="element(pim:service-port)"/>
+    <xsl:param name="bc" as="element(pim:bound-component)"/>
+    <xsl:for-each select="fp:interface-operations($service-port)">
+      <xsl:variable name="service" as="element(r:service)?" select="fp:service(.)"/>
+      <xsl:if test="empty($service)">
+        <xsl:sequence select="f:fail-all(fp:no-std-srv(., $service-port/@interface-name, 'requires'))"/>
+      </xsl:if>
+      <xsl:variable name="forward" as="xs:boolean" select="@name = fp:callable($bc)/@name"/>
+      <xsl:if test="not($forward)">
+        <xsl:sequence select="f:warn('ROS106', $service-port/@port, 'component ''' || $bc/@name || ''' requires operation '''
+            || @name || ''' of interface ''' || $service-port/@interface-name || ''', but its class '''
+            || $bc/@realization-name || ''' does not declare it: the generated client ' || $service/@member
+            || ' is there, but the class cannot call it; declare the operation (abstract) in the class')"/>
+      </xsl:if>
+      <r:service-client xmi-id="{@id}" name="{$service/@name}" srv="{$service/@srv}" returns-bool="{$service/@returns-bool}"
+          member="client_{$service/@name}_" service="{$service-port/@interface-name}" forward="{$forward}">
+        <xsl:if test="$service/@srv eq 'std_srvs/SetBool'">
+          <xsl:attribute name="argument" select="f:cpp-identifier((pim:parameter[@direction ne 'return']/@name[normalize-space(.)], 'data')[1])"/>
+        </xsl:if>
+      </r:service-client>
+    </xsl:for-each>
   </xsl:function>
 
   <!-- N3: a std_srvs service, or nothing (the caller warns: ROS101) -->
@@ -469,6 +512,16 @@
           <xsl:variable name="topic" as="xs:string" select="(pim:policy/@topic[normalize-space(.)], @name)[1]"/>
           <r:remap from="{$port/@topic}"
                    to="{if ($instance/@parent and not(starts-with($topic, '/'))) then '/' || $topic else $topic}"/>
+        </xsl:for-each>
+      </xsl:for-each>
+      <!-- operation calls (seed 003): each client to the provider's
+           private service, named from the root -->
+      <xsl:for-each select="$instance/../pim:call[pim:caller/@instance eq $instance/@name]">
+        <xsl:variable name="provider" as="element(pim:instance)" select="../pim:instance[@name eq current()/pim:provider/@instance]"/>
+        <xsl:variable name="node-path" as="xs:string"
+            select="if ($provider/@parent) then translate($provider/@path, '.', '/') else $provider/@name"/>
+        <xsl:for-each select="$node/r:service-client[@service eq key('fp:id', current()/@interface, root($instance))/@name]">
+          <r:remap from="{@name}" to="/{$node-path}/{@name}"/>
         </xsl:for-each>
       </xsl:for-each>
       <r:parameter-value name="update_period" yaml="{fp:decimal($activity/@period)}"/>

@@ -27,7 +27,7 @@
     exclude-result-prefixes="#all">
 
   <xsl:function name="fp:signature" as="xs:string">
-    <xsl:param name="op" as="element(o:operation)"/>
+    <xsl:param name="op" as="element()"/><!-- o:operation or o:operation-caller -->
     <xsl:param name="with-names" as="xs:boolean"/>
     <xsl:sequence select="concat('(', string-join($op/o:parameter !
         (concat(@decl-type, ' ', (if ($with-names) then @name else concat('/*', @name, '*/')))), ', '), ')')"/>
@@ -38,6 +38,7 @@
     <xsl:sequence select="'#include &lt;rtt/TaskContext.hpp&gt;',
         if ($tc/o:port[@direction eq 'in']) then '#include &lt;rtt/InputPort.hpp&gt;' else (),
         if ($tc/o:port[@direction eq 'out']) then '#include &lt;rtt/OutputPort.hpp&gt;' else (),
+        if ($tc/o:required-service) then ('#include &lt;rtt/Logger.hpp&gt;', '#include &lt;rtt/OperationCaller.hpp&gt;') else (),
         '#include &lt;string&gt;'"/>
   </xsl:function>
 
@@ -46,7 +47,45 @@
     <xsl:sequence select="
         if ($tc/o:port) then ('', '// data ports (R2)', $tc/o:port ! (concat(@rtt-class, ' ', @member, ';'))) else (),
         if ($tc/@kind eq 'base' and $tc/o:property)
-        then ('', '// properties (R4)', $tc/o:property ! (concat(@cpp-type, ' ', @member, ';'))) else ()"/>
+        then ('', '// properties (R4)', $tc/o:property ! (concat(@cpp-type, ' ', @member, ';'))) else (),
+        $tc/o:required-service ! (
+          '', concat('// required interface ', @name, ' (port ', @port, '): its operations, called through the provider'),
+          o:operation-caller ! concat('RTT::OperationCaller&lt;', @return-type, '(',
+                                      string-join(o:parameter/@decl-type, ', '), ')&gt; ', @member, ';'),
+          o:operation-caller[xs:boolean(@forward)] ! concat(@return-type, ' ', @name, fp:signature(., true()),
+                                      if ($tc/@kind eq 'wrapper') then ' override;' else ';')),
+        if ($tc/o:required-service)
+        then ('', '// connects the required interfaces (script: connectServices; XML: from the Peers)',
+              'bool connectRequiredServices();') else ()"/>
+  </xsl:function>
+
+  <!-- the generated methods of required interfaces: the connection from
+       the peers where the deployment did not make it, and one method per
+       operation that calls it -->
+  <xsl:function name="fp:required-service-methods" as="xs:string*">
+    <xsl:param name="tc" as="element(o:task-context)"/>
+    <xsl:variable name="cls" as="xs:string" select="$tc/@generated-class"/>
+    <xsl:if test="$tc/o:required-service">
+      <xsl:sequence select="'', concat('bool ', $cls, '::connectRequiredServices()'), '{',
+          $tc/o:required-service ! (
+            concat('  if (!this-&gt;requires(', fp:cpp-string(@name), ')-&gt;ready()) {'),
+            '    for (const std::string&amp; peer : this-&gt;getPeerList())',
+            '      this-&gt;connectServices(this-&gt;getPeer(peer));',
+            '  }'),
+          '  bool ready = true;',
+          $tc/o:required-service ! (
+            concat('  if (!this-&gt;requires(', fp:cpp-string(@name), ')-&gt;ready()) {'),
+            concat('    RTT::log(RTT::Error) &lt;&lt; getName() &lt;&lt; ', fp:cpp-string(': required interface ' || @name
+                   || ' (port ' || @port || ') is not connected to a component that provides it'), ' &lt;&lt; RTT::endlog();'),
+            '    ready = false;',
+            '  }'),
+          '  return ready;', '}'"/>
+      <xsl:for-each select="$tc/o:required-service/o:operation-caller[xs:boolean(@forward)]">
+        <xsl:sequence select="'', concat(@return-type, ' ', $cls, '::', @name, fp:signature(., true())), '{',
+            concat('  ', if (@return-type ne 'void') then 'return ' else '', @member, '(',
+                   string-join(o:parameter/@name, ', '), ');'), '}'"/>
+      </xsl:for-each>
+    </xsl:if>
   </xsl:function>
 
   <!-- constructor body: ports, properties, operations -->
@@ -66,11 +105,15 @@
            ').doc(', fp:cpp-string(fp:doc-of(., @name)), ');')"/>
     </xsl:for-each>
     <xsl:for-each select="$tc/o:operation">
-      <xsl:sequence select="concat('this->addOperation(', fp:cpp-string(@name), ', &amp;', $tc/@generated-class,
+      <xsl:sequence select="concat('this->', (@service ! concat('provides(', fp:cpp-string(.), ')->')),
+           'addOperation(', fp:cpp-string(@name), ', &amp;', $tc/@generated-class,
            '::', @name, ', this, ', @thread, ')'),
           concat('    .doc(', fp:cpp-string(fp:doc-of(., @name)), ')',
            string-join(o:parameter ! (concat('.arg(', fp:cpp-string(@name), ', ', fp:cpp-string(fp:doc-of(., concat(@direction, ' ', @cpp-type))), ')')), ''),
            ';')"/>
+    </xsl:for-each>
+    <xsl:for-each select="$tc/o:required-service/o:operation-caller">
+      <xsl:sequence select="concat('this->requires(', fp:cpp-string(../@name), ')->addOperationCaller(', @member, ');')"/>
     </xsl:for-each>
   </xsl:function>
 
@@ -79,6 +122,7 @@
     <xsl:variable name="inits" as="xs:string*" select="
         'RTT::TaskContext(name, PreOperational)',
         $tc/o:port ! (concat(@member, '(', fp:cpp-string(@name), ')')),
+        $tc/o:required-service/o:operation-caller ! (concat(@member, '(', fp:cpp-string(@name), ')')),
         if ($tc/@kind eq 'base') then $tc/o:property ! (concat(@member, '(', @cpp-default, ')')) else ()"/>
     <xsl:sequence select="string-join($inits, ',&#10;    ')"/>
   </xsl:function>
@@ -124,7 +168,8 @@
           concat('  // operations (R3): implemented by ', $tc/@class),
           $tc/o:operation ! (concat('  virtual ', @return-type, ' ', @name, fp:signature(., true()), ' = 0;')))
         else (),
-        if ($tc/o:port or (not($wrapper) and $tc/o:property)) then ('', 'protected:') else (),
+        if (not($wrapper) and $tc/o:required-service) then ('', '  bool configureHook() override;') else (),
+        if ($tc/o:port or (not($wrapper) and $tc/o:property) or $tc/o:required-service) then ('', 'protected:') else (),
         fp:indent(2, fp:member-decls($tc)[position() gt 1]),
         '};',
         '',
@@ -153,7 +198,10 @@
         concat($cls, '::~', $cls, '()'),
         '{',
         '}',
-        if ($wrapper) then fp:wrapper-hooks($tc) else (),
+        if ($wrapper) then fp:wrapper-hooks($tc)
+        else if ($tc/o:required-service) then ('', concat('bool ', $cls, '::configureHook()'), '{', '  return connectRequiredServices();', '}')
+        else (),
+        fp:required-service-methods($tc),
         '',
         concat('}  // namespace ', $tc/@namespace)))"/>
   </xsl:function>
@@ -166,6 +214,9 @@
       <xsl:variable name="host" as="element(o:hook)" select="."/>
       <xsl:variable name="bool" as="xs:boolean" select="@name = ('configure', 'start')"/>
       <xsl:sequence select="'', concat((if ($bool) then 'bool ' else 'void '), $cls, '::', @name, 'Hook()'), '{'"/>
+      <xsl:if test="@name eq 'configure' and $tc/o:required-service">
+        <xsl:sequence select="'  if (!connectRequiredServices())', '    return false;'"/>
+      </xsl:if>
       <xsl:if test="@name eq 'update'">
         <xsl:for-each select="$tc/o:port[@direction eq 'in']">
           <xsl:variable name="value" as="xs:string" select="concat(@name, '_sample')"/>
@@ -255,7 +306,8 @@
         '',
         concat('bool ', $cls, '::configureHook()'),
         '{',
-        '  return true;',
+        if ($tc/o:required-service) then concat('  return ', $tc/@generated-class, '::configureHook();  // connects the required interfaces')
+        else '  return true;',
         '}',
         '',
         concat('bool ', $cls, '::startHook()'),

@@ -260,6 +260,9 @@
         $deployment/o:instance ! fp:ops-activity(., $file),
         if ($deployment/o:instance/o:peer) then ('', '// peers', $deployment/o:instance ! (for $p in o:peer return
             concat('addPeer(', fp:cpp-string(@name), ', ', fp:cpp-string($p/@instance), ')'))) else (),
+        if ($deployment/o:instance/o:call) then ('', '// operation calls: required interfaces to the components that provide them',
+            $deployment/o:instance ! (for $c in o:call return
+            concat('connectServices(', fp:cpp-string(@name), ', ', fp:cpp-string($c/@provider), ')  // ', $c/@service))) else (),
         if ($deployment/o:instance/o:property-value) then ('', '// properties (R4)',
             $deployment/o:instance ! (for $p in o:property-value return concat(@name, '.', $p/@name, ' = ', $p/@script-value)),
             '',
@@ -339,6 +342,10 @@
         if ($deployment/o:instance/o:peer) then ('', '  -- peers', $deployment/o:instance ! (for $p in o:peer return
             concat('  check(depl:addPeer(', fp:cpp-string(@name), ', ', fp:cpp-string($p/@instance),
              '), &quot;addPeer ', @name, ' -&gt; ', $p/@instance, '&quot;)'))) else (),
+        if ($deployment/o:instance/o:call) then ('', '  -- operation calls: required interfaces to the components that provide them',
+            $deployment/o:instance ! (for $c in o:call return
+            concat('  check(depl:connectServices(', fp:cpp-string(@name), ', ', fp:cpp-string($c/@provider),
+             '), &quot;connectServices ', @name, ' -&gt; ', $c/@provider, ' (', $c/@service, ')&quot;)'))) else (),
         if ($deployment/o:instance/o:property-value) then ('', '  -- properties (R4)',
             $deployment/o:instance ! (for $p in o:property-value return
               concat('  check(pcall(function() comps[', fp:cpp-string(@name), ']:getProperty(', fp:cpp-string($p/@name),
@@ -472,7 +479,10 @@
           return concat('  check(', if ($property/@xml-type = ('double', 'float')) then concat('near(', $get, ', ', $want, ')')
                                      else concat($get, ' == ', $want),
                         ', ', fp:cpp-string(concat('property ', @name, '.', $property/@name, ' = ')), ' .. tostring(', $want,
-                        ') .. &quot; (is &quot; .. tostring(', $get, ') .. &quot;)&quot;)'))"/>
+                        ') .. &quot; (is &quot; .. tostring(', $get, ') .. &quot;)&quot;)'),
+          for $call in o:call return
+          concat('  check(comps[', fp:cpp-string(@name), ']:requires(', fp:cpp-string($call/@service), '):ready(), ',
+                 fp:cpp-string(concat(@name, ' calls ', $call/@provider, ' through ', $call/@service, ' (every operation connected)')), ')'))"/>
     </xsl:for-each>
   </xsl:function>
 

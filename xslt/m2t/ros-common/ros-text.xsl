@@ -9,6 +9,8 @@
   guards, library paths) are in ../common/text.xsl.
     fp:double-literal($v)  a C++ / YAML floating literal of a number
     fp:service-body($s, $rc, $acc)  the statements of a std_srvs callback
+    fp:client-method($c, $qualifier)  the signature of a method calling a required operation
+    fp:client-overrides($node)   their declarations in the node class
     fp:from-msg / fp:to-msg  datum <-> message conversion (ROS 1 and 2 alike)
     fp:ros-step($node, $types, $publish)  the body of a node's step()
     fp:ros-header-opening / fp:ros-source-opening($node)  banner and guard /
@@ -87,6 +89,26 @@
   <xsl:function name="fp:double-literal" as="xs:string">
     <xsl:param name="value" as="xs:string"/>
     <xsl:sequence select="if (contains($value, '.') or contains(lower-case($value), 'e')) then $value else concat($value, '.0')"/>
+  </xsl:function>
+
+  <!-- the method that calls operation $client of a required interface:
+       "bool name(bool argument)"; $qualifier is '' or 'Class::' -->
+  <xsl:function name="fp:client-method" as="xs:string">
+    <xsl:param name="client" as="element(r:service-client)"/>
+    <xsl:param name="qualifier" as="xs:string"/>
+    <xsl:sequence select="concat(if (xs:boolean($client/@returns-bool)) then 'bool ' else 'void ', $qualifier, $client/@name,
+                                 '(', $client/@argument ! concat('bool ', .), ')')"/>
+  </xsl:function>
+
+  <!-- the declarations a node class adds for its required interfaces:
+       the overrides that call (protected, as the realizing class declares
+       them) -->
+  <xsl:function name="fp:client-overrides" as="xs:string*">
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:if test="$node/r:service-client[xs:boolean(@forward)]">
+      <xsl:sequence select="'', 'protected:', '  // required interfaces (seed 003): each operation calls the provider''s service',
+          $node/r:service-client[xs:boolean(@forward)] ! concat('  ', fp:client-method(., ''), ' override;')"/>
+    </xsl:if>
   </xsl:function>
 
   <!-- body of a std_srvs service callback; $acc is "." (ROS 1) or "->" (ROS 2) -->

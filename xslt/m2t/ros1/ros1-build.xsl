@@ -24,7 +24,7 @@
   <xsl:function name="fp:ros1-deps" as="xs:string*">
     <xsl:param name="package" as="element(r:package)"/>
     <xsl:sequence select="sort(distinct-values(('roscpp',
-        ($package/r:node/r:port/r:message/@msg, $package/r:node/r:service/@srv)[contains(., '/')] ! substring-before(., '/'))))"/>
+        ($package/r:node/r:port/r:message/@msg, $package/r:node/r:service/@srv, $package/r:node/r:service-client/@srv)[contains(., '/')] ! substring-before(., '/'))))"/>
   </xsl:function>
 
   <xsl:function name="fp:ros1-cmakelists" as="xs:string">

@@ -37,7 +37,7 @@
     <xsl:param name="node" as="element(r:node)"/>
     <xsl:variable name="pkg" as="xs:string" select="$node/@namespace"/>
     <xsl:sequence select="'#include &lt;ros/ros.h&gt;',
-        distinct-values(($node/r:port/r:message/@msg, $node/r:service/@srv) ! (concat('#include &lt;', fp:ros1-type(., $pkg)[1], '&gt;'))),
+        distinct-values(($node/r:port/r:message/@msg, $node/r:service/@srv, $node/r:service-client/@srv) ! (concat('#include &lt;', fp:ros1-type(., $pkg)[1], '&gt;'))),
         '#include &lt;string&gt;',
         concat('#include &lt;', $node/r:realizing-class/@header, '&gt;')"/>
   </xsl:function>
@@ -68,6 +68,7 @@
         '  bool setUp();',
         '  /// Stops the timer, calls stop() and cleanup().',
         '  void tearDown();',
+        fp:client-overrides($node),
         '',
         'private:',
         '  void step();',
@@ -81,6 +82,7 @@
         $node/r:port[@direction eq 'out'] ! (concat('  ros::Publisher ', @member, ';')),
         $node/r:port[@direction eq 'in'] ! (concat('  ros::Subscriber ', @member, ';')),
         $node/r:service ! (concat('  ros::ServiceServer ', @member, ';')),
+        $node/r:service-client ! (concat('  ros::ServiceClient ', @member, ';')),
         '  ros::Timer timer_;',
         '  double period_;',
         '  bool running_;',
@@ -174,6 +176,8 @@
              r:qos/@depth, ', &amp;', $class, '::on_', @name, ', this);'),
         $node/r:service ! concat('  ', @member, ' = private_nh_.advertiseService(', fp:cpp-string(@name), ', &amp;',
              $class, '::on_', @name, ', this);'),
+        $node/r:service-client ! concat('  ', @member, ' = nh_.serviceClient&lt;', fp:ros1-type(@srv, $package)[2], '&gt;(',
+             fp:cpp-string(@name), ');'),
         '  if (period_ &gt; 0.0) {',
         concat('    timer_ = nh_.createTimer(ros::Duration(period_), &amp;', $class, '::onTimer, this);'),
         '  }',
@@ -203,6 +207,19 @@
           '{',
           fp:service-body($service, $realizing-class, '.'),
           '  return true;',
+          '}'),
+        for $client in $node/r:service-client[xs:boolean(@forward)] return (
+          '',
+          fp:client-method($client, concat($class, '::')),
+          '{',
+          concat('  ', fp:ros1-type($client/@srv, $node/@namespace)[2], ' srv;'),
+          $client/@argument ! concat('  srv.request.data = ', ., ';'),
+          concat('  if (!', $client/@member, '.call(srv)) {'),
+          concat('    ROS_WARN_STREAM(ros::this_node::getName() &lt;&lt; &quot;: service &quot; &lt;&lt; ', $client/@member,
+                 '.getService() &lt;&lt; &quot; (', $client/@service, ') did not answer&quot;);'),
+          if (xs:boolean($client/@returns-bool)) then '    return false;' else '    return;',
+          '  }',
+          if (xs:boolean($client/@returns-bool)) then '  return srv.response.success;' else (),
           '}'))"/>
   </xsl:function>
 
