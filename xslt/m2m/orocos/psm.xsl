@@ -39,7 +39,10 @@
   left without writer or reader is dropped: a name used by one port would
   need a transport). Peers: a reader instance gets the writer instances of a
   connection whose interface declares operations (it may call them); data
-  flow alone needs no peers.
+  flow alone needs no peers. Operation calls (pim:call, seed 003): the
+  caller gets the provider as a peer and an o:call (the text stage connects
+  the services); the provider's operations of a provided interface carry
+  o:operation/@service, the caller an o:required-service of callers.
   Deployment sequence (seed 002): the o:instance elements are written in
   the binding's start order (pim:instance/@start-order; instances without
   one, on a cycle of the constraints, come last in binding order), so the
@@ -53,11 +56,16 @@
     ORO003  the input has no pim:binding (run xslt/m2m/bind.xsl first)
     ORO004  two component types map to the same C++ class name
     ORO005  nothing to generate: the model has no component instance
+    ORO009  an operation call Orocos cannot make (two ports of one interface
+            and role, two required operations of one name, a call to or
+            from another middleware)
   Warnings (f:warn):
     ORO006  no instance is deployed on OROCOS: all instances are generated
             for Orocos anyway (the same model on another middleware)
     ORO007  an instance deployed on another middleware is left out (the model
             deploys some components on OROCOS and others elsewhere)
+    ORO010  a required interface no connector binds to a provider
+    ORO011  a required operation the realizing class does not declare
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"

@@ -53,6 +53,9 @@
     ROS007  a component with an instance has no realizing class (the ROS
             targets do not generate a user base class yet)
     ROS008  nothing to generate: the model has no component instance
+    ROS009  an operation call ROS cannot make (an operation of a provided
+            or required interface that fits no std_srvs service, two ports
+            of one interface and role, two required operations of one name)
   Warnings (f:warn):
     ROS100  instances deployed on an execution environment of another
             middleware are generated for ROS anyway (once per model)
@@ -61,6 +64,9 @@
     ROS102  ROS 2 launch has no machine tag: one launch file per host
     ROS103  a port is in several connections: only the first one's topic
             and policy are used
+    ROS104  a value set on an instance's property that is no parameter
+    ROS105  a required interface no connector binds to a provider
+    ROS106  a required operation the realizing class does not declare
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
