@@ -36,6 +36,7 @@
     fp:check-services($components, $code)  one port per interface and role, one required operation per name
     fp:check-calls($calls, $targets, $code)  no call crosses middlewares
     fp:warn-unbound-services($instances, $code)  required interfaces no call binds
+    fp:calls-declared($bc, $service-port, $operation, $generated, $code)  the class declares a required operation
     fp:warn-unused-values($instance, $exposed, $code)  values set on properties the target does not expose
     fp:configurable-attributes($bc)  the attributes stereotyped Configurable
     fp:convention-attributes($bc)    without any: the convention's choice
@@ -59,6 +60,10 @@
 
   <!-- every PIM element by its id; the including PSMs look up with it too -->
   <xsl:key name="fp:id" match="*[@id]" use="@id"/>
+  <!-- the instances of a component, its binding, the calls an instance makes -->
+  <xsl:key name="fp:instance-of" match="pim:instance" use="@component"/>
+  <xsl:key name="fp:bound-component" match="pim:bound-component" use="@component"/>
+  <xsl:key name="fp:call-by-caller" match="pim:call" use="pim:caller/@instance"/>
 
   <!-- ========================================================== package -->
   <xsl:function name="fp:package-name" as="xs:string">
@@ -137,13 +142,35 @@
     <xsl:param name="code" as="xs:string"/>
     <xsl:for-each select="$instances">
       <xsl:variable name="instance" as="element(pim:instance)" select="."/>
-      <xsl:for-each select="../pim:bound-component[@component eq $instance/@component]/pim:service-port[@role eq 'required']
-                            [not(@name = ../../pim:call/pim:caller[@instance eq $instance/@name]/@service-port)]">
+      <xsl:for-each select="key('fp:bound-component', @component, root(.))/pim:service-port[@role eq 'required']
+                            [not(@name = key('fp:call-by-caller', $instance/@name, root(.))/pim:caller/@service-port)]">
         <xsl:sequence select="f:warn($code, @port, 'instance ''' || $instance/@name || ''' requires interface '''
             || @interface-name || ''' (port ''' || @port-name || ''') but no connector binds it to a provider:'
             || ' the component will not configure; draw the connector to the component that provides it')"/>
       </xsl:for-each>
     </xsl:for-each>
+  </xsl:function>
+
+  <!-- whether the class of $bc declares $operation of its required
+       interface ($service-port), so that the generated class can override
+       it to make the call (a component without a class: the generated base
+       defines it); else a warning $code naming $generated, the caller the
+       target generates anyway -->
+  <xsl:function name="fp:calls-declared" as="xs:boolean">
+    <xsl:param name="bc" as="element(pim:bound-component)"/>
+    <xsl:param name="service-port" as="element(pim:service-port)"/>
+    <xsl:param name="operation" as="element(pim:operation)"/>
+    <xsl:param name="generated" as="xs:string"/>
+    <xsl:param name="code" as="xs:string"/>
+    <xsl:variable name="declared" as="xs:boolean"
+        select="empty(fp:realization($bc)) or $operation/@name = fp:callable($bc)/@name"/>
+    <xsl:if test="not($declared)">
+      <xsl:sequence select="f:warn($code, $service-port/@port, 'component ''' || $bc/@name || ''' requires operation '''
+          || $operation/@name || ''' of interface ''' || $service-port/@interface-name || ''', but its class '''
+          || $bc/@realization-name || ''' does not declare it: the generated ' || $generated
+          || ' is there, but the class cannot call it; declare the operation (abstract) in the class')"/>
+    </xsl:if>
+    <xsl:sequence select="$declared"/>
   </xsl:function>
 
   <!-- fails with $code when two of $components map to one C++ class -->

@@ -99,7 +99,6 @@
   <xsl:variable name="fp:psm-prefix" as="xs:string" select="'o'"/>
 
   <xsl:key name="fp:type" match="ty:type" use="@primitive"/>
-  <xsl:key name="fp:instance-of" match="pim:instance" use="@component"/>
   <xsl:key name="fp:instance-by-middleware" match="pim:instance" use="@middleware"/>
   <xsl:key name="fp:connection-by-instance" match="pim:connection" use="(pim:writer | pim:reader)/@instance"/>
   <xsl:key name="fp:host" match="pim:host" use="@xmi-id"/>
@@ -346,18 +345,11 @@
   <xsl:function name="fp:required-service" as="element(o:required-service)">
     <xsl:param name="service-port" as="element(pim:service-port)"/>
     <xsl:param name="bc" as="element(pim:bound-component)"/>
-    <xsl:variable name="declared" as="xs:string*" select="fp:callable($bc)/@name"/>
     <o:required-service xmi-id="{$service-port/@port}" name="{$service-port/@interface-name}" port="{$service-port/@port-name}">
       <xsl:for-each select="fp:interface-operations($service-port)">
         <xsl:variable name="operation" as="element(o:operation)" select="fp:operation(., ())"/>
-        <xsl:variable name="forward" as="xs:boolean" select="empty(fp:realization($bc)) or @name = $declared"/>
-        <xsl:if test="not($forward)">
-          <xsl:sequence select="f:warn('ORO011', $service-port/@port, 'component ''' || $bc/@name || ''' requires operation '''
-              || @name || ''' of interface ''' || $service-port/@interface-name || ''', but its class '''
-              || $bc/@realization-name || ''' does not declare it: the generated caller caller_' || $operation/@name
-              || ' is there, but the class cannot call it; declare the operation (abstract) in the class')"/>
-        </xsl:if>
-        <o:operation-caller member="caller_{$operation/@name}" forward="{$forward}">
+        <o:operation-caller member="caller_{$operation/@name}"
+            forward="{fp:calls-declared($bc, $service-port, ., 'caller caller_' || $operation/@name, 'ORO011')}">
           <xsl:sequence select="$operation/@*, $operation/node()"/>
         </o:operation-caller>
       </xsl:for-each>
@@ -427,7 +419,7 @@
       <o:activity type="Activity" periodic="{number($activity/@period) ne 0}" period="{$activity/@period}"
                   priority="{$activity/@priority}" scheduler="ORO_SCHED_{$activity/@scheduler}"
                   cpu-affinity="{$activity/@cpu-affinity}"/>
-      <xsl:variable name="calls" as="element(pim:call)*" select="$binding/pim:call[pim:caller/@instance eq $instance/@name]"/>
+      <xsl:variable name="calls" as="element(pim:call)*" select="key('fp:call-by-caller', $instance/@name, root($instance))"/>
       <xsl:for-each select="distinct-values(($connections[pim:reader/@instance = $instance/@name]
                               [exists(key('fp:id', @interface, root($instance))/pim:operation)]
                               /pim:writer/@instance[. ne $instance/@name], $calls/pim:provider/@instance))">

@@ -107,7 +107,6 @@
 
   <xsl:key name="fp:type-by-primitive" match="ty:type[@primitive]" use="@primitive"/>
   <xsl:key name="fp:type-by-name" match="ty:type[@type-name]" use="@type-name"/>
-  <xsl:key name="fp:instance-of" match="pim:instance" use="@component"/>
   <xsl:key name="fp:host" match="pim:host" use="@xmi-id"/>
   <xsl:key name="fp:connection-by-end" match="pim:connection"
       use="(pim:writer | pim:reader) ! (@instance || '/' || @data-port)"/>
@@ -400,15 +399,9 @@
       <xsl:if test="empty($service)">
         <xsl:sequence select="f:fail-all(fp:no-std-srv(., $service-port/@interface-name, 'requires'))"/>
       </xsl:if>
-      <xsl:variable name="forward" as="xs:boolean" select="@name = fp:callable($bc)/@name"/>
-      <xsl:if test="not($forward)">
-        <xsl:sequence select="f:warn('ROS106', $service-port/@port, 'component ''' || $bc/@name || ''' requires operation '''
-            || @name || ''' of interface ''' || $service-port/@interface-name || ''', but its class '''
-            || $bc/@realization-name || ''' does not declare it: the generated client ' || $service/@member
-            || ' is there, but the class cannot call it; declare the operation (abstract) in the class')"/>
-      </xsl:if>
       <r:service-client xmi-id="{@id}" name="{$service/@name}" srv="{$service/@srv}" returns-bool="{$service/@returns-bool}"
-          member="client_{$service/@name}_" service="{$service-port/@interface-name}" forward="{$forward}">
+          member="client_{$service/@name}_" service="{$service-port/@interface-name}"
+          forward="{fp:calls-declared($bc, $service-port, ., 'client client_' || $service/@name || '_', 'ROS106')}">
         <xsl:if test="$service/@srv eq 'std_srvs/SetBool'">
           <xsl:attribute name="argument" select="f:cpp-identifier((pim:parameter[@direction ne 'return']/@name[normalize-space(.)], 'data')[1])"/>
         </xsl:if>
@@ -522,10 +515,9 @@
       </xsl:for-each>
       <!-- operation calls (seed 003): each client to the provider's
            private service, named from the root -->
-      <xsl:for-each select="$instance/../pim:call[pim:caller/@instance eq $instance/@name]">
+      <xsl:for-each select="key('fp:call-by-caller', $instance/@name, root($instance))">
         <xsl:variable name="provider" as="element(pim:instance)" select="../pim:instance[@name eq current()/pim:provider/@instance]"/>
-        <xsl:variable name="node-path" as="xs:string"
-            select="if ($provider/@parent) then translate($provider/@path, '.', '/') else $provider/@name"/>
+        <xsl:variable name="node-path" as="xs:string" select="translate(($provider/@path, $provider/@name)[1], '.', '/')"/>
         <xsl:for-each select="$node/r:service-client[@service eq key('fp:id', current()/@interface, root($instance))/@name]">
           <r:remap from="{@name}" to="/{$node-path}/{@name}"/>
         </xsl:for-each>

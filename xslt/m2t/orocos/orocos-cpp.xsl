@@ -67,11 +67,11 @@
     <xsl:variable name="cls" as="xs:string" select="$tc/@generated-class"/>
     <xsl:if test="$tc/o:required-service">
       <xsl:sequence select="'', concat('bool ', $cls, '::connectRequiredServices()'), '{',
-          $tc/o:required-service ! (
-            concat('  if (!this-&gt;requires(', fp:cpp-string(@name), ')-&gt;ready()) {'),
-            '    for (const std::string&amp; peer : this-&gt;getPeerList())',
-            '      this-&gt;connectServices(this-&gt;getPeer(peer));',
-            '  }'),
+          concat('  if (', string-join($tc/o:required-service ! concat('!this-&gt;requires(', fp:cpp-string(@name), ')-&gt;ready()'),
+                                       ' || '), ') {'),
+          '    for (const std::string&amp; peer : this-&gt;getPeerList())',
+          '      this-&gt;connectServices(this-&gt;getPeer(peer));',
+          '  }',
           '  bool ready = true;',
           $tc/o:required-service ! (
             concat('  if (!this-&gt;requires(', fp:cpp-string(@name), ')-&gt;ready()) {'),
