@@ -128,6 +128,8 @@
   <xsl:include href="../common/indent.xsl"/>
   <xsl:include href="../common/naming.xsl"/>
   <xsl:include href="../common/profile.xsl"/>
+  <!-- inherited attributes and operations (fp:attributes, fp:operations) -->
+  <xsl:include href="common/data-types.xsl"/>
   <!-- bind, by concern -->
   <xsl:include href="bind/values.xsl"/>
   <xsl:include href="bind/lookups.xsl"/>
@@ -435,7 +437,8 @@
           <xsl:for-each select="key('fp:bc', $inst/@component, $bound-tree)/pim:data-port">
             <fp:ip instance="{$inst/@name}" port="{@port}" data-port="{@name}"
                    direction="{@direction}" interface="{@interface}"
-                   type-key="{(@primitive, @type)[1]}"/>
+                   type-key="{(@primitive, @type)[1]}{if (@upper = ('', '1') or empty(@upper)) then ''
+                             else '[' || @lower || '..' || @upper || ']'}"/>
           </xsl:for-each>
           <!-- a service port: out where provided, in where required -->
           <xsl:for-each select="key('fp:bc', $inst/@component, $bound-tree)/pim:service-port">

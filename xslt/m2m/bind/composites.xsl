@@ -304,7 +304,7 @@
     <xsl:param name="attribute" as="element(pim:attribute)"/>
     <xsl:param name="composite" as="element(pim:component)"/>
     <xsl:sequence select="$composite/pim:part[exists(fp:part-component(.))]
-                          [fp:feature-owner(fp:part-component(.))/pim:attribute/@name = $attribute/@name]"/>
+                          [fp:attributes(fp:feature-owner(fp:part-component(.)))/@name = $attribute/@name]"/>
   </xsl:function>
 
   <!-- BND017 for a property of a composite that promotes the property of
@@ -331,7 +331,7 @@
     </xsl:for-each>
     <xsl:for-each select="$composites/pim:part[exists(fp:part-component(.))]/pim:value">
       <xsl:variable name="type" as="element(pim:component)" select="fp:part-component(..)"/>
-      <xsl:if test="not(@attribute = fp:feature-owner($type)/pim:attribute/@id)">
+      <xsl:if test="not(@attribute = fp:attributes(fp:feature-owner($type))/@id)">
         <xsl:variable name="attribute" as="element()?" select="key('fp:id', @attribute, $root)"/>
         <xsl:sequence select="map { 'code': 'BND018', 'id': string(@id), 'message': 'part ''' || ../@name
             || ''' sets ''' || ($attribute/@name, @attribute)[1] || ''', which is no property of its type '''
@@ -354,7 +354,7 @@
         select="($around[position() mod 2 eq 0] ! key('fp:id', ., $root), $part)"/>
     <xsl:variable name="composites" as="element(pim:component)*"
         select="$around[position() mod 2 eq 1] ! key('fp:id', ., $root)"/>
-    <xsl:for-each select="if (exists($part)) then $owner/pim:attribute else ()">
+    <xsl:for-each select="if (exists($part)) then fp:attributes($owner) else ()">
       <xsl:variable name="holder" as="element()?" select="fp:outermost-value(., count($parts), $parts, $composites, ())"/>
       <xsl:if test="exists($holder)">
         <pim:property-value attribute="{@id}" name="{@name}" value="{($holder/@value, $holder/@default)[1]}"

@@ -157,7 +157,7 @@
                          port-name="{$port/@name}" direction="{$pairs[2 * current()]}"
                          interface="{$instance/@id}" interface-name="{($instance/self::pim:port/@type-name, $instance/@name)[1]}"
                          datum="{$port/@id}" datum-name="{$port/@name}">
-            <xsl:sequence select="$port/(@primitive, @type, @type-name, @upper)"/>
+            <xsl:sequence select="$port/(@primitive, @type, @type-name, @lower, @upper)"/>
           </pim:data-port>
         </xsl:when>
         <xsl:otherwise>
@@ -170,7 +170,7 @@
             <xsl:if test="fp:direction-guessed($port, $component, $realization)">
               <xsl:attribute name="direction-source" select="'guessed'"/>
             </xsl:if>
-            <xsl:sequence select="$data/(@primitive, @type, @type-name, @upper)"/>
+            <xsl:sequence select="$data/(@primitive, @type, @type-name, @lower, @upper)"/>
           </pim:data-port>
         </xsl:otherwise>
       </xsl:choose>

@@ -86,7 +86,7 @@
       <xsl:variable name="owner" as="element()" select="fp:feature-owner($component)"/>
       <xsl:for-each select="key('fp:id', @interface, $model-root)/pim:operation">
         <xsl:variable name="want" as="xs:string" select="fp:operation-signature(.)"/>
-        <xsl:variable name="have" as="element(pim:operation)*" select="$owner/pim:operation[@name eq current()/@name]"/>
+        <xsl:variable name="have" as="element(pim:operation)*" select="fp:operations($owner)[@name eq current()/@name]"/>
         <xsl:if test="if ($service/@role eq 'provided') then not($have ! fp:operation-signature(.) = $want)
                       else exists($have) and not($have ! fp:operation-signature(.) = $want)">
           <xsl:sequence select="map { 'code': 'BND020', 'id': string(($have/@id, $service/@port)[1]), 'message':

@@ -55,14 +55,14 @@
   <xsl:function name="fp:conv" as="xs:string?">
     <xsl:param name="element" as="element()?"/>
     <xsl:param name="name" as="xs:string"/>
-    <xsl:sequence select="$element/pim:attribute[@name eq $name][@default][1]/@default ! string(.)"/>
+    <xsl:sequence select="($element ! fp:attributes(.))[@name eq $name][@default][1]/@default ! string(.)"/>
   </xsl:function>
 
   <!-- the id of the attribute holding that default value -->
   <xsl:function name="fp:conv-holder" as="xs:string">
     <xsl:param name="element" as="element()?"/>
     <xsl:param name="name" as="xs:string"/>
-    <xsl:sequence select="string($element/pim:attribute[@name eq $name][@default][1]/@id)"/>
+    <xsl:sequence select="string(($element ! fp:attributes(.))[@name eq $name][@default][1]/@id)"/>
   </xsl:function>
 
   <!-- ================================================= value parsing -->

@@ -42,6 +42,8 @@
     fp:convention-attributes($bc)    without any: the convention's choice
     fp:parse-default($value, $kind, $primitive, $id, $code)  see below
     fp:decimal($number)          a number text with a '.0' where it has none
+  Data types, arrays and inherited features: data-types.xsl (included).
+  A realizing class's operations and attributes include those it inherits.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -51,6 +53,8 @@
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
     exclude-result-prefixes="#all">
+
+  <xsl:include href="data-types.xsl"/>
 
   <!-- the lifecycle hooks a component may implement, in calling order -->
   <xsl:variable name="fp:lifecycle" as="xs:string+" select="('configure', 'start', 'update', 'stop', 'cleanup')"/>
@@ -211,7 +215,7 @@
 
   <xsl:function name="fp:callable" as="element(pim:operation)*">
     <xsl:param name="bc" as="element(pim:bound-component)"/>
-    <xsl:sequence select="fp:realization($bc)/pim:operation[@visibility ne 'private']"/>
+    <xsl:sequence select="fp:realization($bc) ! fp:operations(.)[@visibility ne 'private']"/>
   </xsl:function>
 
   <xsl:function name="fp:psm-realizing-class" as="element()?">
@@ -283,7 +287,7 @@
   <xsl:function name="fp:offered-operations" as="element(pim:operation)*">
     <xsl:param name="bc" as="element(pim:bound-component)"/>
     <xsl:param name="excluded" as="xs:string*"/>
-    <xsl:variable name="operations" as="element(pim:operation)*" select="fp:owner($bc)/pim:operation"/>
+    <xsl:variable name="operations" as="element(pim:operation)*" select="fp:operations(fp:owner($bc))"/>
     <xsl:sequence select="($operations[@visibility eq 'protected'][not(@static = ('true', '1'))][not(@name = $excluded)]
                            | $operations[@visibility ne 'private'][@name = fp:interface-operations($bc/pim:service-port[@role eq 'provided'])/@name])
                           [not(@name = fp:interface-operations($bc/pim:service-port[@role eq 'required'])/@name)]"/>
@@ -307,7 +311,7 @@
 
   <xsl:function name="fp:configurable-attributes" as="element(pim:attribute)*">
     <xsl:param name="bc" as="element(pim:bound-component)"/>
-    <xsl:sequence select="fp:owner($bc)/pim:attribute[exists(f:stereotype(., 'Configurable'))]"/>
+    <xsl:sequence select="fp:attributes(fp:owner($bc))[exists(f:stereotype(., 'Configurable'))]"/>
   </xsl:function>
 
   <!-- the attributes a component without Configurable ones exposes: public
@@ -315,7 +319,7 @@
        caller keeps those its target has a type for) -->
   <xsl:function name="fp:convention-attributes" as="element(pim:attribute)*">
     <xsl:param name="bc" as="element(pim:bound-component)"/>
-    <xsl:sequence select="fp:owner($bc)/pim:attribute[@visibility = ('public', 'protected')]
+    <xsl:sequence select="fp:attributes(fp:owner($bc))[@visibility = ('public', 'protected')]
                             [not(@static = ('true', '1'))][not(@read-only = ('true', '1'))]
                             [not(@name = $fp:convention-names)]"/>
   </xsl:function>
@@ -349,10 +353,24 @@
         (if ($number castable as xs:double and not(matches($number, 'nan|inf', 'i'))) then $number
          else f:fail($code, $id, 'default ''' || $value || ''' is not a number'))
       else
-        (if ($number castable as xs:integer
-             and (not(starts-with($primitive, 'u') or $primitive eq 'octet') or xs:integer($number) ge 0))
+        (if ($number castable as xs:integer and fp:in-range(xs:integer($number), $primitive))
          then string(xs:integer($number))
-         else f:fail($code, $id, 'default ''' || $value || ''' is not a valid ' || $primitive))"/>
+         else f:fail($code, $id, 'default ''' || $value || ''' is not a valid ' || $primitive
+                     || (if ($number castable as xs:integer)
+                         then ' (' || string-join(map:get($fp:integer-range, $primitive) ! string(.), ' to ') || ')' else '')))"/>
+  </xsl:function>
+
+  <!-- the least and the greatest value of each integer kind -->
+  <xsl:variable name="fp:integer-range" as="map(xs:string, xs:integer+)" select="map {
+      'octet': (0, 255), 'int16': (-32768, 32767), 'uint16': (0, 65535),
+      'int32': (-2147483648, 2147483647), 'uint32': (0, 4294967295),
+      'int64': (-9223372036854775808, 9223372036854775807), 'uint64': (0, 18446744073709551615) }"/>
+
+  <xsl:function name="fp:in-range" as="xs:boolean">
+    <xsl:param name="number" as="xs:integer"/>
+    <xsl:param name="primitive" as="xs:string"/>
+    <xsl:variable name="range" as="xs:integer*" select="if (map:contains($fp:integer-range, $primitive)) then map:get($fp:integer-range, $primitive) else ()"/>
+    <xsl:sequence select="empty($range) or ($number ge $range[1] and $number le $range[2])"/>
   </xsl:function>
 
   <xsl:function name="fp:decimal" as="xs:string">
