@@ -26,7 +26,7 @@
     fp:attributes($classifier) its attributes with the inherited ones (general's
                                first; a redefinition by name wins)
     fp:operations($classifier) its operations with the inherited ones (the same)
-    fp:data-types($typed, $code)   the data types $typed need, each after those
+    fp:data-types($types, $code)   $types (data types, enumerations) and those they use, each after those
                                its attributes use
     fp:default-items($value, $typed, $id, $code)  a default as its items
     fp:enum-literal($value, $enumeration, $id, $code)  the literal a default names
@@ -111,12 +111,12 @@
       else max((0, fp:attributes($type) ! fp:type-def(.) ! (1 + fp:type-depth(., ($path, $type), $code))))"/>
   </xsl:function>
 
-  <!-- the data types and enumerations $typed name, with those their
+  <!-- the data types and enumerations $types, with those their
        attributes name, each after the ones it uses (then by name) -->
   <xsl:function name="fp:data-types" as="element()*">
-    <xsl:param name="typed" as="element()*"/>
+    <xsl:param name="types" as="element()*"/>
     <xsl:param name="code" as="xs:string"/>
-    <xsl:perform-sort select="fp:type-closure($typed ! fp:type-def(.))">
+    <xsl:perform-sort select="fp:type-closure($types)">
       <xsl:sort select="fp:type-depth(., (), $code)"/>
       <xsl:sort select="string(@name)"/>
       <xsl:sort select="string(@id)"/>

@@ -86,6 +86,7 @@
   <xsl:include href="../../common/naming.xsl"/>
   <xsl:include href="../../common/profile.xsl"/>
   <xsl:include href="../common/psm-kit.xsl"/>
+  <xsl:include href="types.xsl"/>
 
   <xsl:param name="package-name" as="xs:string" select="''">
     <!-- the component package (CMake project, deployer Import); '' = lower snake-case of the model name -->
@@ -154,6 +155,7 @@
                   package="{$package}" namespace="{$package}" source="{@source}">
       <xsl:variable name="children" as="element()*">
         <xsl:sequence select="$binding/pim:library ! fp:psm-library(., $package)"/>
+        <xsl:sequence select="fp:oro-types($task-contexts/o:task-context, $package, root(.))"/>
         <xsl:sequence select="$task-contexts/o:task-context"/>
         <xsl:for-each select="$binding/pim:host">
           <o:host xmi-id="{@xmi-id}" name="{@name}" hostname="{@hostname}" address="{@address}"/>
@@ -241,24 +243,6 @@
     </o:connection>
   </xsl:function>
 
-  <!-- ============================================================ types -->
-  <xsl:function name="fp:oro-type" as="element(ty:type)?">
-    <xsl:param name="typed" as="element()"/>
-    <xsl:sequence select="if (fp:is-array($typed)) then () else key('fp:type', string($typed/@primitive), $fp:types)"/>
-  </xsl:function>
-
-  <xsl:function name="fp:oro-required-type" as="element(ty:type)">
-    <xsl:param name="typed" as="element()"/>
-    <xsl:param name="id" as="xs:string?"/>
-    <xsl:param name="what" as="xs:string"/>
-    <xsl:variable name="type" as="element(ty:type)?" select="fp:oro-type($typed)"/>
-    <xsl:sequence select="if (exists($type) and ($type/@primitive ne 'void' or $what eq 'result'))
-        then $type
-        else f:fail('ORO001', $id, $what || ' has type ''' || fp:type-label($typed)
-                     || ''', which robomda cannot map to an Orocos C++ / XML type (supported: '
-                     || string-join($fp:types//ty:type[@primitive ne 'void']/@primitive, ', ') || ')')"/>
-  </xsl:function>
-
   <!-- ===================================================== task context -->
   <xsl:function name="fp:task-context" as="element(o:task-context)">
     <xsl:param name="bc" as="element(pim:bound-component)"/>
@@ -281,7 +265,7 @@
       <xsl:sequence select="$bc/pim:service-port[@role eq 'required'] ! fp:required-service(., $bc)"/>
       <xsl:variable name="configurable" as="element(pim:attribute)*" select="fp:configurable-attributes($bc)"/>
       <xsl:sequence select="if (exists($configurable)) then $configurable ! fp:property(.)
-                            else fp:convention-attributes($bc)[exists(fp:oro-type(.))][@primitive ne 'void']
+                            else fp:convention-attributes($bc)[exists(fp:oro-type(.))][not(@primitive = 'void')]
                                  ! fp:property(.)"/>
     </o:task-context>
   </xsl:function>
@@ -300,8 +284,8 @@
               event="{@direction eq 'in' and $non-periodic}"
               rtt-class="{if (@direction eq 'out') then 'RTT::OutputPort' else 'RTT::InputPort'}&lt;{$type/@cpp}&gt;"
               name="{@name}" member="port_{@name}" interface="{@interface-name}" datum="{@datum-name}"
-              accessor="{$accessor}" accessor-declared="{fp:accessor-declared(.)}"
-              primitive="{$type/@primitive}" cpp-type="{$type/@cpp}" xml-type="{$type/@xml}" sample="{$type/@sample}">
+              accessor="{$accessor}" accessor-declared="{fp:accessor-declared(.)}" sample="{$type/@sample}">
+        <xsl:sequence select="fp:oro-typed($type)"/>
         <xsl:sequence select="fp:psm-doc(key('fp:id', @port, root(.)))"/>
       </o:port>
     </xsl:for-each>
@@ -328,9 +312,10 @@
         <xsl:variable name="type" as="element(ty:type)"
             select="fp:oro-required-type(., @id, 'parameter ''' || @name || ''' of operation ''' || $operation/@name || '''')"/>
         <o:parameter xmi-id="{@id}" name="{f:cpp-identifier((@name[normalize-space(.)], 'arg' || position())[1])}"
-                     direction="{@direction}" primitive="{$type/@primitive}" cpp-type="{$type/@cpp}" xml-type="{$type/@xml}"
+                     direction="{@direction}"
                      decl-type="{if (@direction = ('out', 'inout')) then $type/@cpp || '&amp;'
                                  else if ($type/@pass eq 'cref') then 'const ' || $type/@cpp || '&amp;' else $type/@cpp}">
+          <xsl:sequence select="fp:oro-typed($type)"/>
           <xsl:sequence select="fp:psm-doc(.)"/>
         </o:parameter>
       </xsl:for-each>
@@ -382,17 +367,22 @@
     <xsl:param name="attribute" as="element(pim:attribute)"/>
     <xsl:variable name="type" as="element(ty:type)"
         select="fp:oro-required-type($attribute, $attribute/@id, 'property ''' || $attribute/@name || '''')"/>
+    <!-- a structured value: the whole tree, always (its leaves without a
+         model value hold the type's zero) -->
+    <xsl:variable name="tree" as="element(o:value)?"
+        select="if ($type/@kind) then fp:oro-value($attribute, $type, $attribute/@name, '') else ()"/>
     <xsl:variable name="values" as="xs:string*"
-        select="if ($attribute/@default) then fp:oro-values($attribute/@default, $type, $attribute/@id) else ()"/>
+        select="if ($attribute/@default and empty($tree)) then fp:oro-values($attribute/@default, $type, $attribute/@id) else ()"/>
     <o:property xmi-id="{$attribute/@id}" name="{f:cpp-identifier($attribute/@name)}"
                 member="{f:cpp-identifier($attribute/@name)}"
-                primitive="{$type/@primitive}" cpp-type="{$type/@cpp}" xml-type="{$type/@xml}"
-                cpp-default="{($values[3], $type/@sample)[1]}">
+                cpp-default="{($tree/@cpp-value, $values[3], $type/@sample)[1]}">
+      <xsl:sequence select="fp:oro-typed($type)"/>
       <xsl:if test="exists($values)">
         <xsl:attribute name="xml-default" select="$values[1]"/>
         <xsl:attribute name="script-default" select="$values[2]"/>
       </xsl:if>
       <xsl:sequence select="fp:psm-doc($attribute)"/>
+      <xsl:sequence select="$tree"/>
     </o:property>
   </xsl:function>
 
@@ -443,9 +433,21 @@
         <xsl:variable name="values" as="xs:string*"
             select="if ($set) then fp:oro-values($set/@value, fp:oro-required-type(key('fp:id', @xmi-id, root($instance)), @xmi-id, 'property ''' || @name || ''''), $set/@holder)
                     else (@xml-default, @script-default)"/>
-        <xsl:if test="exists($values)">
-          <o:property-value name="{@name}" xml-type="{@xml-type}" value="{$values[1]}" script-value="{$values[2]}"/>
-        </xsl:if>
+        <xsl:choose>
+          <xsl:when test="o:value">
+            <o:property-value name="{@name}" xml-type="{@xml-type}">
+              <xsl:sequence select="if (empty($set)) then o:value
+                  else if (@type-kind eq 'enum') then fp:oro-leaf($set/@value, fp:oro-required-type(key('fp:id', @xmi-id, root($instance)),
+                                                      @xmi-id, 'property ''' || @name || ''''), $set, @name, '')
+                  else f:fail('ORO002', $set/@holder, 'the value ''' || $set/@value || ''' set on property ''' || @name
+                              || ''' of instance ''' || $instance/@name || ''': the value of a data type or an array comes from'
+                              || ' the defaults of its attributes, not from a part''s slot')"/>
+            </o:property-value>
+          </xsl:when>
+          <xsl:when test="exists($values)">
+            <o:property-value name="{@name}" xml-type="{@xml-type}" value="{$values[1]}" script-value="{$values[2]}"/>
+          </xsl:when>
+        </xsl:choose>
       </xsl:for-each>
       <xsl:for-each select="$instance/pim:start-after[@instance ! map:contains($targets, string(.))]">
         <o:start-after instance="{@instance}" xmi-id="{@xmi-id}"/>

@@ -9,6 +9,8 @@
              include/<pkg>/<Class>Base.hpp, src/<Class>Base.cpp + user
              include/<pkg>/<Class>.hpp, src/<Class>.cpp (mode user) when the
              component has no realizing class
+             include/<Type>.hpp per data type and enumeration the
+             components use, src/typekit.cpp (their RTT typekit)
              src/components.cpp, CMakeLists.txt, package.xml
              deploy/<model>.xml, deploy/<model>.ops, deploy/<model>.lua,
              deploy/<model>-check.lua
@@ -20,8 +22,9 @@
   Params:  model-dir-from-output (xslt/m2t/common/text.xsl).
   Errors:  none (the PSM is complete and valid).
   Modules: ../common/text.xsl (the text kit every target shares),
-           ../common/package-manifest.xsl, orocos-cpp.xsl, orocos-build.xsl,
-           orocos-deploy.xsl.
+           ../common/package-manifest.xsl, ../common/data-types.xsl,
+           orocos-cpp.xsl, orocos-build.xsl, orocos-deploy.xsl,
+           orocos-types.xsl.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -40,6 +43,8 @@
   <xsl:include href="orocos-cpp.xsl"/>
   <xsl:include href="orocos-build.xsl"/>
   <xsl:include href="orocos-deploy.xsl"/>
+  <xsl:include href="../common/data-types.xsl"/>
+  <xsl:include href="orocos-types.xsl"/>
 
   <xsl:output method="xml" indent="no" encoding="UTF-8" cdata-section-elements="fs:file"/>
 
@@ -47,6 +52,7 @@
   <xsl:variable name="fp:cpp-xsl" as="xs:string" select="'m2t/orocos/orocos-cpp.xsl'"/>
   <xsl:variable name="fp:build-xsl" as="xs:string" select="'m2t/orocos/orocos-build.xsl'"/>
   <xsl:variable name="fp:deploy-xsl" as="xs:string" select="'m2t/orocos/orocos-deploy.xsl'"/>
+  <xsl:variable name="fp:typekit-xsl" as="xs:string" select="'m2t/orocos/orocos-types.xsl'"/>
   <xsl:mode name="m:emit-files" on-no-match="fail"/>
 
   <!-- the file set comes out as f:indent (common/indent.xsl) would indent
@@ -69,6 +75,11 @@
           <xsl:sequence select="fp:user-file(concat('src/', @class, '.cpp'), ., fp:user-source(.))"/>
         </xsl:if>
       </xsl:for-each>
+      <xsl:for-each select="o:types/(o:struct | o:enum)">
+        <xsl:sequence select="fp:file('include/' || @header, 'generated', 'm2t/common/data-types.xsl',
+                                      fp:type-header(., ../(o:struct | o:enum), ../../@model-name))"/>
+      </xsl:for-each>
+      <xsl:sequence select="o:types ! fp:file('src/typekit.cpp', 'generated', $fp:typekit-xsl, fp:typekit-cpp(.))"/>
       <xsl:sequence select="fp:file('src/components.cpp', 'generated', $fp:cpp-xsl, fp:components-cpp(.))"/>
       <xsl:sequence select="fp:file('CMakeLists.txt', 'generated', $fp:build-xsl, fp:cmakelists(.))"/>
       <xsl:sequence select="fp:file('package.xml', 'generated', $fp:build-xsl, fp:package-xml(.))"/>

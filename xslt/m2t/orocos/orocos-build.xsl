@@ -37,7 +37,8 @@
                 'src/components.cpp'"/>
     <xsl:variable name="headers" as="xs:string*"
         select="$deployment/o:task-context ! (concat('include/', $pkg, '/', @generated-class, '.hpp'),
-                                     if (@kind eq 'base') then concat('include/', $pkg, '/', @class, '.hpp') else ())"/>
+                                     if (@kind eq 'base') then concat('include/', $pkg, '/', @class, '.hpp') else ()),
+                $deployment/o:types/(o:struct | o:enum) ! ('include/' || @header)"/>
     <xsl:sequence select="fp:lines((
         fp:banner('# ', $fp:build-xsl, concat('model ''', $deployment/@model-name, ''''), false()),
         'cmake_minimum_required(VERSION 3.5)',
@@ -65,6 +66,10 @@
         '# One component library with every component type (src/components.cpp).',
         concat('orocos_component(', $pkg, ' ', string-join($sources, ' '), ')'),
         $deployment/o:library ! fp:library-link(., $pkg),
+        if ($deployment/o:types) then (
+          '',
+          '# The RTT typekit of the model''s data types (src/typekit.cpp); the deploy files load it first.',
+          concat('orocos_typekit(', $deployment/o:types/@typekit, ' src/typekit.cpp)')) else (),
         '',
         concat('orocos_install_headers(', string-join($headers, ' '), ')'),
         $deployment/o:library ! fp:library-install-headers(., $pkg),

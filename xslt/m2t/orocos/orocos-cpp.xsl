@@ -39,7 +39,9 @@
         if ($tc/o:port[@direction eq 'in']) then '#include &lt;rtt/InputPort.hpp&gt;' else (),
         if ($tc/o:port[@direction eq 'out']) then '#include &lt;rtt/OutputPort.hpp&gt;' else (),
         if ($tc/o:required-service) then ('#include &lt;rtt/Logger.hpp&gt;', '#include &lt;rtt/OperationCaller.hpp&gt;') else (),
-        '#include &lt;string&gt;'"/>
+        '#include &lt;string&gt;',
+        if ($tc//*[@type-kind eq 'sequence']) then '#include &lt;vector&gt;' else (),
+        distinct-values(root($tc)//o:types/*[@xmi-id = $tc//@type-ref]/@header) ! ('#include &quot;' || . || '&quot;')"/>
   </xsl:function>
 
   <xsl:function name="fp:member-decls" as="xs:string*">

@@ -98,10 +98,15 @@
         else concat('priority ', $activity/@priority, ' of the model: ORO_SCHED_OTHER has no priorities, so 0 (warning ORO102)')"/>
   </xsl:function>
 
-  <!-- what LoadLibrary / loadLibrary takes: "<pkg>/<pkg>" -->
-  <xsl:function name="fp:library" as="xs:string">
+  <!-- what LoadLibrary / loadLibrary takes: the typekit of the model's
+       data types first, "<pkg>/<typekit>" (RTT's plugin loader looks in
+       <pkg>/types/), when there is one (the
+       properties of those types are then read with their types); then the
+       components, "<pkg>/<pkg>" -->
+  <xsl:function name="fp:deploy-libraries" as="xs:string+">
     <xsl:param name="deployment" as="element(o:deployment)"/>
-    <xsl:sequence select="concat($deployment/@package, '/', $deployment/@package)"/>
+    <xsl:sequence select="$deployment/o:types ! concat($deployment/@package, '/', @typekit),
+                          concat($deployment/@package, '/', $deployment/@package)"/>
   </xsl:function>
 
   <!-- "CpuAffinity mask 6 (CPUs 1, 2)" -->
@@ -110,6 +115,27 @@
     <xsl:variable name="cpus" as="xs:integer*" select="for $n in 0 to 63 return $n[($mask idiv $fp:one-bit-masks[$n + 1]) mod 2 eq 1]"/>
     <xsl:sequence select="concat('CpuAffinity mask ', $mask, ' (CPU', if (count($cpus) gt 1) then 's ' else ' ',
                                  string-join($cpus ! string(.), ', '), ')')"/>
+  </xsl:function>
+
+  <!-- the cpf XML of a property's value: a simple element, or for a data
+       type or an array a struct of them, named $name -->
+  <xsl:function name="fp:property-xml" as="xs:string+">
+    <xsl:param name="value" as="element()"/><!-- o:property-value or o:value -->
+    <xsl:param name="name" as="xs:string"/>
+    <xsl:sequence select="
+        if ($value/self::o:property-value/o:value) then fp:property-xml($value/o:value, $name)
+        else if ($value/@value) then fp:simple($name, $value/@xml-type, $value/@value)
+        else (concat('&lt;struct name=&quot;', fp:xml-text($name), '&quot; type=&quot;', $value/@xml-type, '&quot;&gt;'),
+              fp:indent(2, $value/o:value ! fp:property-xml(., @name)),
+              '&lt;/struct&gt;')"/>
+  </xsl:function>
+
+  <!-- the values of a property that the scripts set: the property itself,
+       or the leaves of its data type or array that the model gives (their
+       @path below the property: .stiffness, [0]) -->
+  <xsl:function name="fp:leaves" as="element()*">
+    <xsl:param name="property" as="element(o:property-value)"/>
+    <xsl:sequence select="if ($property/@script-value) then $property else $property/o:value/descendant-or-self::o:value[@script-value]"/>
   </xsl:function>
 
   <xsl:function name="fp:simple" as="xs:string">
@@ -160,7 +186,7 @@
         '  working directory: run them from this folder. A property the component does not',
         '  declare is ignored by the deployer (robomda warns, OUT005). The properties and the',
         '  model''s values; copy a line into the properties element below and change its value:',
-        $instance/o:property-value ! concat('    ', fp:comment-text(fp:simple(@name, @xml-type, @value))),
+        $instance/o:property-value ! (fp:indent(4, fp:property-xml(., @name)) ! fp:comment-text(.)),
         '--&gt;',
         '&lt;!DOCTYPE properties SYSTEM &quot;cpf.dtd&quot;&gt;',
         '&lt;properties&gt;',
@@ -187,8 +213,9 @@
         '--&gt;',
         '&lt;!DOCTYPE properties SYSTEM &quot;cpf.dtd&quot;&gt;',
         '&lt;properties&gt;',
-        concat('  &lt;!-- the component library of package ', $deployment/@package, ', found through RTT_COMPONENT_PATH --&gt;'),
-        concat('  ', fp:simple('LoadLibrary', 'string', fp:library($deployment))),
+        concat('  &lt;!-- the ', if ($deployment/o:types) then 'typekit and the ' else '', 'component library of package ',
+               $deployment/@package, ', found through RTT_COMPONENT_PATH --&gt;'),
+        fp:deploy-libraries($deployment) ! concat('  ', fp:simple('LoadLibrary', 'string', .)),
         $deployment/o:connection ! (
           '',
           concat('  &lt;!-- connection point ', @name, ': ', string-join(o:writer ! (concat(@instance, '.', @port)), ', '),
@@ -232,7 +259,7 @@
           '    &lt;/struct&gt;') else (),
         if ($instance/o:property-value) then (
           '    &lt;struct name=&quot;Properties&quot; type=&quot;PropertyBag&quot;&gt;',
-          $instance/o:property-value ! (concat('      ', fp:simple(@name, @xml-type, @value))),
+          $instance/o:property-value ! fp:indent(6, fp:property-xml(., @name)),
           '    &lt;/struct&gt;',
           '    &lt;!-- then your tuned values (a file of yours, in the working directory) --&gt;',
           concat('    ', fp:simple('UpdateProperties', 'string', fp:user-cpf($instance)))) else (),
@@ -251,7 +278,7 @@
         '// RTT_COMPONENT_PATH must hold the installed package.',
         '// A failing configure() or start() is logged as an [ ERROR ] line; nothing starts when a configure() failed.',
         'require(&quot;print&quot;)',
-        concat('loadLibrary(', fp:cpp-string(fp:library($deployment)), ')'),
+        fp:deploy-libraries($deployment) ! concat('loadLibrary(', fp:cpp-string(.), ')'),
         'var bool configured = true',
         '',
         $deployment/o:instance ! (concat('loadComponent(', fp:cpp-string(@name), ', ', fp:cpp-string(@type-name), ')')),
@@ -264,7 +291,8 @@
             $deployment/o:instance ! (for $c in o:call return
             concat('connectServices(', fp:cpp-string(@name), ', ', fp:cpp-string($c/@provider), ')  // ', $c/@service))) else (),
         if ($deployment/o:instance/o:property-value) then ('', '// properties (R4)',
-            $deployment/o:instance ! (for $p in o:property-value return concat(@name, '.', $p/@name, ' = ', $p/@script-value)),
+            $deployment/o:instance ! (for $p in o:property-value, $leaf in fp:leaves($p)
+                                      return concat(@name, '.', $p/@name, $leaf/@path, ' = ', $leaf/@script-value)),
             '',
             '// then your tuned values (files of yours, in the working directory)',
             $deployment/o:instance[o:property-value] ! (
@@ -347,15 +375,54 @@
             concat('  check(depl:connectServices(', fp:cpp-string(@name), ', ', fp:cpp-string($c/@provider),
              '), &quot;connectServices ', @name, ' -&gt; ', $c/@provider, ' (', $c/@service, ')&quot;)'))) else (),
         if ($deployment/o:instance/o:property-value) then ('', '  -- properties (R4)',
-            $deployment/o:instance ! (for $p in o:property-value return
-              concat('  check(pcall(function() comps[', fp:cpp-string(@name), ']:getProperty(', fp:cpp-string($p/@name),
-               '):set(', $p/@script-value, ') end), &quot;property ', @name, '.', $p/@name, '&quot;)')),
+            $deployment/o:instance ! (for $p in o:property-value return fp:lua-property(., $p)),
             '',
             '  -- then your tuned values (files of yours, beside this file)',
             $deployment/o:instance[o:property-value] ! (
               concat('  check(depl:loadService(', fp:cpp-string(@name), ', &quot;marshalling&quot;), &quot;loadService ', @name, ' marshalling&quot;)'),
               concat('  check(comps[', fp:cpp-string(@name), ']:provides(&quot;marshalling&quot;):getOperation(&quot;updateProperties&quot;)(here .. ',
                      fp:cpp-string(concat('/', fp:user-cpf(.))), '), &quot;load ', fp:user-cpf(.), '&quot;)'))) else ())"/>
+  </xsl:function>
+
+  <!-- Lua deployment: the model's value of property $p of $instance; a
+       data type's or an array's leaves are set on a copy of its value
+       (rttlua reaches members and elements by name and index), an
+       enumeration literal through RTT's int conversion -->
+  <xsl:function name="fp:lua-property" as="xs:string+">
+    <xsl:param name="instance" as="element(o:instance)"/>
+    <xsl:param name="p" as="element(o:property-value)"/>
+    <xsl:variable name="property" as="xs:string"
+        select="concat('comps[', fp:cpp-string($instance/@name), ']:getProperty(', fp:cpp-string($p/@name), ')')"/>
+    <xsl:variable name="what" as="xs:string" select="concat('&quot;property ', $instance/@name, '.', $p/@name, '&quot;')"/>
+    <xsl:sequence select="
+        if (empty($p/o:value)) then concat('  check(pcall(function() ', $property, ':set(', $p/@script-value, ') end), ', $what, ')')
+        else ('  check(pcall(function()',
+              concat('    local p = ', $property),
+              '    local v = p:get()',
+              fp:leaves($p) ! (if (@enum = 'true') then concat('    v', @path, ':assign(rtt.Variable(&quot;int&quot;, ', @script-value, '))')
+                               else concat('    v', @path, ' = ', @script-value)),
+              '    p:set(v)',
+              concat('  end), ', $what, ')'))"/>
+  </xsl:function>
+
+  <!-- check script: the leaves of a data type or an array property, unless
+       the user's file tunes it -->
+  <xsl:function name="fp:lua-structured-checks" as="xs:string*">
+    <xsl:param name="instance" as="element(o:instance)"/>
+    <xsl:param name="p" as="element(o:property-value)"/>
+    <xsl:variable name="leaves" as="element(o:value)*" select="fp:leaves($p)"/>
+    <xsl:if test="exists($leaves)">
+      <xsl:sequence select="
+          concat('  if tuned[', fp:cpp-string($instance/@name), '][', fp:cpp-string($p/@name), '] == nil then'),
+          $leaves ! (
+            let $get := concat('comps[', fp:cpp-string($instance/@name), ']:getProperty(', fp:cpp-string($p/@name), '):get()', @path),
+                $value := if (@enum = 'true') then concat('enum_int(', $get, ')') else $get
+            return concat('    check(', if (@xml-type = ('double', 'float')) then concat('near(', $value, ', ', @script-value, ')')
+                                        else concat($value, ' == ', @script-value),
+                          ', ', fp:cpp-string(concat('property ', $instance/@name, '.', $p/@name, @path, ' = ', @script-value)),
+                          ' .. &quot; (is &quot; .. tostring(', $value, ') .. &quot;)&quot;)')),
+          '  end'"/>
+    </xsl:if>
   </xsl:function>
 
   <!-- Lua deployment: one connection point, its policy and its links -->
@@ -409,7 +476,7 @@
         concat('local names = {', string-join($deployment/o:instance/@name ! fp:cpp-string(.), ', '), '}'),
         'local comps = {}',
         '',
-        concat('check(depl:loadLibrary(', fp:cpp-string(fp:library($deployment)), '), &quot;loadLibrary ', fp:library($deployment), '&quot;)'),
+        fp:deploy-libraries($deployment) ! concat('check(depl:loadLibrary(', fp:cpp-string(.), '), &quot;loadLibrary ', ., '&quot;)'),
         $deployment/o:instance ! (concat('check(depl:loadComponent(', fp:cpp-string(@name), ', ', fp:cpp-string(@type-name),
                           '), &quot;loadComponent ', @name, '&quot;)')),
         '',
@@ -450,6 +517,7 @@
         '      local text = f:read(&quot;*a&quot;):gsub(&quot;&lt;!%-%-.-%-%-&gt;&quot;, &quot;&quot;)',
         '      f:close()',
         '      for p, v in text:gmatch(&quot;&lt;simple%s+name=\&quot;([^\&quot;]*)\&quot;[^&gt;]*&gt;%s*&lt;value&gt;(.-)&lt;/value&gt;&quot;) do tuned[n][p] = v end',
+        '      @structured',
         '    end',
         '  end',
         '  local function want(n, p, model)',
@@ -473,7 +541,8 @@
           concat('  check(comps[', fp:cpp-string(@name), ']:getCpuAffinity() == ', o:activity/@cpu-affinity, ', &quot;',
                  @name, ' ', fp:affinity-note(xs:integer(o:activity/@cpu-affinity)), ' (is &quot; .. tostring(comps[',
                  fp:cpp-string(@name), ']:getCpuAffinity()) .. &quot;)&quot;)'),
-          for $property in o:property-value return
+          for $property in o:property-value[o:value] return fp:lua-structured-checks(., $property),
+          for $property in o:property-value[not(o:value)] return
           let $get := concat('comps[', fp:cpp-string(@name), ']:getProperty(', fp:cpp-string($property/@name), '):get()'),
               $want := concat('want(', fp:cpp-string(@name), ', ', fp:cpp-string($property/@name), ', ', $property/@script-value, ')')
           return concat('  check(', if ($property/@xml-type = ('double', 'float')) then concat('near(', $get, ', ', $want, ')')
@@ -519,7 +588,13 @@
         '  end',
         '  -- numbers read back as doubles (a float property to about 7 digits)',
         '  local function near(a, b) return math.abs(a - b) &lt;= 1e-6 * math.max(1, math.abs(b)) end',
-        $fp:lua-tuned-values,
+        if ($deployment//o:value[@enum = 'true'])
+        then '  local function enum_int(v) local i = rtt.Variable(&quot;int&quot;); i:assign(v); return i:tolua() end' else (),
+        $fp:lua-tuned-values ! (if (. eq '      @structured') then
+            (if ($deployment/o:instance/o:property-value/o:value) then (
+              '      -- a data type or an array tuned there: its members are the user''s, not checked',
+              '      for p in text:gmatch(&quot;&lt;struct%s+name=\&quot;([^\&quot;]*)\&quot;&quot;) do tuned[n][p] = &quot;&quot; end') else ())
+            else .),
         $deployment/o:instance ! fp:lua-instance-checks(.),
         '  for _, n in ipairs(names) do comps[n]:stop() end',
         '  for _, n in ipairs(names) do comps[n]:cleanup() end',

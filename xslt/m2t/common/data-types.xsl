@@ -1,0 +1,60 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/m2t/common/data-types.xsl - the C++ header of a model's data type or
+  enumeration, the same for every target: include/<Name>.hpp declares
+  struct ::<Name> (its attributes, inherited ones first, as members
+  initialised to the model's defaults) or enum ::<Name>. The atomic
+  code includes it by that name too (the generated package's include/
+  directory comes first on the include path of the atomic-code library).
+
+  Reads:   a PSM's type definitions, of any target's namespace: an element
+           with @cpp-name and @header, holding *:field elements (a struct:
+           @member, @cpp-type, @cpp-default, optional @type-ref, @type-kind)
+           or *:literal elements (an enumeration: @member).
+  Writes:  strings (file contents).
+  Params:  none.  Errors: none.
+  Uses:    fp:lines, fp:banner, fp:doc-of (text.xsl).
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:fp="urn:robomda:xslt:function:private"
+    exclude-result-prefixes="#all">
+
+  <!-- the header of type $type; $definitions: every type definition of the
+       package (the headers of the types its fields use) -->
+  <xsl:function name="fp:type-header" as="xs:string">
+    <xsl:param name="type" as="element()"/>
+    <xsl:param name="definitions" as="element()*"/>
+    <xsl:param name="model-name" as="xs:string"/>
+    <xsl:variable name="name" as="xs:string" select="substring-after($type/@cpp-name, '::')"/>
+    <xsl:variable name="guard" as="xs:string" select="'ROBOMDA_TYPE_' || $name || '_HPP'"/>
+    <xsl:variable name="enum" as="xs:boolean" select="exists($type/*:literal)"/>
+    <xsl:variable name="fields" as="element()*" select="$type/*:field"/>
+    <xsl:variable name="includes" as="xs:string*" select="
+        if ($fields[@type-kind eq 'sequence']) then '#include &lt;vector&gt;' else (),
+        if ($fields[contains(@cpp-type, 'std::string')]) then '#include &lt;string&gt;' else (),
+        distinct-values($definitions[@xmi-id = $fields/@type-ref]/@header) ! ('#include &quot;' || . || '&quot;')"/>
+    <xsl:sequence select="fp:lines((
+        fp:banner('// ', 'm2t/common/data-types.xsl', (if ($enum) then 'enumeration ''' else 'data type ''') || $type/@name
+                  || ''' of model ''' || $model-name || '''', false()),
+        '#ifndef ' || $guard,
+        '#define ' || $guard,
+        '',
+        $includes, if (exists($includes)) then '' else (),
+        '/** ' || fp:doc-of($type, (if ($enum) then 'Enumeration ' else 'Data type ') || $type/@name || ' of the model.') || ' */',
+        if ($enum) then (
+          'enum ' || $name,
+          '{',
+          $type/*:literal ! ('  ' || @member || (if (position() eq last()) then '' else ',')),
+          '};')
+        else (
+          'struct ' || $name,
+          '{',
+          $fields ! ('  ' || @cpp-type || ' ' || @member || ' = ' || @cpp-default || ';'
+                     || (if (*:doc) then '  // ' || normalize-space(*:doc) else '')),
+          '};'),
+        '',
+        '#endif'))"/>
+  </xsl:function>
+</xsl:stylesheet>
