@@ -102,7 +102,8 @@
       <xsl:for-each select="key('fp:id', distinct-values($uses/@connector), $root)
                             [not(@id = ($pairs/@connector, $resolved/(self::fp:unresolved | self::fp:call-pair)/@connector))]">
         <xsl:sequence select="map { 'code': 'BND007', 'id': string(@id), 'message': 'connector ''' || @name
-            || ''' joins no output port to an input port of the same data type' }"/>
+            || ''' joins no output port to an input port of the same data type ('
+            || string-join(pim:end ! fp:end-data($root, .), ', ') || ')' }"/>
       </xsl:for-each>
       <xsl:for-each-group select="$pairs" group-by="@r-instance || '.' || @r-dp">
         <xsl:if test="count(distinct-values(current-group()/(@w-instance || '.' || @w-dp))) gt 1">
@@ -131,6 +132,22 @@
         </xsl:for-each-group>
       </pim:connection>
     </xsl:for-each-group>
+  </xsl:function>
+
+  <!-- "part.port: Type[7]" for a connector end, the data its port carries
+       (the datum of each interface it is typed by, or its own type), for
+       BND007 -->
+  <xsl:function name="fp:end-data" as="xs:string">
+    <xsl:param name="root" as="document-node()"/>
+    <xsl:param name="end" as="element()"/>
+    <xsl:variable name="port" as="element()?" select="key('fp:id', $end/@role, $root)"/>
+    <xsl:variable name="interfaces" as="element()*"
+        select="($port/@type, $port/(pim:provided | pim:required)/@interface) ! key('fp:id', ., $root)/self::pim:interface"/>
+    <xsl:variable name="data" as="element()*" select="if (exists($interfaces)) then $interfaces/pim:attribute else $port"/>
+    <xsl:variable name="labels" as="xs:string*" select="distinct-values($data ! (string((@type-name, @primitive, '?')[1])
+        || (if (@upper = ('', '1') or empty(@upper)) then '' else '[' || @lower || '..' || @upper || ']')))"/>
+    <xsl:sequence select="string-join((key('fp:id', $end/@part, $root)/@name, $port/@name), '.') || ': '
+        || (if (empty($labels)) then 'no data' else string-join($labels, ' / '))"/>
   </xsl:function>
 
   <!-- the writer -> reader pairs (fp:pair) of each use of an assembly

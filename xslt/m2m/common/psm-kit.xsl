@@ -309,6 +309,20 @@
     </xsl:for-each>
   </xsl:function>
 
+  <!-- a warning $code for each attribute the convention would expose that
+       the target has no type for ($what: 'Orocos property', ...): never
+       left out silently -->
+  <xsl:function name="fp:warn-skipped-attributes" as="empty-sequence()">
+    <xsl:param name="skipped" as="element(pim:attribute)*"/>
+    <xsl:param name="code" as="xs:string"/>
+    <xsl:param name="what" as="xs:string"/>
+    <xsl:for-each select="$skipped">
+      <xsl:sequence select="f:warn($code, string(@id), 'attribute ''' || @name || ''' of type ''' || fp:type-label(.)
+          || ''' is no ' || $what || ': the target cannot carry that type (stereotype it Configurable to make'
+          || ' this an error, or make it private)')"/>
+    </xsl:for-each>
+  </xsl:function>
+
   <xsl:function name="fp:configurable-attributes" as="element(pim:attribute)*">
     <xsl:param name="bc" as="element(pim:bound-component)"/>
     <xsl:sequence select="fp:attributes(fp:owner($bc))[exists(f:stereotype(., 'Configurable'))]"/>

@@ -264,9 +264,11 @@
       <xsl:sequence select="fp:offered-operations($bc, $fp:reserved-operations) ! fp:operation(., fp:provided-service($bc, .))"/>
       <xsl:sequence select="$bc/pim:service-port[@role eq 'required'] ! fp:required-service(., $bc)"/>
       <xsl:variable name="configurable" as="element(pim:attribute)*" select="fp:configurable-attributes($bc)"/>
-      <xsl:sequence select="if (exists($configurable)) then $configurable ! fp:property(.)
-                            else fp:convention-attributes($bc)[exists(fp:oro-type(.))][not(@primitive = 'void')]
-                                 ! fp:property(.)"/>
+      <xsl:variable name="convention" as="element(pim:attribute)*"
+          select="if (exists($configurable)) then () else fp:convention-attributes($bc)"/>
+      <xsl:variable name="typed" as="element(pim:attribute)*" select="$convention[exists(fp:oro-type(.))][not(@primitive = 'void')]"/>
+      <xsl:sequence select="fp:warn-skipped-attributes($convention except $typed, 'ORO013', 'Orocos property')"/>
+      <xsl:sequence select="($configurable, $typed) ! fp:property(.)"/>
     </o:task-context>
   </xsl:function>
 
@@ -367,6 +369,10 @@
     <xsl:param name="attribute" as="element(pim:attribute)"/>
     <xsl:variable name="type" as="element(ty:type)"
         select="fp:oro-required-type($attribute, $attribute/@id, 'property ''' || $attribute/@name || '''')"/>
+    <!-- a data type that contains itself has no value tree (ORO012) -->
+    <xsl:if test="$type/@kind eq 'struct' and fp:type-depth(key('fp:id', $type/@type-ref, root($attribute)), (), 'ORO012') lt 0">
+      <xsl:sequence select="error()"/>
+    </xsl:if>
     <!-- a structured value: the whole tree, always (its leaves without a
          model value hold the type's zero) -->
     <xsl:variable name="tree" as="element(o:value)?"

@@ -334,8 +334,11 @@
       <xsl:sequence select="fp:services($bc)"/>
       <xsl:sequence select="$bc/pim:service-port[@role eq 'required'] ! fp:service-clients(., $bc)"/>
       <xsl:variable name="configurable" as="element(pim:attribute)*" select="fp:configurable-attributes($bc)"/>
-      <xsl:sequence select="if (exists($configurable)) then $configurable ! fp:parameter(.)
-                            else fp:convention-attributes($bc)[exists(fp:type(.)[@cpp ne 'void'])] ! fp:parameter(.)"/>
+      <xsl:variable name="convention" as="element(pim:attribute)*"
+          select="if (exists($configurable)) then () else fp:convention-attributes($bc)"/>
+      <xsl:variable name="typed" as="element(pim:attribute)*" select="$convention[exists(fp:type(.)[@cpp ne 'void'])]"/>
+      <xsl:sequence select="fp:warn-skipped-attributes($convention except $typed, 'ROS107', 'ROS parameter')"/>
+      <xsl:sequence select="($configurable, $typed) ! fp:parameter(.)"/>
     </r:node>
   </xsl:function>
 

@@ -1,0 +1,164 @@
+"""Structured robot data (issue 14): data types, enumerations, arrays and inheritance.
+
+The quad-arm fixture (fixtures/orocos/quadarm, seed 001) is edited one
+defect or one variation at a time; its goldens (tests/test_golden.py), its
+broken variants (fixtures/broken, tests/test_broken.py) and its deployment on
+RTT 2.10 (tests/test_orocos_deploy.py) are elsewhere. Here: what the Orocos
+PSM and text make of each kind of type, and each diagnostic.
+"""
+
+from __future__ import annotations
+
+import re
+import shutil
+from pathlib import Path
+
+import pytest
+from lxml import etree
+
+from edits import edit
+from robomda.api import generate
+from robomda.diagnostics import RobomdaError
+
+ROOT = Path(__file__).resolve().parents[1]
+QUADARM = ROOT / "fixtures" / "orocos" / "quadarm"
+O = "{urn:robomda:psm-orocos:1}"
+FS = "{urn:robomda:fileset:1}"
+REAL = 'href="pathmap://UML_LIBRARIES/UMLPrimitiveTypes.library.uml#Real"'
+
+
+@pytest.fixture
+def model(tmp_path: Path) -> Path:
+    """A copy of the quad-arm model, with its atomic code, to edit."""
+    shutil.copytree(QUADARM, tmp_path / "quadarm", ignore=shutil.ignore_patterns("expected"))
+    return tmp_path / "quadarm" / "model.xmi"
+
+
+def _psm(model: Path) -> etree._Element:
+    return etree.fromstring(generate(model, None, "orocos", write=False).stages["psm"].encode("utf-8"))
+
+
+def _files(model: Path) -> dict[str, str]:
+    text = generate(model, None, "orocos", write=False).stages["text"]
+    return {n.get("path"): n.text or "" for n in etree.fromstring(text.encode("utf-8")).iter(f"{FS}file")}
+
+
+def _error(model: Path) -> RobomdaError:
+    with pytest.raises(RobomdaError) as info:
+        generate(model, None, "orocos", write=False)
+    return info.value
+
+
+def _attribute(model: Path, name: str, type_xml: str, extra: str = "") -> None:
+    """Give the controller class one more protected attribute (a property)."""
+    edit(model, '<ownedAttribute xmi:type="uml:Property" xmi:id="_qa061a" name="gains"',
+         f'<ownedAttribute xmi:type="uml:Property" xmi:id="_t{name}" name="{name}" visibility="protected">'
+         f'{type_xml}{extra}</ownedAttribute>\n      '
+         '<ownedAttribute xmi:type="uml:Property" xmi:id="_qa061a" name="gains"')
+
+
+def _multiplicity(lower: str, upper: str) -> str:
+    return (f'<lowerValue xmi:type="uml:LiteralInteger" xmi:id="_tl" value="{lower}"/>'
+            f'<upperValue xmi:type="uml:LiteralUnlimitedNatural" xmi:id="_tu" value="{upper}"/>')
+
+
+def test_the_typekit_registers_every_type_the_components_use() -> None:
+    files = _files(QUADARM / "model.xmi")
+    typekit = files["src/typekit.cpp"]
+    for line in ('types->addType(new ControlModeTypeInfo());',
+                 'types->addType(new RTT::types::StructTypeInfo<::JointState>("JointState"));',
+                 'archive & make_nvp("position", value.position);',  # inherited from JointAngles
+                 'to_string[::ControlMode::IMPEDANCE] = "IMPEDANCE";'):
+        assert line in typekit
+    # JointAngles is only a general of JointState: no port or property uses it
+    assert "JointAngles" not in typekit and "include/JointAngles.hpp" not in files
+    assert "std::vector<double> position = std::vector<double>(7, 0.0);" in files["include/JointState.hpp"]
+    assert "orocos_typekit(quadarm-typekit src/typekit.cpp)" in files["CMakeLists.txt"]
+    for deploy in ("deploy/quadarm.xml", "deploy/quadarm.ops", "deploy/quadarm.lua"):
+        libraries = list(dict.fromkeys(re.findall(r"quadarm/quadarm[-a-z]*", files[deploy])))
+        assert libraries[:2] == ["quadarm/quadarm-typekit", "quadarm/quadarm"], deploy
+
+
+def test_sixteen_and_eight_bit_integers_are_carried_as_rtt_ints(model: Path) -> None:
+    """RTT 2.10 knows no short or unsigned char: int16 / octet as int / unsigned int, XML long / ulong."""
+    _attribute(model, "count", '<type xmi:type="uml:PrimitiveType" '
+               'href="pathmap://XML_TYPES/XMLPrimitiveTypes.library.uml#short"/>',
+               '<defaultValue xmi:type="uml:LiteralInteger" xmi:id="_tv" value="-3"/>')
+    _attribute(model, "code", '<type xmi:type="uml:PrimitiveType" '
+               'href="pathmap://XML_TYPES/XMLPrimitiveTypes.library.uml#unsignedByte"/>')
+    props = {p.get("name"): p for p in _psm(model).iter(f"{O}property")}
+    assert (props["count"].get("cpp-type"), props["count"].get("xml-type")) == ("int", "long")
+    assert (props["code"].get("cpp-type"), props["code"].get("xml-type")) == ("unsigned int", "ulong")
+    assert 'type="short"' not in _files(model)["deploy/quadarm.xml"]
+
+
+def test_an_integer_default_outside_its_model_type_is_an_error(model: Path) -> None:
+    _attribute(model, "count", '<type xmi:type="uml:PrimitiveType" '
+               'href="pathmap://XML_TYPES/XMLPrimitiveTypes.library.uml#short"/>',
+               '<defaultValue xmi:type="uml:LiteralInteger" xmi:id="_tv" value="40000"/>')
+    error = _error(model)
+    assert "ORO002" in str(error) and "-32768 to 32767" in str(error)
+
+
+@pytest.mark.parametrize(("lower", "upper", "cpp", "sample"), [
+    ("3", "3", "std::vector<double>", "std::vector<double>(3, 0.0)"),
+    ("0", "3", "std::vector<double>", "std::vector<double>()"),
+    ("0", "*", "std::vector<double>", "std::vector<double>()"),
+])
+def test_every_multiplicity_is_a_vector(model: Path, lower: str, upper: str, cpp: str, sample: str) -> None:
+    _attribute(model, "limits", f'<type xmi:type="uml:PrimitiveType" {REAL}/>', _multiplicity(lower, upper))
+    limits = next(p for p in _psm(model).iter(f"{O}property") if p.get("name") == "limits")
+    assert (limits.get("cpp-type"), limits.get("xml-type"), limits.get("cpp-default")) == (cpp, "array", sample)
+
+
+def test_an_array_of_booleans_is_never_left_out_silently(model: Path) -> None:
+    """A convention-selected attribute RTT cannot carry is no property, with a located warning (ORO013)."""
+    _attribute(model, "enabled", '<type xmi:type="uml:PrimitiveType" '
+               'href="pathmap://UML_LIBRARIES/UMLPrimitiveTypes.library.uml#Boolean"/>', _multiplicity("7", "7"))
+    done = generate(model, None, "orocos", write=False)
+    said = [str(w) for w in done.warnings if "ORO013" in str(w)]
+    assert len(said) == 1 and "'enabled'" in said[0] and "Boolean[7]" in said[0], said
+    assert "enabled" not in [p.get("name") for p in _psm(model).iter(f"{O}property")]
+
+
+def test_an_operation_parameter_of_booleans_is_an_error(model: Path) -> None:
+    """An operation the component offers must carry every parameter: refused by name (ORO001)."""
+    edit(model, '<ownedOperation xmi:type="uml:Operation" xmi:id="_qa084o" name="maxTracking"',
+         '<ownedOperation xmi:type="uml:Operation" xmi:id="_tmask" name="setMask" visibility="protected">'
+         '<ownedParameter xmi:type="uml:Parameter" xmi:id="_tmaskp" name="enabled">'
+         '<type xmi:type="uml:PrimitiveType" href="pathmap://UML_LIBRARIES/UMLPrimitiveTypes.library.uml#Boolean"/>'
+         + _multiplicity("7", "7") + '</ownedParameter></ownedOperation>\n      '
+         '<ownedOperation xmi:type="uml:Operation" xmi:id="_qa084o" name="maxTracking"')
+    error = _error(model)
+    assert "ORO001" in str(error) and "'enabled'" in str(error) and "Boolean[7]" in str(error)
+
+
+def test_a_data_type_that_contains_itself_is_an_error(model: Path) -> None:
+    edit(model, '<ownedAttribute xmi:type="uml:Property" xmi:id="_qa035a" name="damping"',
+         '<ownedAttribute xmi:type="uml:Property" xmi:id="_tself" name="inner" visibility="public">'
+         '<type xmi:type="uml:DataType" xmi:idref="_qa005t"/></ownedAttribute>\n      '
+         '<ownedAttribute xmi:type="uml:Property" xmi:id="_qa035a" name="damping"')
+    error = _error(model)
+    assert "ORO012" in str(error) and "Gains > Gains" in str(error)
+
+
+def test_a_data_type_property_takes_no_default_of_its_own(model: Path) -> None:
+    edit(model, '<ownedAttribute xmi:type="uml:Property" xmi:id="_qa061a" name="gains" visibility="protected">',
+         '<ownedAttribute xmi:type="uml:Property" xmi:id="_qa061a" name="gains" visibility="protected">'
+         '<defaultValue xmi:type="uml:OpaqueExpression" xmi:id="_tgv"><body>{1, 2, 3}</body></defaultValue>')
+    error = _error(model)
+    assert "ORO002" in str(error) and "the data type's attributes give its value" in str(error)
+
+
+def test_a_realizing_class_inherits_its_generals_attributes(model: Path) -> None:
+    """Generalization of realizing classes: a base class's attribute is a property of the component."""
+    edit(model, '<packagedElement xmi:type="uml:Class" xmi:id="_qa006c" name="LwrArm">',
+         '<packagedElement xmi:type="uml:Class" xmi:id="_tbase" name="ArmBase">'
+         f'<ownedAttribute xmi:type="uml:Property" xmi:id="_tba" name="payload" visibility="protected">'
+         f'<type xmi:type="uml:PrimitiveType" {REAL}/>'
+         '<defaultValue xmi:type="uml:LiteralReal" xmi:id="_tbv" value="1.5"/></ownedAttribute></packagedElement>\n    '
+         '<packagedElement xmi:type="uml:Class" xmi:id="_qa006c" name="LwrArm">'
+         '<generalization xmi:type="uml:Generalization" xmi:id="_tgen" general="_tbase"/>')
+    arm = next(t for t in _psm(model).iter(f"{O}task-context") if t.get("name") == "ArmInterface")
+    assert [p.get("name") for p in arm.iter(f"{O}property")] == ["payload", "mode", "inertia"]
+    assert "arm1.payload = 1.5" in _files(model)["deploy/quadarm.ops"]
