@@ -7,6 +7,8 @@
            indented as f:indent (common/indent.xsl) indents it, through its
            rules (t:indented-content) in the same pass.
   Data:    xslt/m2m/orocos/types.xml (primitive kind -> C++ / cpf XML type, sample).
+  Types:   xslt/m2m/orocos/types.xsl (data types, enumerations, arrays, the
+           typekit's o:types, structured property values).
   Uses:    xslt/m2m/common/psm-kit.xsl (wrapper, hooks, default values).
   Params:  package-name (see below).
 
@@ -59,6 +61,7 @@
     ORO009  an operation call Orocos cannot make (two ports of one interface
             and role, two required operations of one name, a call to or
             from another middleware)
+    ORO012  a data type that contains itself (types.xsl)
   Warnings (f:warn):
     ORO006  no instance is deployed on OROCOS: all instances are generated
             for Orocos anyway (the same model on another middleware)
@@ -66,6 +69,8 @@
             deploys some components on OROCOS and others elsewhere)
     ORO010  a required interface no connector binds to a provider
     ORO011  a required operation the realizing class does not declare
+    ORO013  an attribute the convention would make a property that has a
+            type Orocos cannot carry (it is no property)
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -437,7 +442,7 @@
       <xsl:for-each select="$task-context/o:property">
         <xsl:variable name="set" as="element(pim:property-value)?" select="$instance/pim:property-value[@attribute eq current()/@xmi-id]"/>
         <xsl:variable name="values" as="xs:string*"
-            select="if ($set) then fp:oro-values($set/@value, fp:oro-required-type(key('fp:id', @xmi-id, root($instance)), @xmi-id, 'property ''' || @name || ''''), $set/@holder)
+            select="if ($set and empty(o:value)) then fp:oro-values($set/@value, fp:oro-required-type(key('fp:id', @xmi-id, root($instance)), @xmi-id, 'property ''' || @name || ''''), $set/@holder)
                     else (@xml-default, @script-default)"/>
         <xsl:choose>
           <xsl:when test="o:value">

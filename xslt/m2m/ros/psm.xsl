@@ -67,6 +67,8 @@
     ROS104  a value set on an instance's property that is no parameter
     ROS105  a required interface no connector binds to a provider
     ROS106  a required operation the realizing class does not declare
+    ROS107  an attribute the convention would make a parameter that has a
+            type the ROS type map cannot carry (it is no parameter)
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
