@@ -76,7 +76,7 @@
     <xsl:variable name="lineage" as="element()*" select="fp:lineage($classifier)"/>
     <xsl:sequence select="if (count($lineage) eq 1) then $classifier/*[local-name() eq $kind]
         else for $name in distinct-values(reverse($lineage) ! *[local-name() eq $kind]/@name)
-             return ($lineage/*[local-name() eq $kind][@name eq $name])[1]"/>
+             return ($lineage ! *[local-name() eq $kind][@name eq $name])[1]"/>
   </xsl:function>
 
   <xsl:function name="fp:attributes" as="element(pim:attribute)*">

@@ -192,7 +192,7 @@
           </xsl:choose>
         </xsl:variable>
         <o:value name="{$name}" xml-type="{$type/@xml}" path="{$path}"
-                 cpp-value="{if (exists($default)) then $type/@cpp || '{' || string-join($items/@cpp-value, ', ') || '}'
+                 cpp-value="{if (exists($default)) then $type/@cpp || '{' || string-join($items ! string(@cpp-value), ', ') || '}'
                              else $type/@sample}">
           <xsl:sequence select="$items"/>
         </o:value>
