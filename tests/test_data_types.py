@@ -162,3 +162,11 @@ def test_a_realizing_class_inherits_its_generals_attributes(model: Path) -> None
     arm = next(t for t in _psm(model).iter(f"{O}task-context") if t.get("name") == "ArmInterface")
     assert [p.get("name") for p in arm.iter(f"{O}property")] == ["payload", "mode", "inertia"]
     assert "arm1.payload = 1.5" in _files(model)["deploy/quadarm.ops"]
+
+
+@pytest.mark.parametrize("target", ["ros1", "ros2"])
+def test_the_ros_targets_refuse_what_they_cannot_carry_yet_by_name(target: str) -> None:
+    """Nested data types, arrays and enumerations are not carried on ROS yet: an error naming the port."""
+    with pytest.raises(RobomdaError) as info:
+        generate(QUADARM / "model.xmi", None, target, write=False)
+    assert "ROS001" in str(info.value) and "port 'jointState'" in str(info.value)
