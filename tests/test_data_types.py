@@ -170,3 +170,11 @@ def test_the_ros_targets_refuse_what_they_cannot_carry_yet_by_name(target: str) 
     with pytest.raises(RobomdaError) as info:
         generate(QUADARM / "model.xmi", None, target, write=False)
     assert "ROS001" in str(info.value) and "port 'jointState'" in str(info.value)
+
+
+def test_a_driven_device_without_degrees_of_freedom_is_named(model: Path) -> None:
+    """A Dependency from a part to a Device says the part drives it; a Device with no dof: BND022, nothing checked."""
+    edit(model, '<defaultValue xmi:type="uml:LiteralInteger" xmi:id="_qa212v" value="7"/>', "")
+    said = [str(w) for w in generate(model, None, "orocos", write=False).warnings]
+    assert [w for w in said if "BND022" in w and "'lwr1'" in w and "arm1" in w], said
+    assert not [w for w in said if "BND021" in w], said

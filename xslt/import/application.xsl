@@ -55,8 +55,11 @@
     robomda stereotype StartAfter, else the name "startAfter", case-
     insensitive) -> pim:dependency with its clients (the parts that start
     later) and suppliers (the parts started first), in document order,
-    wherever it is owned (package or classifier). Every other plain
-    Dependency carries no PIM content and is not written. Clients and
+    wherever it is owned (package or classifier). A plain Dependency
+    whose suppliers are Devices -> pim:dependency kind "drives" (its
+    clients, parts or components, drive that hardware: the bind step
+    checks their arrays against the Device's dof, seed 001). Every other
+    plain Dependency carries no PIM content and is not written. Clients and
     suppliers in another model (href) are not written; a dependency left
     without a client or a supplier is not written (IMP111).
   - What is not written is named by a warning (report.xsl, IMP110-IMP116).
@@ -413,16 +416,27 @@
                        [f:is-robomda-profile(string(prefix-from-QName(node-name(.))), namespace-uri())]))"/>
   </xsl:function>
 
+  <!-- true when $d is a plain Dependency whose suppliers are all Devices:
+       its clients (parts, components) drive that hardware (seed 001) -->
+  <xsl:function name="fp:drives-device" as="xs:boolean">
+    <xsl:param name="dependency" as="element()"/>
+    <xsl:variable name="suppliers" as="element()*" select="fp:targets($dependency, 'supplier')"/>
+    <xsl:sequence select="$dependency/@x:type eq 'Dependency' and exists($suppliers)
+                          and (every $s in $suppliers satisfies fp:meta($s) eq 'Device')"/>
+  </xsl:function>
+
   <xsl:template match="*[@x:type eq 'Dependency']" mode="mp:packageable"
                 as="element(pim:dependency)?">
     <xsl:param name="root" as="element()" tunnel="yes"/>
+    <xsl:variable name="drives" as="xs:boolean" select="not(fp:is-start-after(.)) and fp:drives-device(.)"/>
     <xsl:choose>
-      <xsl:when test="not(fp:is-start-after(.))"/>
+      <xsl:when test="not(fp:is-start-after(.) or $drives)"/>
       <!-- without a client or a supplier in the model: not imported
            (IMP111, report.xsl) -->
       <xsl:when test="empty(fp:targets(., 'client')) or empty(fp:targets(., 'supplier'))"/>
       <xsl:otherwise>
         <pim:dependency id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
+          <xsl:if test="$drives"><xsl:attribute name="kind" select="'drives'"/></xsl:if>
           <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
           <xsl:for-each select="fp:targets(., 'client')">
             <pim:client element="{fp:id(.)}"/>

@@ -172,8 +172,9 @@
       <xsl:when test="$meta = ('Dependency', 'Abstraction')">
         <xsl:sequence select="map { 'code': 'IMP111', 'message': $what || ' is not imported: ' || (
             if (fp:is-start-after($element)) then 'it has no client or no supplier in this model'
+            else if (fp:drives-device($element)) then 'it has no client in this model'
             else 'robomda reads a dependency only as a deployment-sequence constraint'
-                 || ' (stereotype StartAfter, or named startAfter; docs/profile.md)') }"/>
+                 || ' (stereotype StartAfter, or named startAfter) or as a part driving a Device (its supplier); docs/profile.md') }"/>
       </xsl:when>
       <xsl:when test="$meta = ('Usage', 'Realization', 'InterfaceRealization', 'ComponentRealization')">
         <xsl:sequence select="map { 'code': 'IMP112', 'message': $what || ' is not imported: '
