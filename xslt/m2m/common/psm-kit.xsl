@@ -38,9 +38,12 @@
     fp:warn-unbound-services($instances, $code)  required interfaces no call binds
     fp:calls-declared($bc, $service-port, $operation, $generated, $code)  the class declares a required operation
     fp:warn-unused-values($instance, $exposed, $code)  values set on properties the target does not expose
+    fp:warn-skipped-attributes($skipped, $code, $what)  attributes the convention
+                                 would expose that the target cannot carry
     fp:configurable-attributes($bc)  the attributes stereotyped Configurable
     fp:convention-attributes($bc)    without any: the convention's choice
-    fp:parse-default($value, $kind, $primitive, $id, $code)  see below
+    fp:parse-default($value, $kind, $primitive, $id, $code)  see below (integers
+                                 within the model type's range, fp:in-range)
     fp:decimal($number)          a number text with a '.0' where it has none
   Data types, arrays and inherited features: data-types.xsl (included).
   A realizing class's operations and attributes include those it inherits.
