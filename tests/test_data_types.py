@@ -142,6 +142,20 @@ def test_a_data_type_that_contains_itself_is_an_error(model: Path) -> None:
     assert "ORO012" in str(error) and "Gains > Gains" in str(error)
 
 
+def test_an_array_property_of_a_data_type_that_contains_itself_is_an_error(model: Path) -> None:
+    """An array of such a type: ORO012 as well, not an endless value tree."""
+    edit(model, '<ownedAttribute xmi:type="uml:Property" xmi:id="_qa035a" name="damping"',
+         '<ownedAttribute xmi:type="uml:Property" xmi:id="_tself" name="inner" visibility="public">'
+         '<type xmi:type="uml:DataType" xmi:idref="_qa005t"/>' + _multiplicity("2", "2") + '</ownedAttribute>\n      '
+         '<ownedAttribute xmi:type="uml:Property" xmi:id="_qa035a" name="damping"')
+    edit(model, '<ownedAttribute xmi:type="uml:Property" xmi:id="_qa061a" name="gains" visibility="protected">',
+         '<ownedAttribute xmi:type="uml:Property" xmi:id="_qa061a" name="gains" visibility="protected">'
+         '<lowerValue xmi:type="uml:LiteralInteger" xmi:id="_tl2" value="2"/>'
+         '<upperValue xmi:type="uml:LiteralUnlimitedNatural" xmi:id="_tu2" value="2"/>')
+    error = _error(model)
+    assert "ORO012" in str(error) and "Gains > Gains" in str(error)
+
+
 def test_a_data_type_property_takes_no_default_of_its_own(model: Path) -> None:
     edit(model, '<ownedAttribute xmi:type="uml:Property" xmi:id="_qa061a" name="gains" visibility="protected">',
          '<ownedAttribute xmi:type="uml:Property" xmi:id="_qa061a" name="gains" visibility="protected">'

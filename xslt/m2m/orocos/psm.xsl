@@ -374,14 +374,14 @@
     <xsl:param name="attribute" as="element(pim:attribute)"/>
     <xsl:variable name="type" as="element(ty:type)"
         select="fp:oro-required-type($attribute, $attribute/@id, 'property ''' || $attribute/@name || '''')"/>
-    <!-- a data type that contains itself has no value tree (ORO012) -->
-    <xsl:if test="$type/@kind eq 'struct' and fp:type-depth(key('fp:id', $type/@type-ref, root($attribute)), (), 'ORO012') lt 0">
-      <xsl:sequence select="error()"/>
-    </xsl:if>
     <!-- a structured value: the whole tree, always (its leaves without a
-         model value hold the type's zero) -->
+         model value hold the type's zero); of a data type, or an array of
+         one, only once fp:type-depth found no data type that contains
+         itself (it fails with ORO012: the tree would have no end) -->
     <xsl:variable name="tree" as="element(o:value)?"
-        select="if ($type/@kind) then fp:oro-value($attribute, $type, $attribute/@name, '') else ()"/>
+        select="if (empty($type/@kind)) then ()
+                else if (exists($type/@type-ref) and fp:type-depth(key('fp:id', $type/@type-ref, root($attribute)), (), 'ORO012') lt 0) then ()
+                else fp:oro-value($attribute, $type, $attribute/@name, '')"/>
     <xsl:variable name="values" as="xs:string*"
         select="if ($attribute/@default and empty($tree)) then fp:oro-values($attribute/@default, $type, $attribute/@id) else ()"/>
     <o:property xmi-id="{$attribute/@id}" name="{f:cpp-identifier($attribute/@name)}"
