@@ -428,9 +428,10 @@
   <xsl:template match="*[@x:type eq 'Dependency']" mode="mp:packageable"
                 as="element(pim:dependency)?">
     <xsl:param name="root" as="element()" tunnel="yes"/>
-    <xsl:variable name="drives" as="xs:boolean" select="not(fp:is-start-after(.)) and fp:drives-device(.)"/>
+    <xsl:variable name="start-after" as="xs:boolean" select="fp:is-start-after(.)"/>
+    <xsl:variable name="drives" as="xs:boolean" select="not($start-after) and fp:drives-device(.)"/>
     <xsl:choose>
-      <xsl:when test="not(fp:is-start-after(.) or $drives)"/>
+      <xsl:when test="not($start-after or $drives)"/>
       <!-- without a client or a supplier in the model: not imported
            (IMP111, report.xsl) -->
       <xsl:when test="empty(fp:targets(., 'client')) or empty(fp:targets(., 'supplier'))"/>

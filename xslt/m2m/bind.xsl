@@ -443,8 +443,7 @@
           <xsl:for-each select="key('fp:bc', $inst/@component, $bound-tree)/pim:data-port">
             <fp:ip instance="{$inst/@name}" port="{@port}" data-port="{@name}"
                    direction="{@direction}" interface="{@interface}"
-                   type-key="{(@primitive, @type)[1]}{if (@upper = ('', '1') or empty(@upper)) then ''
-                             else '[' || @lower || '..' || @upper || ']'}"/>
+                   type-key="{(@primitive, @type)[1]}{fp:multiplicity-label(.)}"/>
           </xsl:for-each>
           <!-- a service port: out where provided, in where required -->
           <xsl:for-each select="key('fp:bc', $inst/@component, $bound-tree)/pim:service-port">

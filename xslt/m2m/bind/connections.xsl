@@ -144,8 +144,8 @@
     <xsl:variable name="interfaces" as="element()*"
         select="($port/@type, $port/(pim:provided | pim:required)/@interface) ! key('fp:id', ., $root)/self::pim:interface"/>
     <xsl:variable name="data" as="element()*" select="if (exists($interfaces)) then $interfaces/pim:attribute else $port"/>
-    <xsl:variable name="labels" as="xs:string*" select="distinct-values($data ! (string((@type-name, @primitive, '?')[1])
-        || (if (@upper = ('', '1') or empty(@upper)) then '' else '[' || @lower || '..' || @upper || ']')))"/>
+    <xsl:variable name="labels" as="xs:string*"
+        select="distinct-values($data ! (string((@type-name, @primitive, '?')[1]) || fp:multiplicity-label(.)))"/>
     <xsl:sequence select="string-join((key('fp:id', $end/@part, $root)/@name, $port/@name), '.') || ': '
         || (if (empty($labels)) then 'no data' else string-join($labels, ' / '))"/>
   </xsl:function>

@@ -105,8 +105,11 @@
     </xsl:if>
     <xsl:for-each select="fp:type-closure(key('fp:id', $typed/@type, $root)/self::pim:datatype)/self::pim:datatype">
       <xsl:variable name="type" as="element(pim:datatype)" select="."/>
-      <xsl:for-each select="fp:attributes(.)[fp:array(.)[1] eq 'fixed']">
-        <fp:array id="{$id}" what="{$what}" label="{$type/@name}.{@name}[{fp:array(.)[2]}]" size="{fp:array(.)[2]}"/>
+      <xsl:for-each select="fp:attributes(.)">
+        <xsl:variable name="array" as="xs:string*" select="fp:array(.)"/>
+        <xsl:if test="$array[1] eq 'fixed'">
+          <fp:array id="{$id}" what="{$what}" label="{$type/@name}.{@name}[{$array[2]}]" size="{$array[2]}"/>
+        </xsl:if>
       </xsl:for-each>
     </xsl:for-each>
   </xsl:function>

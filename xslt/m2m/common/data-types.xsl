@@ -22,6 +22,7 @@
   Functions
     fp:type-def($typed)        the pim:datatype / pim:enumeration it names, or ()
     fp:array($typed)           () single; ('unbounded'); ('fixed', n); ('bounded', n)
+    fp:multiplicity-label($typed)  '' for one value, else '[lower..upper]' (keys, messages)
     fp:lineage($classifier)    the classifier, then its generals, nearest first
     fp:attributes($classifier) its attributes with the inherited ones (general's
                                first; a redefinition by name wins)
@@ -57,6 +58,15 @@
       else if (xs:integer($upper) le 1) then ()
       else if ($lower eq $upper) then ('fixed', string(xs:integer($upper)))
       else ('bounded', string(xs:integer($upper)))"/>
+  </xsl:function>
+
+  <!-- '[lower..upper]' of a typed element with an upper bound other than
+       1, '' otherwise: how connections compare multiplicities and how
+       messages show them -->
+  <xsl:function name="fp:multiplicity-label" as="xs:string">
+    <xsl:param name="typed" as="element()"/>
+    <xsl:sequence select="if ($typed/@upper = ('', '1') or empty($typed/@upper)) then ''
+                          else '[' || $typed/@lower || '..' || $typed/@upper || ']'"/>
   </xsl:function>
 
   <!-- the classifier and every classifier it specializes, nearest first

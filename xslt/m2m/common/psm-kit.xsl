@@ -386,7 +386,7 @@
   <xsl:function name="fp:in-range" as="xs:boolean">
     <xsl:param name="number" as="xs:integer"/>
     <xsl:param name="primitive" as="xs:string"/>
-    <xsl:variable name="range" as="xs:integer*" select="if (map:contains($fp:integer-range, $primitive)) then map:get($fp:integer-range, $primitive) else ()"/>
+    <xsl:variable name="range" as="xs:integer*" select="map:get($fp:integer-range, $primitive)"/>
     <xsl:sequence select="empty($range) or ($number ge $range[1] and $number le $range[2])"/>
   </xsl:function>
 
