@@ -98,11 +98,10 @@
         else concat('priority ', $activity/@priority, ' of the model: ORO_SCHED_OTHER has no priorities, so 0 (warning ORO102)')"/>
   </xsl:function>
 
-  <!-- what LoadLibrary / loadLibrary takes: the typekit of the model's
-       data types first, "<pkg>/<typekit>" (RTT's plugin loader looks in
-       <pkg>/types/), when there is one (the
-       properties of those types are then read with their types); then the
-       components, "<pkg>/<pkg>" -->
+  <!-- what LoadLibrary / loadLibrary takes: first the typekit of the
+       model's data types, when there is one, "<pkg>/<typekit>" (RTT's
+       plugin loader looks in <pkg>/types/), so that properties of those
+       types are read with their types; then the components, "<pkg>/<pkg>" -->
   <xsl:function name="fp:deploy-libraries" as="xs:string+">
     <xsl:param name="deployment" as="element(o:deployment)"/>
     <xsl:sequence select="$deployment/o:types ! concat($deployment/@package, '/', @typekit),
@@ -405,6 +404,18 @@
               concat('  end), ', $what, ')'))"/>
   </xsl:function>
 
+  <!-- check script: a check that Lua expression $get has the value $want
+       (near it, for a $real number), saying $label (a Lua expression) and
+       what it is -->
+  <xsl:function name="fp:lua-value-check" as="xs:string">
+    <xsl:param name="get" as="xs:string"/>
+    <xsl:param name="want" as="xs:string"/>
+    <xsl:param name="real" as="xs:boolean"/>
+    <xsl:param name="label" as="xs:string"/>
+    <xsl:sequence select="concat('check(', if ($real) then concat('near(', $get, ', ', $want, ')') else concat($get, ' == ', $want),
+                                 ', ', $label, ' .. &quot; (is &quot; .. tostring(', $get, ') .. &quot;)&quot;)')"/>
+  </xsl:function>
+
   <!-- check script: the leaves of a data type or an array property, unless
        the user's file tunes it -->
   <xsl:function name="fp:lua-structured-checks" as="xs:string*">
@@ -417,10 +428,8 @@
           $leaves ! (
             let $get := concat('comps[', fp:cpp-string($instance/@name), ']:getProperty(', fp:cpp-string($p/@name), '):get()', @path),
                 $value := if (@enum = 'true') then concat('enum_int(', $get, ')') else $get
-            return concat('    check(', if (@xml-type = ('double', 'float')) then concat('near(', $value, ', ', @script-value, ')')
-                                        else concat($value, ' == ', @script-value),
-                          ', ', fp:cpp-string(concat('property ', $instance/@name, '.', $p/@name, @path, ' = ', @script-value)),
-                          ' .. &quot; (is &quot; .. tostring(', $value, ') .. &quot;)&quot;)')),
+            return '    ' || fp:lua-value-check($value, @script-value, @xml-type = ('double', 'float'),
+                fp:cpp-string(concat('property ', $instance/@name, '.', $p/@name, @path, ' = ', @script-value)))),
           '  end'"/>
     </xsl:if>
   </xsl:function>
@@ -507,7 +516,10 @@
        (state, period, CPU affinity, property values), stop, verdict -->
   <!-- check script: the value each property should have, the tuned one of
        <instance>.user.cpf (read with Lua patterns), else the model's -->
-  <xsl:variable name="fp:lua-tuned-values" as="xs:string+" select="(
+  <xsl:function name="fp:lua-tuned-values" as="xs:string+">
+    <!-- some property is a data type or an array (its value an o:value tree) -->
+    <xsl:param name="structured" as="xs:boolean"/>
+    <xsl:sequence select="(
         '  -- the value a property should have: the tuned one of &lt;instance&gt;.user.cpf, else the model''s',
         '  local tuned = {}',
         '  for _, n in ipairs(names) do',
@@ -517,7 +529,9 @@
         '      local text = f:read(&quot;*a&quot;):gsub(&quot;&lt;!%-%-.-%-%-&gt;&quot;, &quot;&quot;)',
         '      f:close()',
         '      for p, v in text:gmatch(&quot;&lt;simple%s+name=\&quot;([^\&quot;]*)\&quot;[^&gt;]*&gt;%s*&lt;value&gt;(.-)&lt;/value&gt;&quot;) do tuned[n][p] = v end',
-        '      @structured',
+        if ($structured) then (
+          '      -- a data type or an array tuned there: its members are the user''s, not checked',
+          '      for p in text:gmatch(&quot;&lt;struct%s+name=\&quot;([^\&quot;]*)\&quot;&quot;) do tuned[n][p] = &quot;&quot; end') else (),
         '    end',
         '  end',
         '  local function want(n, p, model)',
@@ -528,6 +542,7 @@
         '    v = v:gsub(&quot;&amp;lt;&quot;, &quot;&lt;&quot;):gsub(&quot;&amp;gt;&quot;, &quot;&gt;&quot;):gsub(&quot;&amp;quot;&quot;, &quot;\&quot;&quot;):gsub(&quot;&amp;apos;&quot;, &quot;''&quot;)',
         '    return (v:gsub(&quot;&amp;amp;&quot;, &quot;&amp;&quot;))',
         '  end')"/>
+  </xsl:function>
 
   <!-- check script: the period, CPU affinity and property values of one
        instance read back through the deployer -->
@@ -545,10 +560,8 @@
           for $property in o:property-value[not(o:value)] return
           let $get := concat('comps[', fp:cpp-string(@name), ']:getProperty(', fp:cpp-string($property/@name), '):get()'),
               $want := concat('want(', fp:cpp-string(@name), ', ', fp:cpp-string($property/@name), ', ', $property/@script-value, ')')
-          return concat('  check(', if ($property/@xml-type = ('double', 'float')) then concat('near(', $get, ', ', $want, ')')
-                                     else concat($get, ' == ', $want),
-                        ', ', fp:cpp-string(concat('property ', @name, '.', $property/@name, ' = ')), ' .. tostring(', $want,
-                        ') .. &quot; (is &quot; .. tostring(', $get, ') .. &quot;)&quot;)'),
+          return '  ' || fp:lua-value-check($get, $want, $property/@xml-type = ('double', 'float'),
+              fp:cpp-string(concat('property ', @name, '.', $property/@name, ' = ')) || ' .. tostring(' || $want || ')'),
           for $call in o:call return
           concat('  check(comps[', fp:cpp-string(@name), ']:requires(', fp:cpp-string($call/@service), '):ready(), ',
                  fp:cpp-string(concat(@name, ' calls ', $call/@provider, ' through ', $call/@service, ' (every operation connected)')), ')'))"/>
@@ -590,11 +603,7 @@
         '  local function near(a, b) return math.abs(a - b) &lt;= 1e-6 * math.max(1, math.abs(b)) end',
         if ($deployment//o:value[@enum = 'true'])
         then '  local function enum_int(v) local i = rtt.Variable(&quot;int&quot;); i:assign(v); return i:tolua() end' else (),
-        $fp:lua-tuned-values ! (if (. eq '      @structured') then
-            (if ($deployment/o:instance/o:property-value/o:value) then (
-              '      -- a data type or an array tuned there: its members are the user''s, not checked',
-              '      for p in text:gmatch(&quot;&lt;struct%s+name=\&quot;([^\&quot;]*)\&quot;&quot;) do tuned[n][p] = &quot;&quot; end') else ())
-            else .),
+        fp:lua-tuned-values(exists($deployment/o:instance/o:property-value/o:value)),
         $deployment/o:instance ! fp:lua-instance-checks(.),
         '  for _, n in ipairs(names) do comps[n]:stop() end',
         '  for _, n in ipairs(names) do comps[n]:cleanup() end',
