@@ -1,6 +1,6 @@
 """Structured robot data (issue 14): data types, enumerations, arrays and inheritance.
 
-The quad-arm fixture (fixtures/orocos/quadarm, seed 001) is edited one
+The quad-arm fixture (fixtures/cases/quadarm, seed 001) is edited one
 defect or one variation at a time; its goldens (tests/test_golden.py), its
 broken variants (fixtures/broken, tests/test_broken.py) and its deployment on
 RTT 2.10 (tests/test_orocos_deploy.py) are elsewhere. Here: what the Orocos
@@ -21,7 +21,7 @@ from robomda.api import generate
 from robomda.diagnostics import RobomdaError
 
 ROOT = Path(__file__).resolve().parents[1]
-QUADARM = ROOT / "fixtures" / "orocos" / "quadarm"
+QUADARM = ROOT / "fixtures" / "cases" / "quadarm"
 O = "{urn:robomda:psm-orocos:1}"
 FS = "{urn:robomda:fileset:1}"
 REAL = 'href="pathmap://UML_LIBRARIES/UMLPrimitiveTypes.library.uml#Real"'
@@ -178,12 +178,86 @@ def test_a_realizing_class_inherits_its_generals_attributes(model: Path) -> None
     assert "arm1.payload = 1.5" in _files(model)["deploy/quadarm.ops"]
 
 
+# ------------------------------------------------------------------- ROS
+def _ros_files(model: Path, target: str) -> dict[str, str]:
+    text = generate(model, None, target, write=False).stages["text"]
+    return {n.get("path"): n.text or "" for n in etree.fromstring(text.encode("utf-8")).iter(f"{FS}file")}
+
+
+def _body(text: str) -> list[str]:
+    """The lines of a generated file below its banner."""
+    return [line for line in text.splitlines() if not line.startswith(("#", "//"))]
+
+
 @pytest.mark.parametrize("target", ["ros1", "ros2"])
-def test_the_ros_targets_refuse_what_they_cannot_carry_yet_by_name(target: str) -> None:
-    """Nested data types, arrays and enumerations are not carried on ROS yet: an error naming the port."""
+def test_ros_messages_carry_nested_types_arrays_and_enumerations(target: str) -> None:
+    files = _ros_files(QUADARM / "model.xmi", target)
+    assert _body(files["msg/JointState.msg"]) == [
+        "float64[7] position", "float64[7] velocity", "float64[7] effort", "ControlMode mode"]
+    assert _body(files["msg/JointTorques.msg"]) == ["float64[7] torque", "Gains gains"]
+    assert _body(files["msg/ControlMode.msg"]) == [
+        "int32 POSITION=0", "int32 IMPEDANCE=1", "int32 TORQUE=2", "int32 value"]
+    assert _body(files["msg/Gains.msg"]) == ["float64 stiffness", "float64 damping", "float64 max_torque"]
+    conversions = files["include/quadarm/msg_conversions.hpp"]
+    assert "m.max_torque = v.maxTorque;" in conversions and "from_msg(m.mode, v.mode);" in conversions
+    assert "v = static_cast<::ControlMode>(m.value);" in conversions
+
+
+def test_the_data_type_headers_are_the_same_on_every_target() -> None:
+    """include/<Type>.hpp is written once for all targets (m2t/common/data-types.xsl)."""
+    orocos = _files(QUADARM / "model.xmi")
+    for target in ("ros1", "ros2"):
+        ros = _ros_files(QUADARM / "model.xmi", target)
+        for header in ("ControlMode.hpp", "Gains.hpp", "JointState.hpp", "JointTorques.hpp"):
+            assert ros["include/" + header] == orocos["include/" + header], (target, header)
+
+
+def test_ros_parameters_of_data_types_enumerations_and_arrays() -> None:
+    files = _ros_files(QUADARM / "model.xmi", "ros2")
+    params = files["config/params.yaml"]
+    assert "    gains:\n      stiffness: 300.0\n      damping: 20.0\n      maxTorque: 80.0\n" in params
+    assert '    mode: "IMPEDANCE"\n' in params and "    desired: [0.0, 0.5, 0.0, -1.0, 0.0, 0.5, 0.0]\n" in params
+    controller = files["src/JointPositionController.cpp"]
+    assert 'declare_parameter<double>("gains.stiffness", 300.0)' in controller
+    assert "if (value.size() == 7) {" in controller
+    ros1 = _ros_files(QUADARM / "model.xmi", "ros1")
+    assert 'private_nh_.param<double>("gains/stiffness", value, 300.0);' in ros1["src/JointPositionController.cpp"]
+    assert 'if (value == "TORQUE") {' in ros1["src/ArmInterface.cpp"]
+
+
+@pytest.mark.parametrize(("target", "field", "warned"), [("ros1", "float64[] limits", True),
+                                                          ("ros2", "float64[<=7] limits", False)])
+def test_a_bounded_array_field(model: Path, target: str, field: str, warned: bool) -> None:
+    """ROS 2 messages bound arrays; ROS 1 ones cannot: unbounded, with a located warning (ROS108)."""
+    edit(model, '<ownedAttribute xmi:type="uml:Property" xmi:id="_qa032a" name="torque"',
+         f'<ownedAttribute xmi:type="uml:Property" xmi:id="_tlim" name="limits" visibility="public">'
+         f'<type xmi:type="uml:PrimitiveType" {REAL}/>{_multiplicity("0", "7")}</ownedAttribute>\n      '
+         '<ownedAttribute xmi:type="uml:Property" xmi:id="_qa032a" name="torque"')
+    done = generate(model, None, target, write=False)
+    files = {n.get("path"): n.text or "" for n in etree.fromstring(done.stages["text"].encode()).iter(f"{FS}file")}
+    assert field in _body(files["msg/JointTorques.msg"])
+    said = [str(w) for w in done.warnings if "ROS108" in str(w)]
+    assert bool(said) == warned and all("'limits'" in w and "at most 7" in w for w in said), said
+
+
+def test_a_port_carrying_an_array_of_numbers_is_a_multi_array(model: Path) -> None:
+    edit(model, 'xmi:id="_qa088a" name="torques" visibility="public">\n        <type xmi:type="uml:DataType" xmi:idref="_qa004t"/>',
+         f'xmi:id="_qa088a" name="torques" visibility="public"><type xmi:type="uml:PrimitiveType" {REAL}/>'
+         + _multiplicity("7", "7"))
+    psm = etree.fromstring(generate(model, None, "ros1", write=False).stages["psm"].encode())
+    messages = {p.get("name"): p.find("{urn:robomda:psm-ros:1}message") for p in psm.iter("{urn:robomda:psm-ros:1}port")}
+    assert messages["torques"].get("msg") == "std_msgs/Float64MultiArray"
+    assert messages["torques"].get("cpp-type") == "std::vector<double>"
+
+
+def test_a_ros_data_type_that_contains_itself_is_an_error(model: Path) -> None:
+    edit(model, '<ownedAttribute xmi:type="uml:Property" xmi:id="_qa035a" name="damping"',
+         '<ownedAttribute xmi:type="uml:Property" xmi:id="_tself" name="inner" visibility="public">'
+         '<type xmi:type="uml:DataType" xmi:idref="_qa005t"/></ownedAttribute>\n      '
+         '<ownedAttribute xmi:type="uml:Property" xmi:id="_qa035a" name="damping"')
     with pytest.raises(RobomdaError) as info:
-        generate(QUADARM / "model.xmi", None, target, write=False)
-    assert "ROS001" in str(info.value) and "port 'jointState'" in str(info.value)
+        generate(model, None, "ros1", write=False)
+    assert "ROS010" in str(info.value) and "Gains > Gains" in str(info.value)
 
 
 def test_a_driven_device_without_degrees_of_freedom_is_named(model: Path) -> None:
@@ -192,3 +266,21 @@ def test_a_driven_device_without_degrees_of_freedom_is_named(model: Path) -> Non
     said = [str(w) for w in generate(model, None, "orocos", write=False).warnings]
     assert [w for w in said if "BND022" in w and "'lwr1'" in w and "arm1" in w], said
     assert not [w for w in said if "BND021" in w], said
+
+
+def test_a_data_type_ros_cannot_declare_is_named_not_dropped(model: Path) -> None:
+    """A data type the atomic code uses (here a private attribute) with a member ROS cannot type: no
+    header, and a located warning saying the atomic code must declare it (ROS109), not an error."""
+    edit(model, '<packagedElement xmi:type="uml:DataType" xmi:id="_qa005t" name="Gains">',
+         '<packagedElement xmi:type="uml:DataType" xmi:id="_tcal" name="Calibration">'
+         '<ownedAttribute xmi:type="uml:Property" xmi:id="_tcala" name="arm" visibility="public">'
+         '<type xmi:type="uml:Class" xmi:idref="_qa006c"/></ownedAttribute></packagedElement>\n    '
+         '<packagedElement xmi:type="uml:DataType" xmi:id="_qa005t" name="Gains">')
+    _attribute(model, "calibration", '<type xmi:type="uml:DataType" xmi:idref="_tcal"/>')
+    edit(model, 'xmi:id="_tcalibration" name="calibration" visibility="protected"',
+         'xmi:id="_tcalibration" name="calibration" visibility="private"')
+    done = generate(model, None, "ros1", write=False)
+    said = [str(w) for w in done.warnings if "ROS109" in str(w)]
+    assert len(said) == 1 and "'Calibration'" in said[0] and "::Calibration" in said[0], said
+    files = {n.get("path") for n in etree.fromstring(done.stages["text"].encode()).iter(f"{FS}file")}
+    assert "include/Calibration.hpp" not in files and "include/Gains.hpp" in files

@@ -48,8 +48,8 @@ pytestmark = [
 
 MODELS = ["headlamp/model.xmi", "headlamp/model.ea.xmi", "meka/model.xmi", "meka/model.ea.xmi",
           "pid/model.xmi", "tuned/model.xmi", "split/model.xmi", "calligraphy/model.xmi", "learning/model.xmi",
-          # structured data: a typekit, struct / enum / array ports and properties (fixtures/orocos/)
-          "../orocos/quadarm/model.xmi"]
+          # structured data: a typekit, struct / enum / array ports and properties
+          "quadarm/model.xmi"]
 
 
 def _bash(script: str, cwd: Path, timeout: int = 1200) -> subprocess.CompletedProcess[str]:

@@ -125,14 +125,17 @@ def test_pid_ros2_mapping() -> None:
 
 
 def test_a_port_of_a_data_type_converts_to_the_users_type_in_the_global_namespace() -> None:
-    """ROS 1: inside namespace <pkg>, JointSample{...} named the generated message, not the user's
-    type, and the package did not compile (issue 10 item 8; catkin builds the fixture below)."""
+    """ROS 1: inside namespace <pkg>, JointSample names the generated message, so the generated code
+    names the model's type ::JointSample (issue 10 item 8: it did not compile; catkin builds the fixture below)."""
     for target in TARGETS:
         files = _files(_run(ROOT / "fixtures/ros/jointstate", target))
-        assert "::SampledPIDController::setMeasuredPosition(::JointSample{(*msg).position, (*msg).velocity});" \
+        assert "::SampledPIDController::setMeasuredPosition(from_msg_value<::JointSample>(*msg));" \
             in files["src/PIDController.cpp"]
-        assert "const ::JointSample value = ::SimulatedJoint::getMeasuredPosition();" in files["src/RobotInterface.cpp"]
+        assert "to_msg(::SimulatedJoint::getMeasuredPosition(), msg);" in files["src/RobotInterface.cpp"]
         assert files["msg/JointSample.msg"].splitlines()[-2:] == ["float64 position", "float64 velocity"]
+        conversions = files["include/jointstate/msg_conversions.hpp"]
+        assert "inline void from_msg(const jointstate::" in conversions and "::JointSample& v)" in conversions
+        assert "struct JointSample" in files["include/JointSample.hpp"]
 
 
 def test_warnings() -> None:
@@ -269,7 +272,9 @@ def _roscore_running(catkin_ws: Path, launch: Path):
     env = _ros_env(ROS_MASTER_URI=f"http://127.0.0.1:{port}", ROS_HOSTNAME="127.0.0.1",
                    ROS_PACKAGE_PATH=str(catkin_ws / "src") + ":/usr/share",
                    CMAKE_PREFIX_PATH=str(catkin_ws / "devel") + ":/usr",
-                   ROS_HOME=str(catkin_ws / "ros_home"), ROS_LOG_DIR=str(catkin_ws / "ros_log"))
+                   ROS_HOME=str(catkin_ws / "ros_home"), ROS_LOG_DIR=str(catkin_ws / "ros_log"),
+                   # the generated messages' Python classes, for rostopic
+                   PYTHONPATH=str(catkin_ws / "devel" / "lib" / "python3" / "dist-packages"))
     procs = []
     try:
         procs.append(subprocess.Popen(["roscore", "-p", str(port)], env=env, stdout=subprocess.DEVNULL,
@@ -301,6 +306,34 @@ def _wait_for(env: dict, want_nodes: set[str], want_topics: set[str]) -> None:
             return
         assert time.monotonic() < deadline, f"nodes {sorted(nodes)}, topics {sorted(topics)}"
         time.sleep(0.5)
+
+
+def test_ros1_quadarm_structured_messages_flow_under_roscore(catkin_ws: Path) -> None:
+    """Seed 001's quad-arm loop: generated messages with fixed arrays, a nested data type and an
+    enumeration flow between the arms and their controllers, and the parameters of a data type, an
+    enumeration and an array reach the nodes (the arms move to the controllers' desired angles)."""
+    with _roscore_running(catkin_ws, catkin_ws / "src/quadarm/launch/quadarm.launch") as env:
+        _wait_for(env, {f"/{kind}{k}" for kind in ("arm", "ctrl") for k in range(1, 5)},
+                  {f"/{kind}{k}" for kind in ("state", "torques") for k in range(1, 5)})
+        types = {t: subprocess.run(["rostopic", "type", t], env=env, capture_output=True, text=True,
+                                   timeout=20).stdout.strip() for t in ("/state1", "/torques4")}
+        assert types == {"/state1": "quadarm/JointState", "/torques4": "quadarm/JointTorques"}
+        torques = subprocess.run(["rostopic", "echo", "-n", "1", "/torques4"], env=env, capture_output=True,
+                                 text=True, timeout=30).stdout
+        assert re.search(r"torque: \[[^\]]*\]\ngains: \n  stiffness: 300\.0\n  damping: 20\.0\n  max_torque: 80\.0",
+                         torques), torques
+        deadline = time.monotonic() + 30
+        while True:
+            state = subprocess.run(["rostopic", "echo", "-n", "1", "/state1"], env=env, capture_output=True,
+                                   text=True, timeout=30).stdout
+            assert re.search(r"mode: \n  value: 1\n", state), state  # IMPEDANCE, the arm's mode parameter
+            position = [float(v) for v in re.search(r"position: \[([^\]]*)\]", state).group(1).split(",")]
+            assert len(position) == 7
+            # desired = {0.0, 0.5, 0.0, -1.0, 0.0, 0.5, 0.0}: the controller's array parameter
+            if abs(position[1] - 0.5) < 0.05 and abs(position[3] + 1.0) < 0.05:
+                break
+            assert time.monotonic() < deadline, state
+            time.sleep(0.5)
 
 
 def test_ros1_pid_runs_under_roscore(catkin_ws: Path) -> None:

@@ -20,8 +20,9 @@
   N2  data ports: out -> publisher, in -> subscription whose callback calls
       set<Datum>; the topic in the code is the port name, remapped per
       instance in the launch files to the connection's topic. Message type
-      from the type map; a data type of primitives that no entry maps gets a
-      generated msg/<Type>.msg.
+      from the type map; a data type or an enumeration no entry maps: its
+      generated msg/<Type>.msg (types.xsl); an array of numbers: the
+      std_msgs multi-array message.
   N3  services: the protected operations of the realizing class (base: of
       the component), except the lifecycle names, where a std_srvs service
       fits: no argument and no result -> std_srvs/Empty; no argument and a
@@ -30,7 +31,10 @@
   N4  parameters: the attributes R4 of the Orocos target selects
       (Configurable, else public/protected non-static non-read-only ones not
       named sample/priority/scheduler/cpuAffinity), with declared type and
-      the model's default; plus update_period (the instance's period).
+      the model's default (an enumeration: a literal's name; an array: a
+      list; a data type: one parameter per attribute at any depth, named
+      by its path gains.stiffness); plus update_period (the instance's
+      period).
   N5  period -> timer (update(), then publish the outputs); period 0 ->
       data-driven (each received message runs update() and publishes).
   N6  connection -> topic: the policy's topic tag, else the connection name;
@@ -53,6 +57,7 @@
     ROS007  a component with an instance has no realizing class (the ROS
             targets do not generate a user base class yet)
     ROS008  nothing to generate: the model has no component instance
+    ROS010  a data type that contains itself (types.xsl)
     ROS009  an operation call ROS cannot make (an operation of a provided
             or required interface that fits no std_srvs service, two ports
             of one interface and role, two required operations of one name)
@@ -69,6 +74,8 @@
     ROS106  a required operation the realizing class does not declare
     ROS107  an attribute the convention would make a parameter that has a
             type the ROS type map cannot carry (it is no parameter)
+    ROS108  a bounded array in a ROS 1 message (types.xsl)
+    ROS109  a data type no port carries that cannot be declared (types.xsl)
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -89,6 +96,7 @@
   <xsl:include href="../../common/naming.xsl"/>
   <xsl:include href="../../common/profile.xsl"/>
   <xsl:include href="../common/psm-kit.xsl"/>
+  <xsl:include href="types.xsl"/>
 
   <xsl:param name="ros-version" as="xs:string" select="'1'">
     <!-- '1' (catkin / roscpp) or '2' (ament / rclcpp) -->
@@ -164,11 +172,7 @@
                deploy-name="{f:snake-case(@name)}" source="{@source}">
       <xsl:variable name="children" as="element()*">
         <xsl:sequence select="$binding/pim:library ! fp:psm-library(., $package)"/>
-        <xsl:for-each-group select="$nodes//r:message[@generated eq 'true']" group-by="@msg">
-          <r:message-file name="{current-grouping-key()}" xmi-id="{@type}">
-            <xsl:sequence select="r:field"/>
-          </r:message-file>
-        </xsl:for-each-group>
+        <xsl:sequence select="fp:ros-types($components, $nodes/r:node/r:port, root(.))"/>
         <xsl:sequence select="$nodes/r:node"/>
         <xsl:sequence select="$hosts"/>
         <xsl:sequence select="$binding/pim:connection ! fp:topic(.)"/>
@@ -249,17 +253,6 @@
   </xsl:function>
 
   <!-- ============================================================ types -->
-  <xsl:function name="fp:type" as="element(ty:type)?">
-    <xsl:param name="typed" as="element()"/>
-    <xsl:variable name="name" as="xs:string" select="string($typed/@type-name)"/>
-    <xsl:variable name="primitive" as="xs:string" select="string($typed/@primitive)"/>
-    <xsl:sequence select="if (fp:is-array($typed)) then ()
-        else (if ($name ne '' and exists($fp:user-types)) then key('fp:type-by-name', $name, $fp:user-types) else (),
-              if ($primitive ne '' and exists($fp:user-types)) then key('fp:type-by-primitive', $primitive, $fp:user-types) else (),
-              if ($name ne '') then key('fp:type-by-name', $name, $fp:builtin-types) else (),
-              if ($primitive ne '') then key('fp:type-by-primitive', $primitive, $fp:builtin-types) else ())[1]"/>
-  </xsl:function>
-
   <xsl:function name="fp:required-type" as="element(ty:type)">
     <xsl:param name="typed" as="element()"/>
     <xsl:param name="id" as="xs:string?"/>
@@ -269,46 +262,36 @@
         else f:fail('ROS001', $id, $what || ' has type ''' || fp:type-label($typed)
                      || ''', which the ROS type map does not map (supported: '
                      || string-join($fp:builtin-types//ty:type[@cpp ne 'void']/@primitive, ', ')
-                     || ', data types of those, and the entries of parameter type-map)')"/>
+                     || ', the model''s data types and enumerations with a literal, arrays of these,'
+                     || ' and the entries of parameter type-map)')"/>
   </xsl:function>
 
-  <!-- the message a data port carries: a mapped type, or a generated .msg
-       for a data type whose attributes are all mapped primitives -->
+  <!-- the message a data port carries: a mapped type; a generated message
+       for a data type or an enumeration (types.xsl); the standard multi-array
+       message of an array of numbers -->
   <xsl:function name="fp:message" as="element(r:message)">
     <xsl:param name="data-port" as="element(pim:data-port)"/>
-    <xsl:variable name="type" as="element(ty:type)?" select="fp:type($data-port)"/>
-    <xsl:variable name="datatype" as="element()?"
-        select="if ($data-port/@type) then key('fp:id', $data-port/@type, root($data-port)) else ()"/>
+    <xsl:variable name="what" as="xs:string" select="'port ''' || $data-port/@port-name || ''' (datum '''
+        || $data-port/@datum-name || ''' of interface ''' || $data-port/@interface-name || ''')'"/>
+    <xsl:variable name="type" as="element(ty:type)" select="fp:required-type($data-port, $data-port/@port, $what)"/>
     <xsl:choose>
-      <xsl:when test="exists($type) and $type/@cpp ne 'void'">
-        <r:message msg="{$type/@msg}" field="{$type/@field}" cpp-type="{$type/@cpp}" sample="{$type/@sample}" generated="false"/>
+      <xsl:when test="$type/@kind = ('struct', 'enum')">
+        <r:message msg="{$type/@msg}" field="" cpp-type="{$type/@cpp}" sample="{$type/@sample}" generated="true"
+                   type="{$type/@type-ref}"/>
       </xsl:when>
-      <xsl:when test="exists($datatype) and empty($data-port/@primitive) and exists($datatype/pim:attribute)
-                      and (every $a in $datatype/pim:attribute satisfies exists(fp:type($a)[@msg-field ne '']))
-                      and not(fp:is-array($data-port))">
-        <xsl:sequence select="fp:generated-message($datatype)"/>
+      <xsl:when test="$type/@kind eq 'sequence' and $type/@msg ne ''">
+        <r:message msg="{$type/@msg}" field="data" cpp-type="{$type/@cpp}" sample="{$type/@sample}" generated="false"
+                   sequence="true"/>
+      </xsl:when>
+      <xsl:when test="$type/@kind eq 'sequence'">
+        <xsl:sequence select="f:fail('ROS001', $data-port/@port, $what || ' carries ''' || fp:type-label($data-port)
+            || ''': no standard message carries an array of that type (std_msgs has multi-array messages of numbers);'
+            || ' make the array an attribute of a data type, whose generated message carries it')"/>
       </xsl:when>
       <xsl:otherwise>
-        <xsl:variable name="never" as="element(ty:type)" select="fp:required-type($data-port, $data-port/@port,
-            'port ''' || $data-port/@port-name || ''' (datum ''' || $data-port/@datum-name
-            || ''' of interface ''' || $data-port/@interface-name || ''')')"/>
-        <r:message msg="{$never/@msg}" field="" cpp-type="" sample="" generated="false"/>
+        <r:message msg="{$type/@msg}" field="{$type/@field}" cpp-type="{$type/@cpp}" sample="{$type/@sample}" generated="false"/>
       </xsl:otherwise>
     </xsl:choose>
-  </xsl:function>
-
-  <!-- a generated msg/<Type>.msg for a data type of mapped primitives: the
-       user's C++ type of the same name, in the global namespace (qualified:
-       inside the package's namespace the bare name is the generated message) -->
-  <xsl:function name="fp:generated-message" as="element(r:message)">
-    <xsl:param name="datatype" as="element()"/>
-    <xsl:variable name="cpp-type" as="xs:string" select="'::' || f:cpp-identifier($datatype/@name)"/>
-    <r:message msg="{f:upper-camel($datatype/@name)}" field="" cpp-type="{$cpp-type}" sample="{$cpp-type || '()'}"
-               generated="true" type="{$datatype/@id}">
-      <xsl:for-each select="$datatype/pim:attribute">
-        <r:field name="{f:snake-case(@name)}" member="{f:cpp-identifier(@name)}" msg-field="{fp:type(.)/@msg-field}"/>
-      </xsl:for-each>
-    </r:message>
   </xsl:function>
 
   <!-- ============================================================= node -->
@@ -338,9 +321,10 @@
       <xsl:variable name="configurable" as="element(pim:attribute)*" select="fp:configurable-attributes($bc)"/>
       <xsl:variable name="convention" as="element(pim:attribute)*"
           select="if (exists($configurable)) then () else fp:convention-attributes($bc)"/>
-      <xsl:variable name="typed" as="element(pim:attribute)*" select="$convention[exists(fp:type(.)[@cpp ne 'void'])]"/>
+      <xsl:variable name="typed" as="element(pim:attribute)*"
+          select="$convention[fp:param-able(., fp:type(.))]"/>
       <xsl:sequence select="fp:warn-skipped-attributes($convention except $typed, 'ROS107', 'ROS parameter')"/>
-      <xsl:sequence select="($configurable, $typed) ! fp:parameter(.)"/>
+      <xsl:sequence select="($configurable, $typed) ! fp:parameters(., f:cpp-identifier(@name))"/>
     </r:node>
   </xsl:function>
 
@@ -461,26 +445,109 @@
       else ($parsed, $parsed)"/>
   </xsl:function>
 
-  <xsl:function name="fp:parameter" as="element(r:parameter)">
+  <!-- (C++ literal, YAML literal) of a parameter's value $value (() = the
+       type's zero) of $typed: a primitive, an enumeration literal (the
+       parameter is its name), an array of primitives (a list) -->
+  <xsl:function name="fp:param-values" as="xs:string+">
+    <xsl:param name="value" as="xs:string?"/>
+    <xsl:param name="typed" as="element()"/>
+    <xsl:param name="type" as="element(ty:type)"/>
+    <xsl:param name="id" as="xs:string"/>
+    <xsl:choose>
+      <xsl:when test="$type/@kind eq 'enum'">
+        <xsl:variable name="literal" as="xs:string"
+            select="if (exists($value)) then fp:enum-literal($value, key('fp:id', $type/@type-ref, root($typed)), $id, 'ROS002')/@name
+                    else key('fp:id', $type/@type-ref, root($typed))/pim:literal[1]/@name"/>
+        <xsl:sequence select="fp:cpp-string($literal), fp:yaml-quoted($literal)"/>
+      </xsl:when>
+      <xsl:when test="$type/@kind eq 'sequence'">
+        <xsl:variable name="items" as="xs:string*"
+            select="if (exists($value)) then fp:default-items($value, $typed, $id, 'ROS002')
+                    else if ($type/@array eq 'fixed') then (1 to xs:integer($type/@size)) ! '' else ()"/>
+        <xsl:variable name="pairs" as="xs:string*" select="$items ! fp:param-values(.[. ne ''], $typed, $type/ty:type, $id)"/>
+        <xsl:sequence select="'{' || string-join($pairs[position() mod 2 eq 1], ', ') || '}',
+                              '[' || string-join($pairs[position() mod 2 eq 0], ', ') || ']'"/>
+      </xsl:when>
+      <xsl:when test="exists($value)">
+        <xsl:sequence select="fp:values($value, $type, $id)"/>
+      </xsl:when>
+      <xsl:otherwise>
+        <xsl:sequence select="if ($type/@param1 eq 'std::string') then ('&quot;&quot;', '&quot;&quot;')
+            else if ($type/@param1 eq 'bool') then ('false', 'false')
+            else if ($type/@param1 eq 'double') then (if ($type/@primitive eq 'float32') then '0.0f' else '0.0', '0.0')
+            else ('0', '0')"/>
+      </xsl:otherwise>
+    </xsl:choose>
+  </xsl:function>
+
+  <xsl:function name="fp:yaml-quoted" as="xs:string">
+    <xsl:param name="text" as="xs:string"/>
+    <xsl:sequence select="'&quot;' || $text || '&quot;'"/>
+  </xsl:function>
+
+  <!-- (ROS 1 type, ROS 2 type) a parameter of $type is read as, or () when
+       none: a primitive's; an enumeration's literal name (std::string); a
+       std::vector of a primitive's -->
+  <xsl:function name="fp:param-type" as="xs:string*">
+    <xsl:param name="type" as="element(ty:type)?"/>
+    <xsl:sequence select="
+      if ($type/@param1 = ('int', 'double', 'bool', 'std::string')) then ($type/@param1, $type/@param2)
+      else if ($type/@kind eq 'enum') then ('std::string', 'std::string')
+      else if ($type/@kind eq 'sequence' and $type/ty:type/@param1 = ('int', 'double', 'bool', 'std::string'))
+      then $type/ty:type ! ('std::vector&lt;' || @param1 || '&gt;', 'std::vector&lt;' || @param2 || '&gt;')
+      else ()"/>
+  </xsl:function>
+
+  <!-- whether an attribute of type $type can be a parameter: a type
+       fp:param-type reads, or a data type all of whose attributes can -->
+  <xsl:function name="fp:param-able" as="xs:boolean">
+    <xsl:param name="typed" as="element()"/>
+    <xsl:param name="type" as="element(ty:type)?"/>
+    <!-- if, not and / or: a data type that contains itself must fail
+         (ROS010) before the recursion, whatever order an engine picks -->
+    <xsl:sequence select="
+        if (exists(fp:param-type($type))) then true()
+        else if (not($type/@kind eq 'struct')) then false()
+        else if (fp:type-depth(key('fp:id', $type/@type-ref, root($typed)), (), 'ROS010') lt 0) then false()
+        else every $a in fp:attributes(key('fp:id', $type/@type-ref, root($typed))) satisfies fp:param-able($a, fp:type($a))"/>
+  </xsl:function>
+
+  <!-- the parameters of an attribute: one, or one per attribute of its data
+       type at any depth (name and member gains.stiffness); ROS001 when one
+       cannot be a parameter -->
+  <xsl:function name="fp:parameters" as="element(r:parameter)*">
     <xsl:param name="attribute" as="element(pim:attribute)"/>
-    <xsl:variable name="type" as="element(ty:type)"
-        select="fp:required-type($attribute, $attribute/@id, 'parameter ''' || $attribute/@name || '''')"/>
-    <xsl:if test="not($type/@param1 = ('int', 'double', 'bool', 'std::string'))">
-      <xsl:sequence select="f:fail('ROS001', $attribute/@id, 'parameter ''' || $attribute/@name || ''' has type '''
-          || ($attribute/@type-name, $attribute/@primitive)[1] || ''', which is not a ROS parameter type')"/>
-    </xsl:if>
-    <xsl:variable name="values" as="xs:string+"
-        select="if ($attribute/@default) then fp:values($attribute/@default, $type, $attribute/@id)
-                else if ($type/@param1 eq 'std::string') then ('&quot;&quot;', '&quot;&quot;')
-                else if ($type/@param1 eq 'bool') then ('false', 'false')
-                else if ($type/@param1 eq 'double') then (if ($type/@primitive eq 'float32') then '0.0f' else '0.0', '0.0')
-                else ('0', '0')"/>
-    <r:parameter xmi-id="{$attribute/@id}" name="{f:cpp-identifier($attribute/@name)}"
-                 member="{f:cpp-identifier($attribute/@name)}"
-                 cpp-type="{$type/@cpp}" param1="{$type/@param1}" param2="{$type/@param2}"
-                 cpp-default="{$values[1]}" yaml-default="{$values[2]}">
-      <xsl:sequence select="fp:psm-doc($attribute)"/>
-    </r:parameter>
+    <xsl:param name="name" as="xs:string"/>
+    <xsl:variable name="what" as="xs:string" select="'parameter ''' || $name || ''''"/>
+    <xsl:variable name="type" as="element(ty:type)" select="fp:required-type($attribute, $attribute/@id, $what)"/>
+    <xsl:variable name="param-type" as="xs:string*" select="fp:param-type($type)"/>
+    <xsl:choose>
+      <xsl:when test="$type/@kind eq 'struct' and fp:param-able($attribute, $type)">
+        <xsl:if test="$attribute/@default[normalize-space(.)]">
+          <xsl:sequence select="f:fail('ROS002', $attribute/@id, 'default ''' || $attribute/@default || ''' of data type '''
+              || $attribute/@type-name || ''': the data type''s attributes give its value')"/>
+        </xsl:if>
+        <xsl:sequence select="fp:attributes(key('fp:id', $type/@type-ref, root($attribute)))
+                              ! fp:parameters(., $name || '.' || f:cpp-identifier(@name))"/>
+      </xsl:when>
+      <xsl:when test="empty($param-type)">
+        <xsl:sequence select="f:fail('ROS001', $attribute/@id, $what || ' has type ''' || fp:type-label($attribute)
+            || ''', which is not a ROS parameter type (numbers, Boolean, strings, enumerations, arrays of numbers,'
+            || ' Booleans or strings, and data types of these)')"/>
+      </xsl:when>
+      <xsl:otherwise>
+        <xsl:variable name="values" as="xs:string+" select="fp:param-values($attribute/@default[normalize-space(.)], $attribute, $type, $attribute/@id)"/>
+        <r:parameter xmi-id="{$attribute/@id}" name="{$name}" member="{$name}" kind="{($type/@kind, 'primitive')[1]}"
+                     cpp-type="{$type/@cpp}" param1="{$param-type[1]}" param2="{$param-type[2]}"
+                     cpp-default="{$values[1]}" yaml-default="{$values[2]}">
+          <xsl:if test="$type/@array eq 'fixed'"><xsl:attribute name="size" select="$type/@size"/></xsl:if>
+          <xsl:sequence select="fp:psm-doc($attribute)"/>
+          <xsl:for-each select="$type[@kind eq 'enum']/key('fp:id', @type-ref, root($attribute))/pim:literal">
+            <r:choice value="{@name}" cpp="{$type/@cpp}::{f:cpp-identifier(@name)}"/>
+          </xsl:for-each>
+        </r:parameter>
+      </xsl:otherwise>
+    </xsl:choose>
   </xsl:function>
 
   <!-- ========================================================= instance -->
@@ -534,7 +601,9 @@
       <xsl:for-each select="$node/r:parameter">
         <xsl:variable name="set" as="element(pim:property-value)?" select="$instance/pim:property-value[@attribute eq current()/@xmi-id]"/>
         <r:parameter-value name="{@name}"
-            yaml="{if ($set) then fp:values($set/@value, fp:required-type(key('fp:id', @xmi-id, root($instance)), @xmi-id, 'parameter ''' || @name || ''''), $set/@holder)[2]
+            yaml="{if ($set) then fp:param-values($set/@value, key('fp:id', @xmi-id, root($instance)),
+                                      fp:required-type(key('fp:id', @xmi-id, root($instance)), @xmi-id, 'parameter ''' || @name || ''''),
+                                      $set/@holder)[2]
                    else @yaml-default}"/>
       </xsl:for-each>
     </r:instance>

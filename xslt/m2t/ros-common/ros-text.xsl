@@ -24,6 +24,13 @@
                            finding, linking and building first the atomic-code
                            library (cache variable as in the Orocos target)
     fp:yaml-string($s)     a YAML double-quoted scalar
+    fp:yaml-mapping($values, $prefix)  parameter values as (nested) YAML lines
+    fp:parameter-assign($p, $type, $error)  a parameter's value into its member
+    fp:conversions-include($node)  the include of the message conversions, if used
+    fp:ros-type-files($package)  include/<Type>.hpp, msg/<Type>.msg and
+                           include/<pkg>/msg_conversions.hpp of the model's types
+    fp:msg-file / fp:ros-conversions  their texts
+    fp:ros1-type / fp:ros2-type  (header, C++ type) of a message or service
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -54,6 +61,21 @@
     <xsl:param name="namespace-attribute" as="xs:string"/>
     <xsl:sequence select="concat('name=&quot;', ($instance/@node-name, $instance/@name)[1], '&quot;',
         $instance/@namespace ! concat(' ', $namespace-attribute, '=&quot;', ., '&quot;'))"/>
+  </xsl:function>
+
+  <!-- parameter values as YAML mapping lines: a path gains.stiffness nests
+       (gains: then stiffness: one level in), which both rosparam (ROS 1:
+       ~gains/stiffness) and ROS 2 (gains.stiffness) read so. An empty list
+       is left out (ROS 2 cannot type it): the node's default applies. -->
+  <xsl:function name="fp:yaml-mapping" as="xs:string*">
+    <xsl:param name="values" as="element(r:parameter-value)*"/>
+    <xsl:param name="prefix" as="xs:string"/>
+    <xsl:for-each-group select="$values[@yaml ne '[]']" group-by="tokenize(substring(@name, string-length($prefix) + 1), '\.')[1]">
+      <xsl:variable name="key" as="xs:string" select="current-grouping-key()"/>
+      <xsl:variable name="leaf" as="element(r:parameter-value)?" select="current-group()[@name eq $prefix || $key][1]"/>
+      <xsl:sequence select="if ($leaf) then $key || ': ' || $leaf/@yaml
+          else ($key || ':', fp:indent(2, fp:yaml-mapping(current-group(), $prefix || $key || '.')))"/>
+    </xsl:for-each-group>
   </xsl:function>
 
   <xsl:function name="fp:yaml-string" as="xs:string">
@@ -124,21 +146,25 @@
         else (concat('  ', $call, ';'), concat('  response', $acc, 'success = true;'))"/>
   </xsl:function>
 
-  <!-- the statements converting message expression $m to the datum, or the datum to message $var -->
+  <!-- the expression converting message expression $m to the datum: a
+       generated message through its conversion (fp:ros-conversions), a
+       multi-array's data copied, else the datum field or the message -->
   <xsl:function name="fp:from-msg" as="xs:string">
     <xsl:param name="msg" as="element(r:message)"/>
     <xsl:param name="model" as="xs:string"/>
-    <xsl:sequence select="if ($msg/@generated eq 'true')
-        then concat($msg/@cpp-type, '{', string-join($msg/r:field ! (concat($model, '.', @name)), ', '), '}')
+    <xsl:sequence select="if ($msg/@generated eq 'true') then 'from_msg_value&lt;' || $msg/@cpp-type || '&gt;(' || replace($model, '^\((.*)\)$', '$1') || ')'
+        else if ($msg/@sequence eq 'true') then $msg/@cpp-type || '(' || $model || '.data.begin(), ' || $model || '.data.end())'
         else if ($msg/@field ne '') then concat($model, '.', $msg/@field) else $model"/>
   </xsl:function>
 
+  <!-- the statements setting message $var to the datum $value -->
   <xsl:function name="fp:to-msg" as="xs:string*">
     <xsl:param name="msg" as="element(r:message)"/>
     <xsl:param name="var" as="xs:string"/>
     <xsl:param name="value" as="xs:string"/>
-    <xsl:sequence select="if ($msg/@generated eq 'true')
-        then (concat('const ', $msg/@cpp-type, ' value = ', $value, ';'), $msg/r:field ! (concat($var, '.', @name, ' = value.', @member, ';')))
+    <xsl:sequence select="if ($msg/@generated eq 'true') then 'to_msg(' || $value || ', ' || $var || ');'
+        else if ($msg/@sequence eq 'true')
+        then ('const ' || $msg/@cpp-type || ' value = ' || $value || ';', $var || '.data.assign(value.begin(), value.end());')
         else if ($msg/@field ne '') then concat($var, '.', $msg/@field, ' = ', $value, ';')
         else concat($var, ' = ', $value, ';')"/>
   </xsl:function>
@@ -235,6 +261,8 @@
         concat('    SOURCE_DIR &quot;', $value, '&quot;'),
         concat('    BINARY_DIR &quot;', $bin, '&quot;'),
         '    CMAKE_ARGS -DCMAKE_BUILD_TYPE=${CMAKE_BUILD_TYPE} -DCMAKE_POSITION_INDEPENDENT_CODE=ON',
+        (: the model's data type headers (include/TYPE.hpp), which the atomic code includes by name :)
+        if ($lib/../r:types) then '    &quot;-DCMAKE_CXX_FLAGS=${CMAKE_CXX_FLAGS} -I${CMAKE_CURRENT_SOURCE_DIR}/include&quot;' else (),
         '    INSTALL_COMMAND &quot;&quot;',
         concat('    BUILD_BYPRODUCTS &quot;${', $var, '_LIBRARY}&quot;)'),
         concat('  set(', $var, '_DEPENDS ${PROJECT_NAME}_', $lib/@build-dir, ')'),
@@ -282,13 +310,157 @@
         'endif()')"/>
   </xsl:function>
 
-  <!-- a generated .msg file: one field per attribute of the data type -->
+  <!-- the files of the model's data types: include/<Type>.hpp each, and
+       for those a port carries msg/<Type>.msg and the conversions -->
+  <xsl:function name="fp:ros-type-files" as="element(fs:file)*">
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:for-each select="$package/r:types/(r:struct | r:enum)">
+      <xsl:sequence select="fp:file('include/' || @header, 'generated', 'm2t/common/data-types.xsl',
+                                    fp:type-header(., ../(r:struct | r:enum), $package/@model-name))"/>
+      <xsl:if test="@message">
+        <xsl:sequence select="fp:file('msg/' || @message || '.msg', 'generated', $fp:build-xsl, fp:msg-file(., $fp:build-xsl))"/>
+      </xsl:if>
+    </xsl:for-each>
+    <xsl:if test="$package/r:types/*[@message]">
+      <xsl:sequence select="fp:file('include/' || $package/@name || '/msg_conversions.hpp', 'generated', $fp:cpp-xsl,
+                                    fp:ros-conversions($package, $fp:cpp-xsl))"/>
+    </xsl:if>
+  </xsl:function>
+
+  <!-- a generated .msg file: a data type's fields (one per attribute), or
+       an enumeration's constants (one per literal) and its field value -->
   <xsl:function name="fp:msg-file" as="xs:string">
-    <xsl:param name="model" as="element(r:message-file)"/>
+    <xsl:param name="type" as="element()"/>
     <xsl:param name="stylesheet" as="xs:string"/>
+    <xsl:variable name="enum" as="xs:boolean" select="exists($type/self::r:enum)"/>
     <xsl:sequence select="fp:lines((
-        fp:banner('# ', $stylesheet, concat('data type ''', $model/@name, ''' of model ''', $model/../@model-name, ''''), false()),
-        $model/r:field ! (concat(@msg-field, ' ', @name))))"/>
+        fp:banner('# ', $stylesheet, (if ($enum) then 'enumeration ''' else 'data type ''') || $type/@name
+                  || ''' of model ''' || $type/../../@model-name || '''', false()),
+        $type/r:field ! (@msg-field || ' ' || @name),
+        $type/r:literal ! ('int32 ' || @constant || '=' || @value),
+        if ($enum) then 'int32 value' else ()))"/>
+  </xsl:function>
+
+  <!-- the statements setting the realizing class's member from parameter
+       $parameter, read into "value" as $param-type: a cast, an enumeration's
+       literal by its name, an array's values (a fixed array: exactly its
+       size); a value that does not fit is logged with $error ("ROS_ERROR(")
+       and the member keeps its value -->
+  <xsl:function name="fp:parameter-assign" as="xs:string+">
+    <xsl:param name="parameter" as="element(r:parameter)"/>
+    <xsl:param name="param-type" as="xs:string"/>
+    <xsl:param name="error" as="xs:string"/>
+    <xsl:variable name="member" as="xs:string" select="$parameter/../r:realizing-class/@cpp-name || '::' || $parameter/@member"/>
+    <xsl:variable name="name" as="xs:string" select="fp:cpp-string($parameter/@name)"/>
+    <xsl:sequence select="
+      if ($parameter/@kind eq 'enum') then (
+        $parameter/r:choice ! ((if (position() eq 1) then 'if' else '} else if') || ' (value == ' || fp:cpp-string(@value) || ') {',
+                               '  ' || $member || ' = ' || @cpp || ';'),
+        '} else {',
+        '  ' || $error || '&quot;parameter %s: \&quot;%s\&quot; is none of ' || string-join($parameter/r:choice/@value, ', ')
+             || '&quot;, ' || $name || ', value.c_str());',
+        '}')
+      else if ($parameter/@kind eq 'sequence') then (
+        let $assign := if ($param-type eq $parameter/@cpp-type) then $member || ' = value;'
+                       else $member || '.assign(value.begin(), value.end());'
+        return if (empty($parameter/@size)) then $assign
+        else ('if (value.size() == ' || $parameter/@size || ') {', '  ' || $assign, '} else {',
+              '  ' || $error || '&quot;parameter %s: %zu values, ' || $parameter/@size || ' expected&quot;, ' || $name || ', value.size());',
+              '}'))
+      else $member || ' = ' || (if ($param-type eq $parameter/@cpp-type) then 'value' else 'static_cast&lt;' || $parameter/@cpp-type || '&gt;(value)') || ';'"/>
+  </xsl:function>
+
+  <!-- the include of the conversions a node with a port of a generated
+       message uses, or () -->
+  <xsl:function name="fp:conversions-include" as="xs:string?">
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:sequence select="if ($node/r:port/r:message[@generated eq 'true'])
+                          then '#include &lt;' || $node/@namespace || '/msg_conversions.hpp&gt;' else ()"/>
+  </xsl:function>
+
+  <!-- (header, C++ type) of a message or service type "pkg/Name" -->
+  <xsl:function name="fp:ros1-type" as="xs:string+">
+    <xsl:param name="type" as="xs:string"/>
+    <xsl:param name="pkg" as="xs:string"/>
+    <xsl:variable name="item" as="xs:string+" select="fp:msg-parts($type, $pkg)"/>
+    <xsl:sequence select="concat($item[1], '/', $item[2], '.h'), concat($item[1], '::', $item[2])"/>
+  </xsl:function>
+
+  <!-- (header, C++ type) of "pkg/Name"; $kind msg or srv -->
+  <xsl:function name="fp:ros2-type" as="xs:string+">
+    <xsl:param name="type" as="xs:string"/>
+    <xsl:param name="pkg" as="xs:string"/>
+    <xsl:param name="kind" as="xs:string"/>
+    <xsl:variable name="item" as="xs:string+" select="fp:msg-parts($type, $pkg)"/>
+    <xsl:sequence select="concat($item[1], '/', $kind, '/', fp:ros-snake($item[2]), '.hpp'), concat($item[1], '::', $kind, '::', $item[2])"/>
+  </xsl:function>
+
+  <!-- (header, C++ type) of the generated message of $type -->
+  <xsl:function name="fp:generated-msg" as="xs:string+">
+    <xsl:param name="type" as="element()"/>
+    <xsl:sequence select="if ($type/../../@ros-version eq '1') then fp:ros1-type($type/@message, $type/../../@name)
+                          else fp:ros2-type($type/@message, $type/../../@name, 'msg')"/>
+  </xsl:function>
+
+  <!-- include/<pkg>/msg_conversions.hpp: from_msg / to_msg between each
+       generated message and its C++ type, field by field (arrays item by
+       item: a fixed array has its size in both), and from_msg_value -->
+  <xsl:function name="fp:ros-conversions" as="xs:string">
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:param name="stylesheet" as="xs:string"/>
+    <xsl:variable name="types" as="element()*" select="$package/r:types/*[@message]"/>
+    <xsl:variable name="guard" as="xs:string" select="fp:guard($package/@name, 'msg_conversions')"/>
+    <xsl:sequence select="fp:lines((
+        fp:banner('// ', $stylesheet, 'model ''' || $package/@model-name || '''', false()),
+        '#ifndef ' || $guard, '#define ' || $guard, '',
+        '#include &lt;cstddef&gt;', '#include &lt;cstdint&gt;',
+        $types ! ('#include &lt;' || @header || '&gt;'),
+        $types ! ('#include &lt;' || fp:generated-msg(.)[1] || '&gt;'),
+        '', 'namespace ' || $package/@name || ' {', '',
+        '// The model''s data types and enumerations (include/&lt;Type&gt;.hpp) to and from',
+        '// their generated messages.',
+        $types ! fp:conversion-functions(.),
+        '',
+        '/// The value of type Value that message m carries.',
+        'template &lt;typename Value, typename Message&gt;',
+        'Value from_msg_value(const Message&amp; m)',
+        '{', '  Value v;', '  from_msg(m, v);', '  return v;', '}', '',
+        '}  // namespace ' || $package/@name, '', '#endif  // ' || $guard))"/>
+  </xsl:function>
+
+  <xsl:function name="fp:conversion-functions" as="xs:string+">
+    <xsl:param name="type" as="element()"/>
+    <xsl:variable name="msg" as="xs:string" select="fp:generated-msg($type)[2]"/>
+    <xsl:variable name="empty" as="xs:string*" select="if ($type/self::r:struct[empty(r:field)]) then '  (void)m;' else ()"/>
+    <xsl:sequence select="'',
+        'inline void from_msg(const ' || $msg || '&amp; m, ' || $type/@cpp-name || '&amp; v)', '{',
+        if ($type/self::r:enum) then '  v = static_cast&lt;' || $type/@cpp-name || '&gt;(m.value);'
+        else ($empty, '  (void)v;'[exists($empty)], $type/r:field ! fp:field-conversion(., 'm', 'v', 'from_msg')),
+        '}', '',
+        'inline void to_msg(const ' || $type/@cpp-name || '&amp; v, ' || $msg || '&amp; m)', '{',
+        if ($type/self::r:enum) then '  m.value = static_cast&lt;std::int32_t&gt;(v);'
+        else ($empty, '  (void)v;'[exists($empty)], $type/r:field ! fp:field-conversion(., 'v', 'm', 'to_msg')),
+        '}'"/>
+  </xsl:function>
+
+  <!-- the statements copying field $field from $from to $to ($function:
+       from_msg or to_msg, which converts a data type or an enumeration) -->
+  <xsl:function name="fp:field-conversion" as="xs:string+">
+    <xsl:param name="field" as="element(r:field)"/>
+    <xsl:param name="from" as="xs:string"/>
+    <xsl:param name="to" as="xs:string"/>
+    <xsl:param name="function" as="xs:string"/>
+    <xsl:variable name="source" as="xs:string" select="$from || '.' || (if ($from eq 'm') then $field/@name else $field/@member)"/>
+    <xsl:variable name="target" as="xs:string" select="$to || '.' || (if ($to eq 'm') then $field/@name else $field/@member)"/>
+    <xsl:variable name="copy" as="xs:string" select="
+        if ($field/@element-kind eq 'primitive') then '{1} = {0};' else $function || '({0}, {1});'"/>
+    <xsl:sequence select="
+      if (empty($field/@array)) then '  ' || replace(replace($copy, '\{0\}', $source), '\{1\}', $target)
+      else (
+        if ($field/@array eq 'fixed' and $to eq 'm') then () else '  ' || $target || '.resize(' || $source || '.size());',
+        '  for (std::size_t i = 0; i &lt; ' || $source || '.size() &amp;&amp; i &lt; ' || $target || '.size(); ++i) {',
+        '    ' || replace(replace($copy, '\{0\}', $source || '[i]'), '\{1\}', $target || '[i]'),
+        '  }')"/>
   </xsl:function>
 
 </xsl:stylesheet>

@@ -25,21 +25,13 @@
     xmlns:fp="urn:robomda:xslt:function:private"
     exclude-result-prefixes="#all">
 
-  <!-- (header, C++ type) of a message or service type "pkg/Name" -->
-  <xsl:function name="fp:ros1-type" as="xs:string+">
-    <xsl:param name="type" as="xs:string"/>
-    <xsl:param name="pkg" as="xs:string"/>
-    <xsl:variable name="item" as="xs:string+" select="fp:msg-parts($type, $pkg)"/>
-    <xsl:sequence select="concat($item[1], '/', $item[2], '.h'), concat($item[1], '::', $item[2])"/>
-  </xsl:function>
-
   <xsl:function name="fp:ros1-includes" as="xs:string*">
     <xsl:param name="node" as="element(r:node)"/>
     <xsl:variable name="pkg" as="xs:string" select="$node/@namespace"/>
     <xsl:sequence select="'#include &lt;ros/ros.h&gt;',
         distinct-values(($node/r:port/r:message/@msg, $node/r:service/@srv, $node/r:service-client/@srv) ! (concat('#include &lt;', fp:ros1-type(., $pkg)[1], '&gt;'))),
         '#include &lt;string&gt;',
-        concat('#include &lt;', $node/r:realizing-class/@header, '&gt;')"/>
+        concat('#include &lt;', $node/r:realizing-class/@header, '&gt;'), fp:conversions-include($node)"/>
   </xsl:function>
 
   <xsl:function name="fp:ros1-header" as="xs:string">
@@ -154,12 +146,10 @@
         for $parameter in $node/r:parameter return (
           '  {',
           concat('    ', $parameter/@param1, ' value;'),
-          concat('    private_nh_.param&lt;', $parameter/@param1, '&gt;(', fp:cpp-string($parameter/@name), ', value, ',
+          concat('    private_nh_.param&lt;', $parameter/@param1, '&gt;(', fp:cpp-string(translate($parameter/@name, '.', '/')), ', value, ',
                (if ($parameter/@param1 eq 'std::string') then concat('std::string(', $parameter/@cpp-default, ')')
                 else $parameter/@cpp-default), ');'),
-          concat('    ', $realizing-class, '::', $parameter/@member, ' = ',
-               (if ($parameter/@param1 eq $parameter/@cpp-type) then 'value'
-                else concat('static_cast&lt;', $parameter/@cpp-type, '&gt;(value)')), ';'),
+          fp:indent(4, fp:parameter-assign($parameter, $parameter/@param1, 'ROS_ERROR(')),
           '  }'),
         '  private_nh_.param&lt;double&gt;(&quot;update_period&quot;, period_, period_);',
         for $hook in $node/r:hook[@name = ('configure', 'start')][@call] return

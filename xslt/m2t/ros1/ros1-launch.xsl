@@ -64,6 +64,6 @@
     <xsl:param name="stylesheet" as="xs:string"/>
     <xsl:sequence select="fp:lines((
         fp:banner('# ', $stylesheet, concat('instance ''', $instance/@name, ''' of model ''', $instance/../@model-name, ''''), false()),
-        $instance/r:parameter-value ! (concat(@name, ': ', @yaml))))"/>
+        fp:yaml-mapping($instance/r:parameter-value, '')))"/>
   </xsl:function>
 </xsl:stylesheet>

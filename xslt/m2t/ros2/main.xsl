@@ -31,6 +31,7 @@
   <xsl:include href="../../common/indent.xsl"/>
   <xsl:include href="../common/text.xsl"/>
   <xsl:include href="../common/package-manifest.xsl"/>
+  <xsl:include href="../common/data-types.xsl"/>
   <xsl:include href="../../common/naming.xsl"/>
   <xsl:include href="../ros-common/ros-text.xsl"/>
   <xsl:include href="ros2-cpp.xsl"/>
@@ -53,9 +54,7 @@
         <xsl:sequence select="fp:file(concat('src/', @class, '.cpp'), 'generated', $fp:cpp-xsl, fp:ros2-source(.))"/>
         <xsl:sequence select="fp:file(concat('src/', @executable, '.cpp'), 'generated', $fp:cpp-xsl, fp:ros2-main(.))"/>
       </xsl:for-each>
-      <xsl:for-each select="r:message-file">
-        <xsl:sequence select="fp:file(concat('msg/', @name, '.msg'), 'generated', $fp:build-xsl, fp:msg-file(., $fp:build-xsl))"/>
-      </xsl:for-each>
+      <xsl:sequence select="fp:ros-type-files(.)"/>
       <xsl:sequence select="fp:file('CMakeLists.txt', 'generated', $fp:build-xsl, fp:ros2-cmakelists(.))"/>
       <xsl:sequence select="fp:file('package.xml', 'generated', $fp:build-xsl, fp:ros2-package-xml(.))"/>
       <xsl:sequence select="fp:file(concat('launch/', @deploy-name, '.launch.xml'), 'generated', $fp:launch-xsl, fp:ros2-top-launch(.))"/>

@@ -23,15 +23,6 @@
     xmlns:fp="urn:robomda:xslt:function:private"
     exclude-result-prefixes="#all">
 
-  <!-- (header, C++ type) of "pkg/Name"; $kind msg or srv -->
-  <xsl:function name="fp:ros2-type" as="xs:string+">
-    <xsl:param name="type" as="xs:string"/>
-    <xsl:param name="pkg" as="xs:string"/>
-    <xsl:param name="kind" as="xs:string"/>
-    <xsl:variable name="item" as="xs:string+" select="fp:msg-parts($type, $pkg)"/>
-    <xsl:sequence select="concat($item[1], '/', $kind, '/', fp:ros-snake($item[2]), '.hpp'), concat($item[1], '::', $kind, '::', $item[2])"/>
-  </xsl:function>
-
   <xsl:function name="fp:ros2-qos" as="xs:string">
     <xsl:param name="name" as="element(r:qos)"/>
     <xsl:sequence select="concat('rclcpp::QoS(rclcpp::KeepLast(', $name/@depth, '))',
@@ -51,7 +42,7 @@
                          ($node/r:service/@srv, $node/r:service-client/@srv) ! (concat('#include &lt;', fp:ros2-type(., $package, 'srv')[1], '&gt;')))),
         '#include &lt;memory&gt;',
         '#include &lt;string&gt;',
-        concat('#include &lt;', $node/r:realizing-class/@header, '&gt;'),
+        concat('#include &lt;', $node/r:realizing-class/@header, '&gt;'), fp:conversions-include($node),
         '',
         concat('namespace ', $package, ' {'),
         '',
@@ -142,11 +133,15 @@
     <xsl:variable name="realizing-class" as="xs:string" select="$node/r:realizing-class/@cpp-name"/>
     <xsl:sequence select="(
         '  // parameters (R4), declared with their type and the model default',
-        $node/r:parameter ! concat('  ', $realizing-class, '::', @member, ' = ',
-             (if (@param2 eq @cpp-type) then '' else concat('static_cast&lt;', @cpp-type, '&gt;(')),
-             'this->declare_parameter&lt;', @param2, '&gt;(', fp:cpp-string(@name), ', ',
-             (if (@param2 eq 'std::string') then concat('std::string(', @cpp-default, ')') else @cpp-default), ')',
-             (if (@param2 eq @cpp-type) then '' else ')'), ';'),
+        for $p in $node/r:parameter return
+        let $read := concat('this->declare_parameter&lt;', $p/@param2, '&gt;(', fp:cpp-string($p/@name), ', ',
+                            (if ($p/@param2 eq 'std::string') then concat('std::string(', $p/@cpp-default, ')') else $p/@cpp-default), ')')
+        return if ($p/@kind = ('enum', 'sequence'))
+          then ('  {', '    const ' || $p/@param2 || ' value = ' || $read || ';',
+                fp:indent(4, fp:parameter-assign($p, $p/@param2, 'RCLCPP_ERROR(this->get_logger(), ')), '  }')
+          else concat('  ', $realizing-class, '::', $p/@member, ' = ',
+             (if ($p/@param2 eq $p/@cpp-type) then '' else concat('static_cast&lt;', $p/@cpp-type, '&gt;(')),
+             $read, (if ($p/@param2 eq $p/@cpp-type) then '' else ')'), ';'),
         '  period_ = this->declare_parameter&lt;double&gt;(&quot;update_period&quot;, period_);',
         for $hook in $node/r:hook[@name = ('configure', 'start')][@call] return
           if (xs:boolean($hook/@returns-bool))

@@ -62,6 +62,6 @@
           (: a node in a namespace: its fully qualified name :)
           concat(if ($i/@namespace) then concat('/', $i/@namespace, '/', $i/@node-name) else $i/@name, ':'),
           '  ros__parameters:',
-          $i/r:parameter-value ! (concat('    ', @name, ': ', @yaml)))))"/>
+          fp:indent(4, fp:yaml-mapping($i/r:parameter-value, '')))))"/>
   </xsl:function>
 </xsl:stylesheet>
