@@ -454,10 +454,13 @@ def test_profile_matches_spec(profile):
         "AtomicCode": (["Class"], ["header", "cppName"]),
         "Library": (["Artifact"], ["path", "target", "includeDir"]),
         "StartAfter": (["Dependency"], []),
+        "Robot": (["Device"], ["dof", "urdf", "rootLink", "tipLink"]),
     }
     assert {k: (v["metas"], list(v["tags"])) for k, v in profile.items()} == expected
     assert profile["Activity"]["tags"]["scheduler"] == "OTHER"
     assert profile["ConnectionPolicy"]["tags"]["lockPolicy"] == "LOCK_FREE"
+    # an unset dof is 0 (EMF's Integer default), which means "not given"
+    assert profile["Robot"]["tags"]["dof"] == "0" and profile["Robot"]["tags"]["urdf"] is None
     # the UML side of the profile declares the same stereotypes as its Ecore definition
     doc = etree.parse(str(PROFILE))
     uml_st = sorted(e.get("name") for e in doc.iter("packagedElement")
