@@ -24,6 +24,9 @@
            own folder (files.xsl: models split over several files).
   Modules: xmi-common.xsl (normalisation, keys, references, types),
            files.xsl (models split over several files: IMP040, IMP041),
+           urdf.xsl (the kinematic chains of robot Devices, counted in
+           the URDF files their Robot stereotype names: IMP040,
+           IMP042-IMP048),
            check.xsl (dangling references), application.xsl, platform.xsl,
            stereotypes.xsl, dialect-*.xsl, ../common/profile.xsl (the
            robomda profile URI); data:
@@ -59,8 +62,22 @@
   For IMP010-IMP021 ID is the referencing element's xmi:id and the message
   names the element, its owner, the property and the missing id. An href to
   another file (a library type, an imported model) is never dangling.
+    IMP040  (also) a Robot's URDF file outside the model's folder and the
+            model path, or a URI of another scheme (urdf.xsl).
+    IMP042  a Robot's URDF file that is not there or cannot be read.
+    IMP043  a Robot's URDF file that is not well-formed XML.
+    IMP044  a Robot's URDF file that is not a URDF robot (root element not
+            robot, or unexpanded xacro).
+    IMP045  a Robot's rootLink / tipLink that names no link of the file.
+    IMP046  a Robot's tipLink that is not below its rootLink.
+    IMP047  a joint of a Robot's chain that robomda does not count
+            (floating, planar, or no URDF joint type).
+  For IMP040-IMP047 about a URDF file ID is the Robot stereotype
+  application's xmi:id; they are checked after the references, every one
+  of the model reported (f:fail-all).
   Warnings (f:warn) about what the import leaves out: IMP030, IMP101-IMP103
-  (application.xsl), IMP110-IMP116 (report.xsl); docs/errors.md. Every
+  (application.xsl), IMP110-IMP116 (report.xsl), IMP048 (urdf.xsl: a
+  Robot's rootLink / tipLink without urdf); docs/errors.md. Every
   duplicate id and dangling reference is reported (f:fail-all).
 -->
 <xsl:stylesheet version="3.0"
@@ -81,6 +98,7 @@
   <xsl:include href="../common/profile.xsl"/>
   <xsl:include href="xmi-common.xsl"/>
   <xsl:include href="files.xsl"/>
+  <xsl:include href="urdf.xsl"/>
   <xsl:include href="check.xsl"/>
   <xsl:include href="stereotypes.xsl"/>
   <xsl:include href="application.xsl"/>
@@ -144,6 +162,11 @@
       <xsl:variable name="model-el" as="element()" select="fp:model-el($norm)"/>
       <xsl:variable name="root" as="element()" select="fp:model-root($model-el)"/>
       <xsl:if test="fp:check-model($norm, $model-el)">
+        <!-- the kinematic chains the robot Devices name in URDF files
+             (urdf.xsl), read once: checked here, written by platform.xsl -->
+        <xsl:variable name="chains" as="map(*)*"
+            select="fp:urdf-chains($root, string(base-uri(.)), if (base-uri(.) = '') then () else fp:sandbox(., $model-path))"/>
+        <xsl:sequence select="fp:check-urdf($chains)"/>
         <xsl:variable name="href-types" as="map(*)" select="fp:href-types($norm)"/>
         <xsl:variable name="pim" as="document-node()">
         <xsl:document>
@@ -162,6 +185,8 @@
             <xsl:call-template name="tp:platform">
               <xsl:with-param name="root" as="element()" select="$root" tunnel="yes"/>
               <xsl:with-param name="href-types" as="map(*)" select="$href-types" tunnel="yes"/>
+              <xsl:with-param name="chains" as="map(*)" tunnel="yes"
+                  select="map:merge($chains ! map:entry(?device, ?items[. instance of element()]))"/>
             </xsl:call-template>
           </pim:model>
         </xsl:document>

@@ -9,8 +9,10 @@
            pim:communication-path (schemas/pim/1/pim.xsd).
   Params:  none; tunnel parameters set by import.xsl: root (the model
            root: where the deployment elements are looked for, and where
-           qualified names start) and href-types (fp:href-types of the
-           normalised XMI, for the mp:feature rules).
+           qualified names start), href-types (fp:href-types of the
+           normalised XMI, for the mp:feature rules) and chains (the
+           pim:kinematic-chain of each robot Device by its id, counted in
+           its URDF file by urdf.xsl).
   Errors:  none raised here: check.xsl has reported dangling references.
 
   Rules
@@ -18,6 +20,9 @@
     execution-environment. A node owned by another node (nestedNode,
     packagedElement, nestedClassifier or ownedMember of a node) is a child
     node; every other node is a top-level pim:node.
+  - A Device with a robomda Robot stereotype whose tag urdf names a URDF
+    file: pim:kinematic-chain (the file, the chain's links, its movable
+    joints and their count), before the attributes.
   - Node attributes: its owned Properties (not ports).
   - Deployment (owned by the node, or anywhere with client = the node):
     deployed = deployedArtifact, plus supplier, local ids only, in order,
@@ -58,6 +63,7 @@
 
   <xsl:template match="*[@x:type = $node-metas]" mode="mp:platform" as="element(pim:node)">
     <xsl:param name="root" as="element()" tunnel="yes"/>
+    <xsl:param name="chains" as="map(*)" tunnel="yes" select="map { }"/>
     <xsl:variable name="meta" as="xs:string" select="fp:meta(.)"/>
     <pim:node id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}"
         kind="{if ($meta eq 'Device') then 'device'
@@ -66,6 +72,8 @@
       <xsl:call-template name="tp:decoration">
         <xsl:with-param name="e" select="."/>
       </xsl:call-template>
+      <!-- a robot Device's kinematic chain, counted in its URDF file (urdf.xsl) -->
+      <xsl:sequence select="$chains(fp:id(.))"/>
       <xsl:apply-templates select="ownedAttribute[not(@x:type = 'Port')]" mode="mp:feature"/>
       <xsl:for-each select="deployment[@x:type eq 'Deployment']
                             | key('fp:dep-by-client', fp:id(.))[@x:type eq 'Deployment']">
