@@ -345,6 +345,106 @@ def test_an_external_entity_in_the_urdf_reads_no_file(model: Path, tmp_path: Pat
     assert "robomda-secret" not in import_model(model)
 
 
+# ========================================= bind: which number, and the check
+def warnings(model: Path) -> list[Diagnostic]:
+    return check(model, "orocos").diagnostics
+
+
+def test_the_dof_mismatch_warning_with_the_urdf_count(model: Path) -> None:
+    """Seed 001's DoF mismatch with the number read from the URDF file, located on both elements."""
+    arm(model.parent / "arm6.urdf", 6)
+    robots(model, {LWR1: {"urdf": "arm6.urdf"}})
+    without_dof_attribute(model)
+    said = warnings(model)
+    assert not [d for d in said if d.severity == "error"], said
+    mismatch = [d for d in said if d.code == "BND021"]
+    on_port = [d for d in mismatch if d.xmi_id == "_qa090q"]  # arm1's jointState port
+    on_device = [d for d in mismatch if d.xmi_id == LWR1 and "port 'jointState' of arm1" in d.message]
+    assert len(on_port) == 1 and len(on_device) == 1
+    for found in on_port + on_device:
+        assert "has 6 degrees of freedom (the movable joints of URDF file 'arm6.urdf')" in found.message
+        assert "JointState.position[7]" in found.message and found.line
+    assert on_port[0].element_kind == "uml:Port" and on_device[0].element_kind == "uml:Device"
+    # the controller connected to arm1 is checked too; the other arms are not concerned
+    assert {d.xmi_id for d in mismatch} == {"_qa090q", "_qa091q", "_qa095q", "_qa096q", "_qa064a", LWR1}
+    assert not [d for d in said if d.code in ("BND022", "BND023")]
+
+
+def test_a_urdf_that_fits_the_arrays_gives_no_warning(model: Path) -> None:
+    torso(model.parent / "twoarms.urdf")
+    robots(model, {LWR1: {"urdf": "twoarms.urdf", "rootLink": "torso", "tipLink": "llink7"}})
+    assert not [d for d in warnings(model) if d.code.startswith("BND02")]
+
+
+def test_the_tag_wins_and_disagreeing_sources_are_named(model: Path) -> None:
+    arm(model.parent / "arm6.urdf", 6)
+    robots(model, {LWR1: {"urdf": "arm6.urdf", "dof": "5"}})
+    said = warnings(model)
+    [disagree] = [d for d in said if d.code == "BND023"]
+    assert disagree.severity == "warning" and disagree.xmi_id == f"_robot{LWR1}" and disagree.line
+    assert disagree.message == ("device 'lwr1' declares its degrees of freedom three times, differently: "
+                                "5 (the Robot tag dof), 6 (the movable joints of URDF file 'arm6.urdf'), "
+                                "7 (the attribute dof); robomda checks against 5, the Robot tag dof")
+    assert all("has 5 degrees of freedom (the Robot tag dof)" in d.message for d in said if d.code == "BND021")
+
+
+@pytest.mark.parametrize("tags, attribute, expected", [
+    ({"urdf": "arm6.urdf"}, True, "twice, differently: 6 (the movable joints of URDF file 'arm6.urdf'), "
+                                  "7 (the attribute dof); robomda checks against 6"),
+    ({"dof": "7", "urdf": "arm6.urdf"}, False, "twice, differently: 7 (the Robot tag dof), "
+                                               "6 (the movable joints of URDF file 'arm6.urdf'); robomda checks against 7"),
+    ({"dof": "6"}, True, "twice, differently: 6 (the Robot tag dof), 7 (the attribute dof)"),
+    ({"dof": "7"}, True, None),
+    ({"dof": "7", "urdf": "arm7.urdf"}, True, None),
+], ids=["urdf-attribute", "tag-urdf", "tag-attribute", "tag-agrees", "all-agree"])
+def test_two_sources_that_disagree(model: Path, tags: dict[str, str], attribute: bool, expected: str | None) -> None:
+    arm(model.parent / "arm6.urdf", 6)
+    arm(model.parent / "arm7.urdf", 7)
+    robots(model, {LWR1: tags})
+    if not attribute:
+        without_dof_attribute(model)
+    disagree = [d.message for d in warnings(model) if d.code == "BND023"]
+    if expected is None:
+        assert disagree == []
+    else:
+        assert len(disagree) == 1 and expected in disagree[0], disagree
+
+
+def test_a_device_nobody_drives_is_checked_for_disagreement_too(model: Path) -> None:
+    text = model.read_text(encoding="utf-8")
+    drives = '<packagedElement xmi:type="uml:Dependency" xmi:id="_qa223d" name="drives" client="_qa102m" supplier="_qa220v"/>'
+    assert text.count(drives) == 1
+    model.write_text(text.replace(drives, ""), encoding="utf-8")
+    robots(model, {LWR2: {"dof": "6"}})
+    said = warnings(model)
+    assert [d.xmi_id for d in said if d.code == "BND023"] == [f"_robot{LWR2}"]
+    assert not [d for d in said if d.code == "BND021" and "lwr2" in d.message]
+
+
+def test_dof_zero_is_the_unset_default(model: Path) -> None:
+    """EMF writes no Integer tag equal to its default 0 and other tools may write 0: it means not given."""
+    robots(model, {LWR1: {"dof": "0"}})
+    said = warnings(model)
+    assert not [d for d in said if d.code.startswith("BND02")], said
+
+
+def test_a_robot_with_nothing_declared(model: Path) -> None:
+    robots(model, {LWR1: {}})
+    without_dof_attribute(model)
+    [missing] = [d for d in warnings(model) if d.code == "BND022"]
+    assert missing.xmi_id == LWR1 and "a Robot tag dof or urdf, or an attribute dof" in missing.message
+
+
+def test_a_tag_dof_that_is_no_number_of_joints(model: Path) -> None:
+    robots(model, {LWR1: {"dof": "seven"}, LWR2: {"dof": "-2"}})
+    result = check(model, "orocos")
+    assert result.exit_code == 1
+    errors = [d for d in result.diagnostics if d.severity == "error"]
+    assert [(d.code, d.xmi_id) for d in errors] == [("BND010", f"_robot{LWR1}"), ("BND010", f"_robot{LWR2}")]
+    assert "'seven' is not a number of degrees of freedom" in errors[0].message
+    assert all(d.element_kind == "robomda:Robot" for d in errors)
+
+
 # ================================================================= engines
 from test_engines import ENGINES, Cli  # noqa: E402  (the engines' command lines, shared)
 
@@ -362,6 +462,30 @@ def _run(engine: Cli, xsl: Path, source: Path, out: Path, params: dict[str, str]
 
     cmd = engine.argv + [f"-s:{source}", f"-xsl:{engine.stylesheet(xsl, workdir)}", f"-o:{out}"]
     return subprocess.run(cmd + [f"{k}={v}" for k, v in params.items()], capture_output=True, text=True, timeout=600)
+
+
+@pytest.mark.parametrize("engine", ENGINES)
+def test_saxon_java_and_saxonjs_read_the_urdf_as_saxonc_does(engine: Cli, model: Path, tmp_path: Path,
+                                                              workdir: Path) -> None:
+    """Import and bind of URDF chains give the same bytes and the same warnings under every engine."""
+    torso(model.parent / "robot files" / "twoarms.urdf")
+    arm(model.parent / "arm6.urdf", 6)
+    robots(model, {LWR1: {"urdf": "robot files/twoarms.urdf", "rootLink": "torso", "tipLink": "llink7", "dof": "6"},
+                   LWR2: {"urdf": "arm6.urdf"}, "_qa230v": {"urdf": "robot files/twoarms.urdf", "rootLink": "rlink2"}})
+    imported = tmp_path / "import.xml"
+    done = _run(engine, IMPORT_XSL, model, imported, {"source-name": "model.xmi", "model-path": ""}, workdir)
+    assert done.returncode == 0, done.stderr[-3000:]
+    assert imported.read_text(encoding="utf-8") == import_model(model, bind=False)
+    bound = tmp_path / "bind.xml"
+    done = _run(engine, BIND_XSL, imported, bound, {}, workdir)
+    assert done.returncode == 0, done.stderr[-3000:]
+    assert bound.read_text(encoding="utf-8") == import_model(model)
+    said: list[Diagnostic] = []
+    import_model(model, warnings=said)
+    # the same warnings, in the same order
+    expected = [f"{d.code}: {d.message}" for d in said if d.code.startswith("BND02")]
+    assert "BND023" in expected[0] and "BND021" in expected[-1]
+    assert re.findall(r"(BND02\d: .*?) \[xmi:id=", done.stderr) == expected
 
 
 @pytest.mark.parametrize("engine", ENGINES)

@@ -110,10 +110,12 @@
     BND016  (warning) a property of a composite promotes the property of no part
     BND017  a property of a composite names the properties of several parts
     BND018  a part sets a value on a property its type does not have
-  Warnings of the hardware platform (bind/devices.xsl): BND021 a fixed-size
-  array that does not fit the degrees of freedom of the Device its
-  instance drives (DoF mismatch, seed 001); BND022 a driven Device that
-  declares no degrees of freedom.
+  Of the hardware platform (bind/devices.xsl): BND010 a Robot tag dof that
+  is no non-negative integer; warnings BND021 a fixed-size array that does
+  not fit the degrees of freedom of the Device its instance drives (DoF
+  mismatch, seed 001), BND022 a driven Device that declares no degrees of
+  freedom, BND023 a Device whose Robot tag dof, URDF chain and attribute
+  dof disagree.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -327,7 +329,7 @@
     <xsl:variable name="calls" as="element(pim:call)*"
         select="if (exists($uses)) then fp:calls-from-pairs($root, $resolved/self::fp:call-pair)
                 else fp:calls-from-interfaces($root, $work)"/>
-    <xsl:sequence select="fp:warn-dof($root, $instances, $bound, $raw-connections)"/>
+    <xsl:sequence select="fp:check-devices($root), fp:warn-dof($root, $instances, $bound, $raw-connections)"/>
     <pim:binding instances-from="{if (exists($tops)) then 'parts' else 'components'}"
                  connections-from="{if (exists($uses)) then 'connectors' else 'interfaces'}">
       <xsl:sequence select="$hosts ! fp:host(., count($hosts))"/>
