@@ -155,3 +155,20 @@ def _running_in_group(pgid: int) -> list[str]:
         if int(fields[2]) == pgid and fields[0] != "Z":
             running.append(stat.parent.name)
     return running
+
+
+def test_a_changed_urdf_file_is_checked_again(tmp_path: Path) -> None:
+    """A «Robot»'s URDF file decides the DoF checks: the model is not skipped when that file changed."""
+    src = tmp_path / "models"
+    shutil.copytree(ROOT / "fixtures" / "broken" / "urdf-dof-mismatch", src / "arms")
+    out = tmp_path / "out"
+    first = run_batch(src, out, jobs=1)
+    assert first.count("ok") == 1, [r.diagnostics for r in first.results]
+    assert run_batch(src, out, jobs=1).count("skipped") == 1
+    urdf = src / "arms" / "lwr1.urdf"
+    urdf.write_text(urdf.read_text(encoding="utf-8").replace("</robot>", ""), encoding="utf-8")
+    broken = run_batch(src, out, jobs=1)
+    assert broken.count("failed") == 1 and "[IMP043]" in broken.results[0].diagnostics[0]
+    urdf.unlink()
+    missing = run_batch(src, out, jobs=1)
+    assert missing.count("failed") == 1 and "[IMP042]" in missing.results[0].diagnostics[0]

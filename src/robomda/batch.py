@@ -23,7 +23,9 @@
   service or type library of a model split over several files) is a
   library: it is not generated on its own (status ``library``, with a note
   naming a model that uses it), and a model's input hash covers the files it
-  references, so changing a library regenerates the models that use it.
+  references, so changing a library regenerates the models that use it; it
+  covers the URDF files its «Robot» stereotypes name too (their joints decide
+  the DoF checks), so an edited or removed robot description is checked again.
 - A failing model is reported with its diagnostics and does not stop the
   others.
 - SIGINT (Ctrl-C) or SIGTERM stops the batch at once: queued models are
@@ -46,6 +48,7 @@ from dataclasses import dataclass, field
 from multiprocessing import get_context
 from pathlib import Path
 from typing import Callable, Sequence
+from urllib.parse import unquote
 
 from lxml import etree
 
@@ -191,11 +194,41 @@ def _read_state(out: Path) -> dict[str, dict[str, str]]:
 
 
 def _input_hash(model: Path, linked: list[Path]) -> str:
-    """A hash of the model file and of every model file it references."""
+    """A hash of the model file, of every model file it references and of the URDF files they name."""
     digest = hashlib.sha256(model.read_bytes())
     for path in linked:
         digest.update(b"\0" + path.as_posix().encode() + b"\0" + path.read_bytes())
+    for path in [urdf for source in (model, *linked) for urdf in _urdf_files(source)]:
+        digest.update(b"\0urdf\0" + path.as_posix().encode() + b"\0"
+                      + (path.read_bytes() if path.is_file() else b"(missing)"))
     return digest.hexdigest()
+
+
+_PROFILE_URI = "http://robomda.org/profile/robomda/1"
+_URI_SCHEME = re.compile(r"^[A-Za-z][A-Za-z0-9+.\-]*:")
+
+
+def _urdf_files(model: Path) -> list[Path]:
+    """The URDF files the «Robot» stereotype applications of ``model`` name (tag urdf), as the import reads
+    them (xslt/import/urdf.xsl: relative to the model file; no other URI scheme than file:), there or not."""
+    try:
+        root = etree.parse(str(model), etree.XMLParser(huge_tree=True, resolve_entities=False,
+                                                       no_network=True)).getroot()
+    except (OSError, etree.XMLSyntaxError):
+        return []
+    found = []
+    for app in root:
+        if not isinstance(app.tag, str) or etree.QName(app).localname != "Robot":
+            continue
+        if (app.prefix or "").lower() != "robomda" and etree.QName(app).namespace != _PROFILE_URI:
+            continue
+        named = (app.get("urdf") or app.findtext("urdf") or "").strip().replace("\\", "/")
+        if named.lower().startswith("file:"):
+            named = "/" + named[5:].lstrip("/")
+        elif not named or _URI_SCHEME.match(named):
+            continue
+        found.append(Path(os.path.normpath(model.parent / unquote(named))))
+    return found
 
 
 def run_batch(folder: Path, out: Path, target: str | None = None, *, package_name: str = "", jobs: int | None = None,
