@@ -39,24 +39,27 @@ def model(tmp_path: Path) -> Path:
     return folder / "model.xmi"
 
 
-def robots(model: Path, applications: dict[str, dict[str, str]]) -> None:
-    """Wrap the model in xmi:XMI and apply «Robot» to each device id with the given tags.
-
-    The application of device ``_qa210v`` gets the xmi:id ``_robot_qa210v``.
-    """
-    text = model.read_text(encoding="utf-8")
+def wrapped(text: str, inside: str, after: str) -> str:
+    """A model file whose root is a uml:Model, wrapped in xmi:XMI (which can hold stereotype applications),
+    with ``inside`` added at the end of the model and ``after`` after it."""
     start = re.search(r"<uml:Model ([^>]*)>", text)
-    assert start, "the fixture's root is a uml:Model"
+    assert start, "the root is a uml:Model"
     namespaces = " ".join(re.findall(r'xmlns:\w+="[^"]*"', start.group(1)))
     rest = re.sub(r'\s*xmlns:\w+="[^"]*"|\s*xmi:version="[^"]*"', "", start.group(1)).strip()
     text = text.replace(start.group(0), f'<xmi:XMI xmi:version="20131001" {namespaces} '
                         f'xmlns:robomda="http://robomda.org/profile/robomda/1">\n<uml:Model {rest}>', 1)
+    assert text.count("</uml:Model>") == 1
+    return text.replace("</uml:Model>", f"{inside}</uml:Model>\n{after}</xmi:XMI>")
+
+
+def robots(model: Path, applications: dict[str, dict[str, str]]) -> None:
+    """Apply «Robot» to each device id with the given tags (the application of device ``_qa210v`` gets the
+    xmi:id ``_robot_qa210v``)."""
     stereotypes = "".join(
         f'  <robomda:Robot xmi:id="_robot{device}" base_Device="{device}"'
         + "".join(f' {tag}="{value}"' for tag, value in tags.items()) + "/>\n"
         for device, tags in applications.items())
-    assert text.count("</uml:Model>") == 1
-    model.write_text(text.replace("</uml:Model>", "</uml:Model>\n" + stereotypes + "</xmi:XMI>"), encoding="utf-8")
+    model.write_text(wrapped(model.read_text(encoding="utf-8"), "", stereotypes), encoding="utf-8")
 
 
 def without_dof_attribute(model: Path, device: str = LWR1) -> None:
@@ -215,6 +218,24 @@ def test_tags_as_child_elements_and_unset_tags_as_empty_strings(model: Path) -> 
                                   'rootLink="" tipLink=""><urdf>arm3.urdf</urdf></robomda:Robot>'), encoding="utf-8")
     found = chain(model)
     assert found is not None and found.get("dof") == "3" and found.get("root-link") is None
+
+
+def test_a_device_of_another_model_file_reads_its_urdf_beside_that_file(tmp_path: Path) -> None:
+    """Models split over several files (fixtures/cases/split): the path is relative to the file of the Device."""
+    shutil.copytree(ROOT / "fixtures" / "cases" / "split", tmp_path / "split", ignore=shutil.ignore_patterns("expected"))
+    library = tmp_path / "split" / "components" / "RobotInterface.compdef.uml"
+    library.write_text(wrapped(library.read_text(encoding="utf-8"),
+                               '  <packagedElement xmi:type="uml:Device" xmi:id="_spArm" name="arm"/>\n',
+                               '  <robomda:Robot xmi:id="_spArmR" base_Device="_spArm" urdf="arm.urdf"/>\n'),
+                       encoding="utf-8")
+    arm(library.parent / "arm.urdf", 4)
+    arm(tmp_path / "split" / "arm.urdf", 5)  # beside the model file: not the one meant
+    found = pim(tmp_path / "split" / "model.xmi").find(f".//{PIM}node[@id='_spArm']/{PIM}kinematic-chain")
+    assert found is not None and found.get("dof") == "4"
+    (library.parent / "arm.urdf").unlink()
+    [missing] = failure(tmp_path / "split" / "model.xmi").diagnostics
+    assert missing.code == "IMP042" and missing.xmi_id == "_spArmR"
+    assert missing.file and missing.file.endswith("RobotInterface.compdef.uml") and missing.line
 
 
 # =================================================================== errors
