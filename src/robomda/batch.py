@@ -53,7 +53,7 @@ from urllib.parse import unquote
 from lxml import etree
 
 from robomda import __version__
-from robomda.diagnostics import EXIT_INTERNAL, EXIT_OK, Diagnostic, RobomdaError, linked_files
+from robomda.diagnostics import EXIT_INTERNAL, EXIT_OK, Diagnostic, RobomdaError, file_ref_path, linked_files
 from robomda.output import STATE_FILE as OUTPUT_STATE
 from robomda.output import atomic_write
 from robomda.resources import resource_root
@@ -205,7 +205,6 @@ def _input_hash(model: Path, linked: list[Path]) -> str:
 
 
 _PROFILE_URI = "http://robomda.org/profile/robomda/1"
-_URI_SCHEME = re.compile(r"^[A-Za-z][A-Za-z0-9+.\-]*:")
 
 
 def _urdf_files(model: Path) -> list[Path]:
@@ -223,11 +222,9 @@ def _urdf_files(model: Path) -> list[Path]:
         if (app.prefix or "").lower() != "robomda" and etree.QName(app).namespace != _PROFILE_URI:
             continue
         named = (app.get("urdf") or app.findtext("urdf") or "").strip().replace("\\", "/")
-        if named.lower().startswith("file:"):
-            named = "/" + named[5:].lstrip("/")
-        elif not named or _URI_SCHEME.match(named):
-            continue
-        found.append(Path(os.path.normpath(model.parent / unquote(named))))
+        path = file_ref_path(unquote(named), model.parent) if named else None
+        if path is not None:
+            found.append(Path(os.path.normpath(path)))
     return found
 
 

@@ -25,6 +25,7 @@ __all__ = [
     "EXIT_FINDINGS",
     "EXIT_INPUT",
     "EXIT_INTERNAL",
+    "file_ref_path",
     "parse_stylesheet_error",
     "parse_stylesheet_warning",
     "parse_stylesheet_message",
@@ -163,6 +164,14 @@ _SCHEME = re.compile(r"^[A-Za-z][A-Za-z0-9+.\-]*:")
 _PROFILE = re.compile(r"\.profile\.(uml|xmi)$", re.I)
 
 
+def file_ref_path(ref: str, base: Path) -> Path | None:
+    """The file a reference written in a model names, as the import resolves it: a file: URI, or a
+    path relative to the folder ``base``; None for a URI of any other scheme (package://, http:)."""
+    if ref.lower().startswith("file:"):
+        return Path("/") / ref[5:].lstrip("/")
+    return None if _SCHEME.match(ref) else base / ref
+
+
 def linked_files(model: Path, search: tuple[Path, ...] = ()) -> list[Path]:
     """The model files ``model`` references through hrefs, and theirs, each once (breadth first).
 
@@ -186,10 +195,10 @@ def linked_files(model: Path, search: tuple[Path, ...] = ()) -> list[Path]:
         except OSError:
             continue
         for ref in dict.fromkeys(unquote(m.group(1).decode("utf-8", "replace")) for m in _HREF.finditer(raw)):
-            if _PROFILE.search(ref) or (_SCHEME.match(ref) and not ref.lower().startswith("file:")):
+            named = None if _PROFILE.search(ref) else file_ref_path(ref, current.parent)
+            if named is None:
                 continue
-            target = Path(ref[5:].lstrip("/") if ref.lower().startswith("file:") else ref)
-            target = lexical(Path("/") / target if ref.lower().startswith("file:") else current.parent / target)
+            target = lexical(named)
             if target in seen or not target.is_file() or not any(target.is_relative_to(r) for r in roots):
                 continue
             seen.add(target)

@@ -57,6 +57,14 @@
     <xsl:sequence select="replace($uri, '^file:/+', 'file:/')"/>
   </xsl:function>
 
+  <!-- whether file URI $uri is inside one of the sandbox folders $roots
+       (the model's folder and the model path): IMP040 otherwise -->
+  <xsl:function name="fp:in-sandbox" as="xs:boolean">
+    <xsl:param name="uri" as="xs:string"/>
+    <xsl:param name="roots" as="xs:string*"/>
+    <xsl:sequence select="some $root in $roots satisfies starts-with(fp:uri-key($uri), fp:uri-key($root))"/>
+  </xsl:function>
+
   <!-- the element whose reference $href is, for messages: the nearest
        element with an xmi:id -->
   <xsl:function name="fp:referrer" as="element()?">
@@ -78,7 +86,7 @@
       <xsl:variable name="what" as="xs:string"
           select="(if ($who) then local-name($who) || ' ' || (($who/@name, '')[1]) else 'an element') || ' refers to ''' || . || ''''"/>
       <xsl:choose>
-        <xsl:when test="not(some $root in $roots satisfies starts-with(fp:uri-key($uri), fp:uri-key($root)))">
+        <xsl:when test="not(fp:in-sandbox($uri, $roots))">
           <xsl:sequence select="f:fail('IMP040', $id, $what || ', a file outside the model''s folder and the model path ('
               || $uri || '): robomda reads only files there; add its folder with --model-path DIR')"/>
         </xsl:when>

@@ -143,7 +143,7 @@
         <xsl:sequence select="fp:problem('IMP042', $app, $file || ' cannot be read: the model was not read from a file, '
             || 'so no path is relative to it')"/>
       </xsl:when>
-      <xsl:when test="empty($uri) or not(some $root in $roots satisfies starts-with(fp:uri-key($uri), fp:uri-key($root)))">
+      <xsl:when test="empty($uri) or not(fp:in-sandbox($uri, $roots))">
         <xsl:sequence select="fp:problem('IMP040', $app, $file || ' is not a file in the model''s folder or the model path: '
             || 'robomda reads only files there, never a package:// or network URI; give the path relative to the model file, '
             || 'or add its folder with --model-path DIR')"/>
