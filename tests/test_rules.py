@@ -62,7 +62,7 @@ CASES_BY_RULE: dict[str, tuple[Path, str | None, Path, list[tuple[str, str]]]] =
     "APP031": (PIM_RULES, None, PID_PIM, [('priority="0"', 'priority="100"')]),
     "APP040": (PIM_RULES, None, PID_PIM, [('default="0.5"', 'default="' + "1" * 33 + '"')]),
     "APP041": (PIM_RULES, None, PID_PIM, [('name="amplitude"', 'name="' + "a" * 256 + '"')]),
-    "CMP001": (PIM_RULES, None, PID_PIM, [('host="_pid000node"', 'host=""')]),
+    "CMP001": (PIM_RULES, None, PID_PIM, [(r'(<pim:instance [^>]*?)host="_pid000node"', r'\1host=""')]),
     "CMP002": (PIM_RULES, None, PID_PIM, [('<pim:instance name="PIDController"',
                                           '<pim:instance name="TrajectoryGenerator"')]),
     "CMP006": (PIM_RULES, None, PID_PIM, [_SECOND_HOST, (r'(<pim:instance name="RobotInterface".*?<pim:activity [^>]*/>\s*)',

@@ -146,6 +146,7 @@
   <xsl:include href="bind/composites.xsl"/>
   <xsl:include href="bind/services.xsl"/>
   <xsl:include href="bind/devices.xsl"/>
+  <xsl:include href="bind/runtime.xsl"/>
 
   <xsl:output method="xml" indent="no" encoding="UTF-8"/>
 
@@ -286,7 +287,8 @@
     <xsl:variable name="components" as="element(pim:component)*" select="pim:application//pim:component"/>
     <xsl:variable name="tops" as="element(pim:component)*"
         select="$components[fp:is-composite(.)][empty(key('fp:part-by-type', @id, $root))]"/>
-    <xsl:variable name="ees" as="element(pim:node)*" select="fp:execution-environments($root)"/>
+    <!-- the processes: threads (bind/runtime.xsl) are parts of them -->
+    <xsl:variable name="ees" as="element(pim:node)*" select="fp:execution-environments($root)[not(fp:is-thread(.))]"/>
     <xsl:variable name="hosts" as="element(pim:node)*" select="fp:hosts($root)"/>
     <!-- a composite inside itself would make the walk endless: refused first -->
     <xsl:sequence select="f:fail-all(fp:composition-cycles($components))"/>
@@ -294,7 +296,7 @@
     <xsl:variable name="expansion" as="document-node()" select="fp:expansion($tops)"/>
     <!-- instances and bound components live in documents of their own, so
          that keys find them (temporary trees, copied to the result) -->
-    <xsl:sequence select="f:fail-all(fp:deployment-problems($expansion, $components, $ees))"/>
+    <xsl:sequence select="f:fail-all((fp:thread-problems($root), fp:deployment-problems($expansion, $components, $ees)))"/>
     <xsl:variable name="instance-tree" as="document-node()" select="fp:instance-tree($expansion, $components, $ees, $hosts)"/>
     <!-- an error of one instance (a bad value: BND010, BND006 ...) does not
          hide those of the others: each was caught, all are raised here -->
@@ -330,9 +332,12 @@
         select="if (exists($uses)) then fp:calls-from-pairs($root, $resolved/self::fp:call-pair)
                 else fp:calls-from-interfaces($root, $work)"/>
     <xsl:sequence select="fp:check-devices($root), fp:warn-dof($root, $instances, $bound, $raw-connections)"/>
+    <xsl:variable name="processes" as="element(pim:process)*" select="fp:processes(., $instances, $hosts)"/>
+    <xsl:sequence select="f:fail-all(fp:process-problems($root, $processes))"/>
     <pim:binding instances-from="{if (exists($tops)) then 'parts' else 'components'}"
                  connections-from="{if (exists($uses)) then 'connectors' else 'interfaces'}">
       <xsl:sequence select="$hosts ! fp:host(., count($hosts))"/>
+      <xsl:sequence select="fp:links(., $hosts), $processes, fp:component-sets(., $hosts)"/>
       <xsl:sequence select="fp:libraries(.)"/>
       <xsl:sequence select="$bound, $instance-tree/pim:composite-instance, fp:sequence(., $instances, $instance-tree)"/>
       <xsl:sequence select="fp:uniquely-named($raw-connections), fp:uniquely-named($calls)"/>
@@ -379,7 +384,7 @@
         select="$placed ! fp:instance-ee(?part, ?component, ?around, $ees)"/>
     <xsl:sequence select="$placed[empty(fp:instance-ee(?part, ?component, ?around, $ees))]
                             ! fp:no-ee-problem(?part, ?component, $ees),
-                          ($found/.) ! fp:middleware-problems(.)"/>
+                          ($found ! fp:process-of(.))/. ! fp:middleware-problems(.)"/>
   </xsl:function>
 
   <!-- the instances, in a document of their own (keys find them there):

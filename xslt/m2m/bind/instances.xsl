@@ -32,13 +32,30 @@
     <pim:host xmi-id="{$node/@id}" name="{$node/@name}" hostname="{$hostname}"
               hostname-source="{if (exists($hn)) then 'stereotype' else 'name'}"
               address="{if (exists($ad)) then $ad else if ($host-count eq 1) then 'localhost' else $hostname}"
-              address-source="{if (exists($ad)) then 'stereotype' else 'default'}"/>
+              address-source="{if (exists($ad)) then 'stereotype' else 'default'}"
+              real-time="{fp:host-real-time($node)}" described="{exists(f:stereotype($node, 'Host'))}">
+      <!-- the computational resources, where the model gives them (seed 002) -->
+      <xsl:for-each select="'cores', 'memory'">
+        <xsl:variable name="value" as="xs:string?" select="(fp:tag($node, 'Host', .), fp:conv($node, .))[normalize-space(.)][1]"/>
+        <xsl:if test="exists($value) and fp:integer($value, ., string($node/@id)) gt 0">
+          <xsl:attribute name="{.}" select="fp:integer($value, ., string($node/@id))"/>
+        </xsl:if>
+      </xsl:for-each>
+    </pim:host>
+  </xsl:function>
+
+  <!-- true when host $node runs a real-time kernel: Host tag realTime, else
+       its attribute realTime -->
+  <xsl:function name="fp:host-real-time" as="xs:boolean">
+    <xsl:param name="node" as="element(pim:node)"/>
+    <xsl:variable name="value" as="xs:string?" select="(fp:tag($node, 'Host', 'realTime'), fp:conv($node, 'realTime'))[normalize-space(.)][1]"/>
+    <xsl:sequence select="exists($value) and fp:boolean($value, 'realTime', string($node/@id))"/>
   </xsl:function>
 
   <!-- ====================================================== libraries -->
   <xsl:function name="fp:libraries" as="element(pim:library)*">
     <xsl:param name="model" as="element(pim:model)"/>
-    <xsl:variable name="all" as="element(pim:artifact)*" select="$model/pim:platform//pim:artifact"/>
+    <xsl:variable name="all" as="element(pim:artifact)*" select="$model/pim:platform//pim:artifact[not(fp:is-set(.))]"/>
     <xsl:variable name="profiled" as="element(pim:artifact)*" select="$all[exists(f:stereotype(., 'Library'))]"/>
     <xsl:for-each select="if (exists($profiled)) then $profiled else $all">
       <xsl:variable name="item" as="xs:string?" select="fp:tag(., 'Library', 'path')[normalize-space(.)]"/>
@@ -73,8 +90,17 @@
     <xsl:variable name="around" as="xs:string*" select="tokenize($unit/@around)"/>
     <xsl:variable name="deployments" as="element(pim:deployment)*"
         select="fp:deployments-of($part, $component, $around, $realization-item)"/>
-    <xsl:variable name="ee" as="element(pim:node)?" select="fp:ee-of($deployments, $component, $ees)"/>
+    <!-- the execution environment deployed to: a process, or a thread of one -->
+    <xsl:variable name="target" as="element(pim:node)?" select="fp:ee-of($deployments, $component, $ees)"/>
+    <xsl:variable name="thread" as="element(pim:node)?" select="$target[fp:is-thread(.)]"/>
+    <xsl:variable name="ee" as="element(pim:node)?" select="fp:process-of($target)"/>
     <xsl:variable name="inst-id" as="xs:string" select="string(($part/@id, $component/@id)[1])"/>
+    <xsl:variable name="sets" as="element(pim:artifact)*" select="fp:sets-of(($part/@id, $component/@id, $around), $root)"/>
+    <xsl:if test="count($sets) gt 1">
+      <xsl:sequence select="f:fail('BND025', $inst-id, 'instance ''' || ($unit/@name, $part/@name, $component/@name)[1]
+          || ''' is in ' || count($sets) || ' component sets (''' || string-join($sets/@name, ''', ''')
+          || '''): an instance belongs to at most one set')"/>
+    </xsl:if>
     <xsl:if test="empty($ee)">
       <xsl:sequence select="f:fail-all(fp:no-ee-problem($part, $component, $ees))"/>
     </xsl:if>
@@ -89,19 +115,24 @@
       </xsl:if>
       <xsl:if test="$host"><xsl:attribute name="host" select="$host/@id"/></xsl:if>
       <xsl:attribute name="execution-environment" select="$ee/@id"/>
+      <xsl:if test="$thread"><xsl:attribute name="thread" select="$thread/@id"/></xsl:if>
+      <xsl:if test="$sets"><xsl:attribute name="set" select="$sets/@id"/></xsl:if>
       <xsl:attribute name="middleware" select="fp:middleware($ee)"/>
       <xsl:for-each select="fp:tag($ee, 'Middleware', 'version')[normalize-space(.)]">
         <xsl:attribute name="middleware-version" select="."/>
       </xsl:for-each>
       <xsl:if test="$realization-item"><xsl:attribute name="realization" select="$realization-item/@id"/></xsl:if>
       <!-- only the elements with an Activity stereotype can give a tag -->
-      <xsl:sequence select="fp:activity(($part, $component, $realization-item)[exists(f:stereotype(., 'Activity'))], $realization-item, $ee, $inst-id)"/>
+      <xsl:variable name="own" as="element(pim:activity)"
+          select="fp:activity(($part, $component, $realization-item)[exists(f:stereotype(., 'Activity'))], $realization-item, $ee, $inst-id)"/>
+      <!-- in a thread: the thread's activity (bind/runtime.xsl) -->
+      <xsl:sequence select="if ($thread) then fp:member-activity($own, $thread, ($unit/@name, $part/@name, $component/@name)[1], $inst-id) else $own"/>
       <!-- values set by the enclosing parts and composites (seed 003) -->
       <xsl:sequence select="fp:property-values($part, $around, fp:feature-owner($component))"/>
       <!-- every deployment that reaches the instance, so the deployment
            rules (schemas/pim/1/pim.sch) can see one deployed twice -->
-      <xsl:for-each select="$deployments">
-        <xsl:variable name="d-ee" as="element(pim:node)?" select="fp:deployment-ee(.)"/>
+      <xsl:for-each select="$deployments[not(fp:set-deployment(.))]">
+        <xsl:variable name="d-ee" as="element(pim:node)?" select="fp:process-of(fp:deployment-ee(.))"/>
         <xsl:variable name="d-host" as="element(pim:node)?" select="fp:host-of($d-ee, .., $hosts)"/>
         <pim:deployed-on deployment="{@id}">
           <xsl:if test="$d-ee"><xsl:attribute name="execution-environment" select="$d-ee/@id"/></xsl:if>
@@ -129,7 +160,7 @@
 
   <!-- the execution environment of the instance of $part (or of
        component $c when instances come from components), as fp:instance
-       finds it -->
+       finds it: a process, or a thread of one -->
   <xsl:function name="fp:instance-ee" as="element(pim:node)?">
     <xsl:param name="part" as="element(pim:part)?"/>
     <xsl:param name="component" as="element(pim:component)"/>
@@ -139,13 +170,15 @@
   </xsl:function>
 
   <!-- the execution environment of an instance of $component placed by
-       $deployments: the first they reach, else the one that owns the
-       component, else the model's only one -->
+       $deployments: the first they reach (deployments of component sets
+       last: a set gives the host, its members may choose the process),
+       else the one that owns the component, else the model's only one -->
   <xsl:function name="fp:ee-of" as="element(pim:node)?">
     <xsl:param name="deployments" as="element(pim:deployment)*"/>
     <xsl:param name="component" as="element(pim:component)"/>
     <xsl:param name="ees" as="element(pim:node)*"/>
-    <xsl:sequence select="($deployments ! fp:deployment-ee(.), fp:owner-ee($component), if (count($ees) eq 1) then $ees else ())[1]"/>
+    <xsl:sequence select="(($deployments[not(fp:set-deployment(.))], $deployments[fp:set-deployment(.)]) ! fp:deployment-ee(.),
+                           fp:owner-ee($component), if (count($ees) eq 1) then $ees else ())[1]"/>
   </xsl:function>
 
   <!-- the execution environment of the node that owns component $c in
