@@ -444,8 +444,8 @@ def test_papyrus_profile_application_resolves():
 def test_profile_matches_spec(profile):
     """Stereotypes, extended metaclasses and tags of docs/profile.md."""
     expected = {
-        "Middleware": (["ExecutionEnvironment"], ["kind", "version"]),
-        "Host": (["Node", "Device"], ["hostname", "address"]),
+        "Middleware": (["ExecutionEnvironment"], ["kind", "version", "managed"]),
+        "Host": (["Node", "Device"], ["hostname", "address", "cores", "memory", "realTime"]),
         "Activity": (["Component", "Class", "Property"], ["period", "priority", "scheduler", "cpuAffinity"]),
         "ConnectionPolicy": (["Connector", "Interface", "Port"],
                              ["type", "size", "lockPolicy", "init", "pull", "topic"]),
@@ -455,12 +455,21 @@ def test_profile_matches_spec(profile):
         "Library": (["Artifact"], ["path", "target", "includeDir"]),
         "StartAfter": (["Dependency"], []),
         "Robot": (["Device"], ["dof", "urdf", "rootLink", "tipLink"]),
+        "Thread": (["ExecutionEnvironment"], ["period", "priority", "scheduler", "cpuAffinity"]),
+        "ComponentSet": (["Artifact"], []),
+        "Bus": (["CommunicationPath"], ["kind", "bandwidth"]),
     }
     assert {k: (v["metas"], list(v["tags"])) for k, v in profile.items()} == expected
     assert profile["Activity"]["tags"]["scheduler"] == "OTHER"
     assert profile["ConnectionPolicy"]["tags"]["lockPolicy"] == "LOCK_FREE"
     # an unset dof is 0 (EMF's Integer default), which means "not given"
     assert profile["Robot"]["tags"]["dof"] == "0" and profile["Robot"]["tags"]["urdf"] is None
+    # seed 002: a thread's activity tags default as Activity's; 0 = not given for cores, memory, bandwidth
+    assert profile["Thread"]["tags"] == profile["Activity"]["tags"]
+    assert profile["Host"]["tags"] == {"hostname": None, "address": None, "cores": "0", "memory": "0",
+                                       "realTime": "false"}
+    assert profile["Bus"]["tags"] == {"kind": "Ethernet", "bandwidth": "0.0"}
+    assert profile["Middleware"]["tags"]["managed"] == "false"
     # the UML side of the profile declares the same stereotypes as its Ecore definition
     doc = etree.parse(str(PROFILE))
     uml_st = sorted(e.get("name") for e in doc.iter("packagedElement")
