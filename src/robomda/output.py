@@ -344,6 +344,8 @@ def _swap_in(out: Path, writes: dict[str, bytes], drops: set[str]) -> None:
                 path = staging / rel
                 path.parent.mkdir(parents=True, exist_ok=True)
                 path.write_bytes(data)
+                if data.startswith(b"#!"):  # a script (a start script of the deployment): runnable
+                    path.chmod(path.stat().st_mode | 0o111)
         # the folders' modes last: a read-only folder of the user's is filled first
         for src_dir, dst_dir in reversed(folders):
             shutil.copymode(src_dir, dst_dir)

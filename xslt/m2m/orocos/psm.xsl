@@ -92,6 +92,7 @@
   <xsl:include href="../../common/profile.xsl"/>
   <xsl:include href="../common/psm-kit.xsl"/>
   <xsl:include href="types.xsl"/>
+  <xsl:include href="processes.xsl"/>
 
   <xsl:param name="package-name" as="xs:string" select="''">
     <!-- the component package (CMake project, deployer Import); '' = lower snake-case of the model name -->
@@ -156,19 +157,36 @@
         <xsl:sequence select="$components ! fp:task-context(., $package)"/>
       </xsl:document>
     </xsl:variable>
+    <!-- the runtime architecture (processes.xsl): processes in start order,
+         and each kept connection's transports -->
+    <xsl:sequence select="fp:oro-process-problems($instances, $binding/pim:call)"/>
+    <xsl:variable name="order" as="element(pim:process)*" select="fp:oro-process-order($instances)"/>
+    <xsl:variable name="files" as="map(xs:string, xs:string)"
+        select="map:merge($order ! map:entry(string(@xmi-id),
+                  if (fp:oro-single-process($instances)) then f:snake-case(root(.)/pim:model/@name) else fp:oro-process-file(.)))"/>
+    <xsl:variable name="connections" as="element(o:connection)*"
+        select="$binding/pim:connection[fp:kept-connection(., $binding, $targets)]
+                ! fp:oro-connection(., $targets, $order ! string(@xmi-id), $files, $package)"/>
+    <xsl:variable name="corba" as="xs:boolean" select="exists($connections/o:remote)"/>
+    <xsl:variable name="processes" as="element(o:process)*"
+        select="fp:oro-processes($instances, $corba, $order[map:get($files, string(@xmi-id)) = $connections/o:stream[@transport eq 'ros']/@process]/@name)"/>
     <o:deployment xmi-id="{@id}" model-name="{@name}" deploy-name="{f:snake-case(@name)}"
                   package="{$package}" namespace="{$package}" source="{@source}">
       <xsl:variable name="children" as="element()*">
         <xsl:sequence select="$binding/pim:library ! fp:psm-library(., $package)"/>
         <xsl:sequence select="fp:oro-types($task-contexts/o:task-context, $package, root(.))"/>
-        <xsl:sequence select="$task-contexts/o:task-context"/>
-        <xsl:for-each select="$binding/pim:host">
-          <o:host xmi-id="{@xmi-id}" name="{@name}" hostname="{@hostname}" address="{@address}"/>
+        <xsl:sequence select="$task-contexts/o:task-context, fp:oro-thread-task-context($processes, $package)"/>
+        <xsl:sequence select="$binding/pim:host ! fp:oro-host(.)"/>
+        <xsl:sequence select="$processes, $connections"/>
+        <xsl:for-each select="fp:in-start-order($instances)">
+          <xsl:variable name="process" as="element(o:process)" select="$processes[@xmi-id eq current()/@execution-environment]"/>
+          <xsl:variable name="thread" as="element(o:thread)?" select="$process/o:thread[@xmi-id eq current()/@thread]"/>
+          <!-- a thread starts just before its first member -->
+          <xsl:if test="$thread and tokenize($thread/@members)[1] eq @name">
+            <xsl:sequence select="fp:oro-thread-instance($thread, key('fp:process', @execution-environment, root(.))/pim:thread[@xmi-id eq current()/@thread]/pim:activity, $package, $corba)"/>
+          </xsl:if>
+          <xsl:sequence select="fp:oro-instance(., $package, $binding, $task-contexts, $targets, $process, $thread, $corba)"/>
         </xsl:for-each>
-        <xsl:sequence select="$binding/pim:connection[fp:kept-connection(., $binding, $targets)]
-                              ! fp:oro-connection(., $targets)"/>
-        <xsl:sequence select="fp:in-start-order($instances)
-                              ! fp:oro-instance(., $package, $binding, $task-contexts, $targets)"/>
       </xsl:variable>
       <xsl:call-template name="t:indented-content">
         <xsl:with-param name="children" select="$children"/>
@@ -208,16 +226,18 @@
                           or empty(key('fp:instance-by-middleware', 'OROCOS', root($instance)))"/>
   </xsl:function>
 
-  <!-- a connection of $binding that the PSM keeps: one of its writers and
-       one of its readers are OROCOS instances ($targets: the names of the
-       instances of $binding that are on the target, see fp:on-target) -->
+  <!-- a connection of $binding that the PSM keeps: one of its ends is an
+       OROCOS instance ($targets: the names of the instances of $binding
+       that are on the target, see fp:on-target), and it has ends on both
+       sides; an end on another middleware is reached through a transport
+       (processes.xsl), or ORO014 says why not -->
   <xsl:function name="fp:kept-connection" as="xs:boolean">
     <xsl:param name="connection" as="element(pim:connection)"/>
     <xsl:param name="binding" as="element(pim:binding)"/>
     <xsl:param name="targets" as="map(xs:string, xs:boolean)"/>
     <xsl:sequence select="$connection/.. is $binding
-                          and (some $n in $connection/pim:writer/@instance satisfies map:contains($targets, string($n)))
-                          and (some $n in $connection/pim:reader/@instance satisfies map:contains($targets, string($n)))"/>
+                          and exists($connection/pim:writer) and exists($connection/pim:reader)
+                          and (some $n in ($connection/pim:writer | $connection/pim:reader)/@instance satisfies map:contains($targets, string($n)))"/>
   </xsl:function>
 
   <!-- the instances in the binding's start order; those without one (on a
@@ -230,20 +250,37 @@
     </xsl:perform-sort>
   </xsl:function>
 
+  <!-- a kept connection: its policy, its Orocos ends in their processes
+       ($files: process id -> deployment file), their transports -->
   <xsl:function name="fp:oro-connection" as="element(o:connection)">
     <xsl:param name="connection" as="element(pim:connection)"/>
     <xsl:param name="targets" as="map(xs:string, xs:boolean)"/>
+    <xsl:param name="order" as="xs:string*"/>
+    <xsl:param name="files" as="map(xs:string, xs:string)"/>
+    <xsl:param name="package" as="xs:string"/>
     <xsl:variable name="policy" as="element(pim:policy)?" select="$connection/pim:policy"/>
+    <xsl:variable name="datum" as="element(pim:data-port)?"
+        select="($connection/../pim:bound-component/pim:data-port[@port eq $connection/pim:writer[1]/@port])[1]"/>
     <o:connection xmi-id="{$connection/@xmi-id}" name="{$connection/@name}" type="{$policy/@type}"
                   type-code="{index-of(('DATA', 'BUFFER', 'CIRCULAR_BUFFER'), $policy/@type) - 1}"
                   size="{$policy/@size}" lock-policy="{$policy/@lock-policy}"
                   lock-policy-code="{index-of(('UNSYNC', 'LOCKED', 'LOCK_FREE'), $policy/@lock-policy) - 1}"
                   init="{$policy/@init}" pull="{$policy/@pull}" topic="{$policy/@topic}">
-      <xsl:for-each select="$connection/pim:writer[@instance ! map:contains($targets, string(.))]">
-        <o:writer instance="{@instance}" port="{@data-port}" xmi-id="{@port}"/>
+      <xsl:for-each select="$connection/(pim:writer | pim:reader)[@instance ! map:contains($targets, string(.))]">
+        <xsl:element name="o:{local-name()}">
+          <xsl:attribute name="instance" select="@instance"/>
+          <xsl:attribute name="port" select="@data-port"/>
+          <xsl:attribute name="xmi-id" select="@port"/>
+          <xsl:attribute name="process" select="map:get($files, string(key('fp:instance-by-name', @instance, root(.))/@execution-environment))"/>
+        </xsl:element>
       </xsl:for-each>
-      <xsl:for-each select="$connection/pim:reader[@instance ! map:contains($targets, string(.))]">
-        <o:reader instance="{@instance}" port="{@data-port}" xmi-id="{@port}"/>
+      <!-- numbers, booleans and strings have RTT's MQueue, CORBA and ROS transports -->
+      <xsl:for-each select="fp:oro-legs($connection, $targets, $order, $package,
+                                        exists($datum/@primitive) and string($datum/@upper) = ('', '1') and empty($datum/@type))">
+        <xsl:copy>
+          <xsl:sequence select="@*"/>
+          <xsl:for-each select="@process"><xsl:attribute name="process" select="map:get($files, string(.))"/></xsl:for-each>
+        </xsl:copy>
       </xsl:for-each>
     </o:connection>
   </xsl:function>
@@ -397,6 +434,21 @@
     </o:property>
   </xsl:function>
 
+  <!-- a host, with its computational resources and buses (seed 002) -->
+  <xsl:function name="fp:oro-host" as="element(o:host)">
+    <xsl:param name="host" as="element(pim:host)"/>
+    <o:host xmi-id="{$host/@xmi-id}" name="{$host/@name}" hostname="{$host/@hostname}" address="{$host/@address}"
+            real-time="{$host/@real-time}">
+      <xsl:sequence select="$host/(@cores, @memory)"/>
+      <xsl:for-each select="$host/../pim:link[pim:link-end/@host = $host/@xmi-id]">
+        <o:bus name="{@name}" kind="{@kind}"
+               to="{string-join((pim:link-end[not(@host = $host/@xmi-id)]/@node ! key('fp:id', ., root($host))/@name), ', ')}">
+          <xsl:sequence select="@bandwidth"/>
+        </o:bus>
+      </xsl:for-each>
+    </o:host>
+  </xsl:function>
+
   <!-- ========================================================= instance -->
   <xsl:function name="fp:oro-instance" as="element(o:instance)">
     <xsl:param name="instance" as="element(pim:instance)"/>
@@ -404,6 +456,10 @@
     <xsl:param name="binding" as="element(pim:binding)"/>
     <xsl:param name="task-contexts" as="document-node()"/>
     <xsl:param name="targets" as="map(xs:string, xs:boolean)"/>
+    <xsl:param name="process" as="element(o:process)"/>
+    <xsl:param name="thread" as="element(o:thread)?"/>
+    <!-- a CORBA server: the deployment uses CORBA (every instance can be reached) -->
+    <xsl:param name="server" as="xs:boolean"/>
     <xsl:variable name="task-context" as="element(o:task-context)"
         select="key('fp:task-context', $instance/@component, $task-contexts)"/>
     <!-- f:upper-camel of the component's name, made once by fp:task-context -->
@@ -413,13 +469,11 @@
         select="key('fp:connection-by-instance', $instance/@name, root($instance))
                 [fp:kept-connection(., $binding, $targets)]"/>
     <o:instance xmi-id="{$instance/@xmi-id}" name="{$instance/@name}" task-context="{$class}"
-                type-name="{$package}::{$class}">
+                type-name="{$package}::{$class}" process="{$process/@file}" server="{$server}">
       <xsl:for-each select="key('fp:id', $instance/@host, root($instance))">
         <xsl:attribute name="host" select="(key('fp:host', @id, root($instance))/@hostname, @name)[1]"/>
       </xsl:for-each>
-      <o:activity type="Activity" periodic="{number($activity/@period) ne 0}" period="{$activity/@period}"
-                  priority="{$activity/@priority}" scheduler="ORO_SCHED_{$activity/@scheduler}"
-                  cpu-affinity="{$activity/@cpu-affinity}"/>
+      <xsl:sequence select="fp:oro-activity($activity, $thread/@name)"/>
       <xsl:variable name="calls" as="element(pim:call)*" select="key('fp:call-by-caller', $instance/@name, root($instance))"/>
       <xsl:for-each select="distinct-values(($connections[pim:reader/@instance = $instance/@name]
                               [exists(key('fp:id', @interface, root($instance))/pim:operation)]

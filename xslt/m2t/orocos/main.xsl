@@ -43,6 +43,7 @@
   <xsl:include href="orocos-cpp.xsl"/>
   <xsl:include href="orocos-build.xsl"/>
   <xsl:include href="orocos-deploy.xsl"/>
+  <xsl:include href="orocos-processes.xsl"/>
   <xsl:include href="../common/data-types.xsl"/>
   <xsl:include href="orocos-types.xsl"/>
 
@@ -68,8 +69,10 @@
     <xsl:variable name="pkg" as="xs:string" select="@package"/>
     <xsl:variable name="files" as="element(fs:file)*">
       <xsl:for-each select="o:task-context">
-        <xsl:sequence select="fp:file(concat('include/', $pkg, '/', @generated-class, '.hpp'), 'generated', $fp:cpp-xsl, fp:cpp-header(.))"/>
-        <xsl:sequence select="fp:file(concat('src/', @generated-class, '.cpp'), 'generated', $fp:cpp-xsl, fp:cpp-source(.))"/>
+        <xsl:sequence select="fp:file(concat('include/', $pkg, '/', @generated-class, '.hpp'), 'generated', $fp:cpp-xsl,
+                                      if (@kind eq 'thread') then fp:thread-header(.) else fp:cpp-header(.))"/>
+        <xsl:sequence select="fp:file(concat('src/', @generated-class, '.cpp'), 'generated', $fp:cpp-xsl,
+                                      if (@kind eq 'thread') then fp:thread-source(.) else fp:cpp-source(.))"/>
         <xsl:if test="@kind eq 'base'">
           <xsl:sequence select="fp:user-file(concat('include/', $pkg, '/', @class, '.hpp'), ., fp:user-header(.))"/>
           <xsl:sequence select="fp:user-file(concat('src/', @class, '.cpp'), ., fp:user-source(.))"/>
@@ -83,10 +86,23 @@
       <xsl:sequence select="fp:file('src/components.cpp', 'generated', $fp:cpp-xsl, fp:components-cpp(.))"/>
       <xsl:sequence select="fp:file('CMakeLists.txt', 'generated', $fp:build-xsl, fp:cmakelists(.))"/>
       <xsl:sequence select="fp:file('package.xml', 'generated', $fp:build-xsl, fp:package-xml(.))"/>
-      <xsl:sequence select="fp:file(concat('deploy/', @deploy-name, '.xml'), 'generated', $fp:deploy-xsl, fp:deploy-xml(.))"/>
-      <xsl:sequence select="fp:file(concat('deploy/', @deploy-name, '.ops'), 'generated', $fp:deploy-xsl, fp:deploy-ops(.))"/>
-      <xsl:sequence select="fp:file(concat('deploy/', @deploy-name, '.lua'), 'generated', $fp:deploy-xsl, fp:deploy-lua(.))"/>
-      <xsl:sequence select="fp:file(concat('deploy/', @deploy-name, '-check.lua'), 'generated', $fp:deploy-xsl, fp:deploy-check-lua(.))"/>
+      <!-- one deployment per process (orocos-processes.xsl) -->
+      <xsl:variable name="deployment" as="element(o:deployment)" select="."/>
+      <xsl:for-each select="o:process">
+        <xsl:variable name="view" as="element(o:deployment)" select="fp:process-view($deployment, .)"/>
+        <xsl:sequence select="fp:file(concat('deploy/', @file, '.xml'), 'generated', $fp:deploy-xsl, fp:deploy-xml($view))"/>
+        <xsl:sequence select="fp:file(concat('deploy/', @file, '.ops'), 'generated', $fp:deploy-xsl, fp:deploy-ops($view))"/>
+        <xsl:sequence select="fp:file(concat('deploy/', @file, '.lua'), 'generated', $fp:deploy-xsl, fp:deploy-lua($view))"/>
+        <xsl:sequence select="fp:file(concat('deploy/', @file, '-check.lua'), 'generated', $fp:deploy-xsl, fp:deploy-check-lua($view))"/>
+      </xsl:for-each>
+      <!-- several processes: a start script per host -->
+      <xsl:if test="count(o:process) gt 1">
+        <xsl:for-each-group select="o:process" group-by="string(@host)">
+          <xsl:variable name="host" as="element(o:host)?" select="$deployment/o:host[@name eq current-grouping-key()]"/>
+          <xsl:sequence select="fp:file('deploy/' || current-group()[1]/@start-script, 'generated', $fp:deploy-xsl,
+                                        fp:start-script($deployment, $host, current-group()))"/>
+        </xsl:for-each-group>
+      </xsl:if>
       <xsl:for-each select="o:instance[o:property-value]">
         <xsl:sequence select="fp:user-cpf-file(.)"/>
       </xsl:for-each>

@@ -160,6 +160,36 @@
         else string-join($constrained ! (concat(@name, ' after ', string-join(distinct-values(o:start-after/@instance), ', '))), '; ')"/>
   </xsl:function>
 
+  <!-- the packages a deployment imports: the ROS transport (rtt_roscomm,
+       its node, the typekits of the std_msgs primitives) when it streams
+       to ROS topics -->
+  <xsl:function name="fp:deploy-imports" as="xs:string*">
+    <xsl:param name="deployment" as="element(o:deployment)"/>
+    <xsl:sequence select="if ($deployment/o:connection[@transport eq 'ros']) then ('rtt_rosnode', 'rtt_roscomm', 'rtt_std_msgs') else ()"/>
+  </xsl:function>
+
+  <!-- "process 'P' of host 'H': one of N" for the deployment of one of
+       several processes (orocos-processes.xsl) -->
+  <xsl:function name="fp:process-note" as="xs:string?">
+    <xsl:param name="deployment" as="element(o:deployment)"/>
+    <xsl:sequence select="$deployment/@process[xs:integer($deployment/@processes) gt 1]
+        ! ('Process ''' || . || '''' || $deployment/@host ! (' of host ''' || . || '''')
+           || '; ' || $deployment/@start-script || ' starts the processes of the host in sequence.')"/>
+  </xsl:function>
+
+  <!-- what a connection of the deployment is, for a comment -->
+  <xsl:function name="fp:connection-note" as="xs:string">
+    <xsl:param name="connection" as="element(o:connection)"/>
+    <xsl:for-each select="$connection">
+      <xsl:sequence select="
+          if (@transport-code) then 'stream of ' || (o:writer, o:reader)[1]/(@instance || '.' || @port) || ' to '
+               || (if (@transport eq 'ros') then 'ROS topic ' else 'message queue ') || @name-id || ' (connection ' || @name || ')'
+          else 'connection point ' || @name || ': ' || string-join(o:writer ! (@instance || '.' || @port), ', ')
+               || ' -&gt; ' || string-join(o:reader ! (@instance || '.' || @port), ', ')
+               || (if (@proxy) then ' (CORBA: ' || @proxy || ' runs in another process)' else '')"/>
+    </xsl:for-each>
+  </xsl:function>
+
   <!-- ================================================ user's tuned values -->
   <!-- the file name of the user's tuned values of instance $i, in deploy/ -->
   <xsl:function name="fp:user-cpf" as="xs:string">
@@ -205,7 +235,9 @@
         '&lt;?xml version=&quot;1.0&quot; encoding=&quot;UTF-8&quot;?&gt;',
         '&lt;!--',
         fp:indent(2, fp:banner('', $fp:deploy-xsl, concat('the deployment of model ''', fp:xml-text($deployment/@model-name), ''''), false())),
-        concat('  Run: deployer -s ', $deployment/@deploy-name, '.xml (add the check option to load, connect and configure only)'),
+        concat('  Run: ', fp:deployer-command($deployment, $deployment/@deploy-name || '.xml', fp:naming-address($deployment)),
+               ' (add the check option to load, connect and configure only)'),
+        fp:process-note($deployment) ! ('  ' || .),
         if ($deployment/o:instance/o:property-value)
         then '  from this folder: the tuned values (*.user.cpf, yours) are read from the working directory.'
         else (),
@@ -215,16 +247,26 @@
         concat('  &lt;!-- the ', if ($deployment/o:types) then 'typekit and the ' else '', 'component library of package ',
                $deployment/@package, ', found through RTT_COMPONENT_PATH --&gt;'),
         fp:deploy-libraries($deployment) ! concat('  ', fp:simple('LoadLibrary', 'string', .)),
+        fp:deploy-imports($deployment) ! concat('  ', fp:simple('Import', 'string', .)),
         $deployment/o:connection ! (
           '',
-          concat('  &lt;!-- connection point ', @name, ': ', string-join(o:writer ! (concat(@instance, '.', @port)), ', '),
-             ' -&gt; ', string-join(o:reader ! (concat(@instance, '.', @port)), ', '), ' --&gt;'),
+          concat('  &lt;!-- ', fp:connection-note(.), ' --&gt;'),
           concat('  &lt;struct name=&quot;', @name, '&quot; type=&quot;ConnPolicy&quot;&gt;'),
           concat('    ', fp:simple('type', 'long', @type-code), '  &lt;!-- ', @type, ' --&gt;'),
           concat('    ', fp:simple('size', 'long', @size)),
           concat('    ', fp:simple('lock_policy', 'long', @lock-policy-code), '  &lt;!-- ', @lock-policy, ' --&gt;'),
           concat('    ', fp:simple('init', 'boolean', if (xs:boolean(@init)) then '1' else '0')),
           concat('    ', fp:simple('pull', 'boolean', if (xs:boolean(@pull)) then '1' else '0')),
+          if (@transport-code) then (concat('    ', fp:simple('transport', 'long', @transport-code), '  &lt;!-- ', @transport, ' --&gt;'),
+                                     concat('    ', fp:simple('name_id', 'string', @name-id))) else (),
+          '  &lt;/struct&gt;'),
+        $deployment/o:proxy ! (
+          '',
+          concat('  &lt;!-- ', @name, ' runs in another process: a CORBA proxy, found in the naming service --&gt;'),
+          concat('  &lt;struct name=&quot;', @name, '&quot; type=&quot;CORBA&quot;&gt;'),
+          '    &lt;struct name=&quot;Ports&quot; type=&quot;PropertyBag&quot;&gt;',
+          o:port-connection ! (concat('      ', fp:simple(@port, 'string', @connection))),
+          '    &lt;/struct&gt;',
           '  &lt;/struct&gt;'),
         for $note in fp:sequence-note($deployment)
         return ('', concat('  &lt;!-- deployment sequence: ', $note, '. The deployer loads, configures and starts'),
@@ -240,12 +282,19 @@
         '',
         concat('  &lt;struct name=&quot;', $instance/@name, '&quot; type=&quot;', $instance/@type-name, '&quot;&gt;'),
         concat('    &lt;struct name=&quot;Activity&quot; type=&quot;', $activity/@type, '&quot;&gt;'),
-        concat('      ', fp:simple('Period', 'double', fp:period($activity/@period))),
-        fp:priority-note($activity) ! concat('      &lt;!-- ', ., ' --&gt;'),
-        concat('      ', fp:simple('Priority', 'long', fp:priority($activity))),
-        concat('      ', fp:simple('Scheduler', 'string', $activity/@scheduler)),
-        if (xs:integer($activity/@cpu-affinity) ne 0) then concat('      ', fp:simple('CpuAffinity', 'ulong', $activity/@cpu-affinity)) else (),
+        if ($activity/@master) then (
+          concat('      &lt;!-- runs in thread ', $activity/@master, ' (its updateHook executes this one) --&gt;'),
+          concat('      ', fp:simple('Master', 'string', $activity/@master)))
+        else (
+          concat('      ', fp:simple('Period', 'double', fp:period($activity/@period))),
+          fp:priority-note($activity) ! concat('      &lt;!-- ', ., ' --&gt;'),
+          concat('      ', fp:simple('Priority', 'long', fp:priority($activity))),
+          concat('      ', fp:simple('Scheduler', 'string', $activity/@scheduler)),
+          if (xs:integer($activity/@cpu-affinity) ne 0) then concat('      ', fp:simple('CpuAffinity', 'ulong', $activity/@cpu-affinity)) else ()),
         '    &lt;/struct&gt;',
+        if ($instance/@server = 'true') then (
+          concat('    ', fp:simple('Server', 'boolean', '1')),
+          concat('    ', fp:simple('UseNamingService', 'boolean', '1'))) else (),
         concat('    ', fp:simple('AutoConf', 'boolean', '1')),
         concat('    ', fp:simple('AutoStart', 'boolean', '1')),
         if ($instance/o:peer) then (
@@ -271,16 +320,21 @@
     <xsl:variable name="file" as="xs:string" select="concat($deployment/@deploy-name, '.ops')"/>
     <xsl:sequence select="fp:lines((
         fp:banner('// ', $fp:deploy-xsl, concat('the deployment of model ''', $deployment/@model-name, ''''), false()),
-        concat('// Run: deployer -s ', $file, if ($deployment/o:instance/o:property-value)
+        fp:process-note($deployment) ! ('// ' || .),
+        concat('// Run: ', fp:deployer-command($deployment, $file, fp:naming-address($deployment)), if ($deployment/o:instance/o:property-value)
                then ' from this folder (the tuned values, *.user.cpf, are read from the working directory);'
                else ' (from any folder;'),
         '// RTT_COMPONENT_PATH must hold the installed package.',
         '// A failing configure() or start() is logged as an [ ERROR ] line; nothing starts when a configure() failed.',
         'require(&quot;print&quot;)',
         fp:deploy-libraries($deployment) ! concat('loadLibrary(', fp:cpp-string(.), ')'),
+        fp:deploy-imports($deployment) ! concat('import(', fp:cpp-string(.), ')'),
         'var bool configured = true',
         '',
         $deployment/o:instance ! (concat('loadComponent(', fp:cpp-string(@name), ', ', fp:cpp-string(@type-name), ')')),
+        $deployment/o:instance[@server = 'true'] ! concat('server(', fp:cpp-string(@name), ', true)'),
+        if ($deployment/o:proxy) then ('', '// components of other processes: CORBA proxies from the naming service',
+            $deployment/o:proxy ! concat('loadComponent(', fp:cpp-string(@name), ', &quot;CORBA&quot;)')) else (),
         '',
         '// activities (R5): setActivity(component, period [s], priority, scheduler)',
         $deployment/o:instance ! fp:ops-activity(., $file),
@@ -309,6 +363,13 @@
           concat('cp_', @name, '.lock_policy = ', @lock-policy),
           concat('cp_', @name, '.init = ', @init),
           concat('cp_', @name, '.pull = ', @pull),
+          if (@transport-code) then (concat('// transport ', @transport), concat('cp_', @name, '.transport = ', @transport-code),
+                                     concat('cp_', @name, '.name_id = ', fp:cpp-string(@name-id)),
+                                     (o:writer, o:reader) ! (
+                                       concat('if ( !stream(', fp:cpp-string(@instance || '.' || @port), ', cp_', ../@name, ') ) then {'),
+                                       concat('  print.log(Error, ', fp:cpp-string(concat($file, ': stream ', @instance, '.', @port, ' to ', ../@name-id, ' failed')), ')'),
+                                       '  configured = false',
+                                       '}')) else (),
           let $k := ., $e := fp:connection-ends(.)
           return for $j in 1 to count($e) idiv 2
                  return concat('connect(', fp:cpp-string($e[2 * $j - 1]), ', ', fp:cpp-string($e[2 * $j]), ', cp_', $k/@name, ')')),
@@ -334,12 +395,16 @@
     <xsl:variable name="activity" as="element(o:activity)" select="$instance/o:activity"/>
     <xsl:variable name="mask" as="xs:integer" select="xs:integer($activity/@cpu-affinity)"/>
     <xsl:sequence select="
+        if ($activity/@master) then (
+          concat('// ', $instance/@name, ' runs in thread ', $activity/@master),
+          concat('setMasterSlaveActivity(', fp:cpp-string($activity/@master), ', ', fp:cpp-string($instance/@name), ')'))
+        else (
         fp:priority-note($activity) ! concat('// ', .),
         concat('setActivity(', fp:cpp-string($instance/@name), ', ', fp:period($activity/@period), ', ', fp:priority($activity), ', ', $activity/@scheduler, ')'),
         if ($mask eq 0) then () else (
           concat('// ', fp:affinity-note($mask)),
           concat('if ( !', $instance/@name, '.setCpuAffinity(', $mask, ') ) then print.log(Error, ',
-                 fp:cpp-string(concat($file, ': ', $instance/@name, '.setCpuAffinity(', $mask, ') failed')), ')'))"/>
+                 fp:cpp-string(concat($file, ': ', $instance/@name, '.setCpuAffinity(', $mask, ') failed')), ')')))"/>
   </xsl:function>
 
   <!-- ======================================================= Lua -->
@@ -352,13 +417,17 @@
     <xsl:variable name="activity" as="element(o:activity)" select="$instance/o:activity"/>
     <xsl:variable name="mask" as="xs:integer" select="xs:integer($activity/@cpu-affinity)"/>
     <xsl:sequence select="
+        if ($activity/@master) then
+          concat('  check(depl:setMasterSlaveActivity(', fp:cpp-string($activity/@master), ', ', fp:cpp-string($instance/@name),
+                 '), &quot;setMasterSlaveActivity ', $activity/@master, ' ', $instance/@name, '&quot;)  -- runs in thread ', $activity/@master)
+        else (
         fp:priority-note($activity) ! concat('  -- ', .),
         concat('  check(depl:setActivity(', fp:cpp-string($instance/@name), ', ', fp:period($activity/@period), ', ', fp:priority($activity),
                ', rtt.globals.', $activity/@scheduler, '), &quot;setActivity ', $instance/@name, '&quot;)'),
         if ($mask eq 0) then () else (
           concat('  -- ', fp:affinity-note($mask)),
           concat('  check(comps[', fp:cpp-string($instance/@name), ']:setCpuAffinity(', $mask, '), &quot;', $instance/@name,
-                 '.setCpuAffinity(', $mask, ')&quot;)'))"/>
+                 '.setCpuAffinity(', $mask, ')&quot;)')))"/>
   </xsl:function>
 
   <!-- Lua deployment: peers, the model's property values, then the tuned
@@ -448,6 +517,10 @@
           concat('    cp.lock_policy = rtt.globals.', @lock-policy),
           concat('    cp.init = ', @init),
           concat('    cp.pull = ', @pull),
+          if (@transport-code) then (concat('    cp.transport = ', @transport-code, '  -- ', @transport),
+                                     concat('    cp.name_id = ', fp:cpp-string(@name-id)),
+                                     (o:writer, o:reader) ! concat('    check(depl:stream(', fp:cpp-string(@instance || '.' || @port),
+                                         ', cp), &quot;stream ', @instance, '.', @port, ' to ', ../@name-id, '&quot;)')) else (),
           let $e := fp:connection-ends(.)
           return for $j in 1 to count($e) idiv 2
                  return concat('    check(depl:connect(', fp:cpp-string($e[2 * $j - 1]), ', ', fp:cpp-string($e[2 * $j]),
@@ -461,7 +534,10 @@
     <xsl:variable name="file" as="xs:string" select="concat($deployment/@deploy-name, '.lua')"/>
     <xsl:sequence select="fp:lines((
         fp:banner('-- ', $fp:deploy-xsl, concat('the deployment of model ''', $deployment/@model-name, ''''), false()),
-        concat('-- Run: deployer -s ', $file, '   or   rttlua -i ', $file),
+        fp:process-note($deployment) ! ('-- ' || .),
+        if ($deployment/@corba = 'true')
+        then concat('-- Run: ', fp:deployer-command($deployment, $file, fp:naming-address($deployment)))
+        else concat('-- Run: deployer -s ', $file, '   or   rttlua -i ', $file),
         '-- (from any folder; RTT_COMPONENT_PATH must hold the installed package). The components keep',
         concat('-- running until the deployer is stopped (Ctrl-C). ', $deployment/@deploy-name, '-check.lua runs this deployment'),
         '-- for a second, checks it and exits with a verdict. A failed step is logged as an [ ERROR ] line;',
@@ -481,13 +557,18 @@
         $fp:lua-here,
         'local tc = rtt.getTC()',
         'local depl',
-        'if tc:getName() == &quot;Deployer&quot; then depl = tc else depl = tc:getPeer(&quot;Deployer&quot;) end',
+        '-- rttlua: the deployer is a peer of the lua component; deployer -s: it runs this script itself (any name)',
+        'if tc:getName() == &quot;lua&quot; then depl = tc:getPeer(&quot;Deployer&quot;) else depl = tc end',
         concat('local names = {', string-join($deployment/o:instance/@name ! fp:cpp-string(.), ', '), '}'),
         'local comps = {}',
         '',
         fp:deploy-libraries($deployment) ! concat('check(depl:loadLibrary(', fp:cpp-string(.), '), &quot;loadLibrary ', ., '&quot;)'),
+        fp:deploy-imports($deployment) ! concat('check(depl:import(', fp:cpp-string(.), '), &quot;import ', ., '&quot;)'),
         $deployment/o:instance ! (concat('check(depl:loadComponent(', fp:cpp-string(@name), ', ', fp:cpp-string(@type-name),
                           '), &quot;loadComponent ', @name, '&quot;)')),
+        $deployment/o:instance[@server = 'true'] ! concat('check(depl:server(', fp:cpp-string(@name), ', true), &quot;server ', @name, '&quot;)'),
+        $deployment/o:proxy ! concat('check(depl:loadComponent(', fp:cpp-string(@name), ', &quot;CORBA&quot;), &quot;proxy ', @name,
+                                     ' (a component of another process, from the naming service)&quot;)'),
         '',
         'if #failures == 0 then',
         '  for _, n in ipairs(names) do comps[n] = depl:getPeer(n) end',
@@ -552,7 +633,7 @@
       <xsl:sequence select="(
           concat('  check(near(comps[', fp:cpp-string(@name), ']:getPeriod(), ', fp:period(o:activity/@period), '), &quot;',
                  @name, ' period ', fp:period(o:activity/@period), ' (is &quot; .. tostring(comps[', fp:cpp-string(@name), ']:getPeriod()) .. &quot;)&quot;)'),
-          if (xs:integer(o:activity/@cpu-affinity) eq 0) then () else
+          if (xs:integer(o:activity/@cpu-affinity) eq 0 or o:activity/@master) then () else
           concat('  check(comps[', fp:cpp-string(@name), ']:getCpuAffinity() == ', o:activity/@cpu-affinity, ', &quot;',
                  @name, ' ', fp:affinity-note(xs:integer(o:activity/@cpu-affinity)), ' (is &quot; .. tostring(comps[',
                  fp:cpp-string(@name), ']:getCpuAffinity()) .. &quot;)&quot;)'),
