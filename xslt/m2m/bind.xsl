@@ -158,6 +158,8 @@
   <xsl:key name="fp:part-by-type" match="pim:part" use="@type"/>
   <xsl:key name="fp:deployment-by-deployed" match="pim:deployment" use="tokenize(@deployed)"/>
   <xsl:key name="fp:manifestation-by-element" match="pim:manifestation" use="@element"/>
+  <!-- the artifacts that manifest a part (component sets, bind/runtime.xsl) -->
+  <xsl:key name="fp:manifests-part" match="pim:manifestation" use="if (key('fp:id', @element)/self::pim:part) then string(../@id) else ()"/>
   <!-- keys on the temporary trees of fp:binding ($work, $instance-tree, $bound-tree) -->
   <xsl:key name="fp:bc" match="pim:bound-component" use="@component"/>
   <xsl:key name="fp:ip-by-interface" match="fp:ip" use="@interface"/>

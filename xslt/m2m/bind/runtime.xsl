@@ -121,7 +121,7 @@
     <xsl:param name="artifact" as="element(pim:artifact)"/>
     <xsl:sequence select="exists(f:stereotype($artifact, 'ComponentSet'))
         or (empty(f:stereotype($artifact, 'Library'))
-            and exists($artifact/pim:manifestation ! key('fp:id', @element, root($artifact))[self::pim:part]))"/>
+            and exists(key('fp:manifests-part', string($artifact/@id), root($artifact))))"/>
   </xsl:function>
 
   <!-- true when deployment $d deploys component sets only -->

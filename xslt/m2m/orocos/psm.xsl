@@ -109,6 +109,7 @@
   <xsl:key name="fp:instance-by-middleware" match="pim:instance" use="@middleware"/>
   <xsl:key name="fp:connection-by-instance" match="pim:connection" use="(pim:writer | pim:reader)/@instance"/>
   <xsl:key name="fp:host" match="pim:host" use="@xmi-id"/>
+  <xsl:key name="fp:data-port" match="pim:data-port" use="@port"/>
   <!-- on the temporary tree of task contexts -->
   <xsl:key name="fp:task-context" match="o:task-context" use="@xmi-id"/>
 
@@ -260,7 +261,7 @@
     <xsl:param name="package" as="xs:string"/>
     <xsl:variable name="policy" as="element(pim:policy)?" select="$connection/pim:policy"/>
     <xsl:variable name="datum" as="element(pim:data-port)?"
-        select="($connection/../pim:bound-component/pim:data-port[@port eq $connection/pim:writer[1]/@port])[1]"/>
+        select="key('fp:data-port', $connection/pim:writer[1]/@port, root($connection))[1]"/>
     <o:connection xmi-id="{$connection/@xmi-id}" name="{$connection/@name}" type="{$policy/@type}"
                   type-code="{index-of(('DATA', 'BUFFER', 'CIRCULAR_BUFFER'), $policy/@type) - 1}"
                   size="{$policy/@size}" lock-policy="{$policy/@lock-policy}"

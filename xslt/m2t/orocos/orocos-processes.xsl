@@ -27,11 +27,16 @@
     xmlns:fp="urn:robomda:xslt:function:private"
     exclude-result-prefixes="#all">
 
+  <!-- the ends of the connections of a view, by instance (fp:port-connections) -->
+  <xsl:key name="fp:view-end" match="o:connection/o:writer | o:connection/o:reader" use="@instance"/>
+
   <xsl:function name="fp:process-view" as="element(o:deployment)">
     <xsl:param name="deployment" as="element(o:deployment)"/>
     <xsl:param name="process" as="element(o:process)"/>
     <xsl:variable name="p" as="xs:string" select="$process/@file"/>
-    <xsl:variable name="connections" as="element(o:connection)*">
+    <!-- in a document of their own, for key fp:view-end -->
+    <xsl:variable name="view-connections" as="document-node()">
+      <xsl:document>
       <xsl:for-each select="$deployment/o:connection">
         <xsl:if test="o:writer[@process eq $p] and o:reader[@process eq $p]">
           <o:connection>
@@ -58,7 +63,9 @@
           </o:connection>
         </xsl:for-each>
       </xsl:for-each>
+      </xsl:document>
     </xsl:variable>
+    <xsl:variable name="connections" as="element(o:connection)*" select="$view-connections/o:connection"/>
     <xsl:variable name="instances" as="element(o:instance)*" select="$deployment/o:instance[@process eq $p]"/>
     <o:deployment>
       <xsl:sequence select="$deployment/@*"/>
@@ -72,29 +79,27 @@
       <xsl:sequence select="$deployment/(o:library, o:types), $connections"/>
       <xsl:for-each select="distinct-values($connections/@proxy)">
         <o:proxy name="{.}">
-          <xsl:sequence select="fp:port-connections(., $connections)"/>
+          <xsl:sequence select="fp:port-connections(., $view-connections)"/>
         </o:proxy>
       </xsl:for-each>
       <xsl:for-each select="$instances">
         <xsl:copy>
           <xsl:sequence select="@*, o:activity, o:peer[@instance = $instances/@name], o:call"/>
-          <xsl:sequence select="fp:port-connections(@name, $connections)"/>
+          <xsl:sequence select="fp:port-connections(@name, $view-connections)"/>
           <xsl:sequence select="o:property-value, o:start-after"/>
         </xsl:copy>
       </xsl:for-each>
     </o:deployment>
   </xsl:function>
 
-  <!-- o:port-connection of each port of instance $name in $connections -->
+  <!-- o:port-connection of each port of instance $name in the connections
+       of a view, in their order -->
   <xsl:function name="fp:port-connections" as="element(o:port-connection)*">
     <xsl:param name="name" as="xs:string"/>
-    <xsl:param name="connections" as="element(o:connection)*"/>
-    <xsl:for-each select="$connections">
-      <xsl:variable name="connection" as="element(o:connection)" select="."/>
-      <xsl:for-each select="distinct-values((o:writer | o:reader)[@instance eq $name]/@port)">
-        <o:port-connection port="{.}" connection="{$connection/@name}"/>
-      </xsl:for-each>
-    </xsl:for-each>
+    <xsl:param name="connections" as="document-node()"/>
+    <xsl:for-each-group select="key('fp:view-end', $name, $connections)" group-by="../@name || '|' || @port">
+      <o:port-connection port="{@port}" connection="{../@name}"/>
+    </xsl:for-each-group>
   </xsl:function>
 
   <!-- the command that runs deployment file $file of $view; $naming: the
