@@ -17,6 +17,9 @@
 
   Functions
     fp:package-name($requested, $model)  the package name ('' = from model)
+    fp:on-target($instance, $middleware)  whether the target takes the instance
+    fp:kept-connection($connection, $binding, $targets)  a connection with an end in the package
+    fp:psm-host-resources($host)  real-time, cores, memory and buses of a host
     fp:check-class-names($components, $code)
     fp:is-array($typed)          multiplicity upper bound other than 1
     fp:type-label($typed)        'Type' or 'Type[*]', for messages
@@ -71,6 +74,51 @@
   <xsl:key name="fp:instance-of" match="pim:instance" use="@component"/>
   <xsl:key name="fp:bound-component" match="pim:bound-component" use="@component"/>
   <xsl:key name="fp:call-by-caller" match="pim:call" use="pim:caller/@instance"/>
+  <xsl:key name="fp:instance-by-middleware" match="pim:instance" use="@middleware"/>
+
+  <!-- ====================================================== deployment -->
+  <!-- true when $instance goes into the package of the target for
+       $middleware (OROCOS, ROS, ROS2): it is deployed on that middleware,
+       or no instance of the model is (the target then takes them all: the
+       same model runs on another middleware, and the target says so) -->
+  <xsl:function name="fp:on-target" as="xs:boolean">
+    <xsl:param name="instance" as="element(pim:instance)"/>
+    <xsl:param name="middleware" as="xs:string"/>
+    <xsl:sequence select="$instance/@middleware eq $middleware
+                          or empty(key('fp:instance-by-middleware', $middleware, root($instance)))"/>
+  </xsl:function>
+
+  <!-- a connection of $binding that a PSM keeps: one of its ends is an
+       instance of the package ($targets: the names of the instances of
+       $binding that are on the target, see fp:on-target), and it has ends
+       on both sides; an end on another middleware is reached through a
+       transport, or the target says why not -->
+  <xsl:function name="fp:kept-connection" as="xs:boolean">
+    <xsl:param name="connection" as="element(pim:connection)"/>
+    <xsl:param name="binding" as="element(pim:binding)"/>
+    <xsl:param name="targets" as="map(xs:string, xs:boolean)"/>
+    <xsl:sequence select="$connection/.. is $binding
+                          and exists($connection/pim:writer) and exists($connection/pim:reader)
+                          and (some $n in ($connection/pim:writer | $connection/pim:reader)/@instance satisfies map:contains($targets, string($n)))"/>
+  </xsl:function>
+
+  <!-- what a PSM host carries of $host's computational resources (seed
+       002): attributes real-time, cores, memory, and a <bus> per
+       communication path with its kind, bandwidth and the nodes at its
+       other ends -->
+  <xsl:function name="fp:psm-host-resources" as="node()*">
+    <xsl:param name="host" as="element(pim:host)"/>
+    <xsl:attribute name="real-time" select="$host/@real-time"/>
+    <xsl:sequence select="$host/(@cores, @memory)"/>
+    <xsl:for-each select="$host/../pim:link[pim:link-end/@host = $host/@xmi-id]">
+      <xsl:element name="{$fp:psm-prefix}:bus" namespace="{$fp:psm-namespace}">
+        <xsl:attribute name="name" select="@name"/>
+        <xsl:attribute name="kind" select="@kind"/>
+        <xsl:attribute name="to" select="string-join((pim:link-end[not(@host = $host/@xmi-id)]/@node ! key('fp:id', ., root($host))/@name), ', ')"/>
+        <xsl:sequence select="@bandwidth"/>
+      </xsl:element>
+    </xsl:for-each>
+  </xsl:function>
 
   <!-- ========================================================== package -->
   <xsl:function name="fp:package-name" as="xs:string">

@@ -106,7 +106,6 @@
   <xsl:variable name="fp:psm-prefix" as="xs:string" select="'o'"/>
 
   <xsl:key name="fp:type" match="ty:type" use="@primitive"/>
-  <xsl:key name="fp:instance-by-middleware" match="pim:instance" use="@middleware"/>
   <xsl:key name="fp:connection-by-instance" match="pim:connection" use="(pim:writer | pim:reader)/@instance"/>
   <xsl:key name="fp:host" match="pim:host" use="@xmi-id"/>
   <xsl:key name="fp:data-port" match="pim:data-port" use="@port"/>
@@ -138,7 +137,7 @@
   <xsl:template match="pim:model" mode="m:to-psm" as="element(o:deployment)">
     <xsl:variable name="binding" as="element(pim:binding)" select="pim:binding"/>
     <xsl:variable name="package" as="xs:string" select="fp:package-name($package-name, .)"/>
-    <xsl:variable name="instances" as="element(pim:instance)*" select="$binding/pim:instance[fp:on-target(.)]"/>
+    <xsl:variable name="instances" as="element(pim:instance)*" select="$binding/pim:instance[fp:on-target(., 'OROCOS')]"/>
     <xsl:sequence select="fp:oro-check-targets(., $instances)"/>
     <!-- the names and the component ids of $instances, as sets: whether an
          instance / component is in the package is one look-up -->
@@ -216,29 +215,6 @@
       <xsl:sequence select="f:warn('ORO007', string(@xmi-id), 'instance ''' || @name || ''' is deployed on '
           || @middleware || ', not OROCOS: it is not part of the Orocos package')"/>
     </xsl:for-each>
-  </xsl:function>
-
-  <!-- true when $instance goes into the Orocos package: it is deployed on
-       OROCOS, or no instance of the model is (the target then takes them all:
-       the same model runs on another middleware, ORO006 says so) -->
-  <xsl:function name="fp:on-target" as="xs:boolean">
-    <xsl:param name="instance" as="element(pim:instance)"/>
-    <xsl:sequence select="$instance/@middleware eq 'OROCOS'
-                          or empty(key('fp:instance-by-middleware', 'OROCOS', root($instance)))"/>
-  </xsl:function>
-
-  <!-- a connection of $binding that the PSM keeps: one of its ends is an
-       OROCOS instance ($targets: the names of the instances of $binding
-       that are on the target, see fp:on-target), and it has ends on both
-       sides; an end on another middleware is reached through a transport
-       (processes.xsl), or ORO014 says why not -->
-  <xsl:function name="fp:kept-connection" as="xs:boolean">
-    <xsl:param name="connection" as="element(pim:connection)"/>
-    <xsl:param name="binding" as="element(pim:binding)"/>
-    <xsl:param name="targets" as="map(xs:string, xs:boolean)"/>
-    <xsl:sequence select="$connection/.. is $binding
-                          and exists($connection/pim:writer) and exists($connection/pim:reader)
-                          and (some $n in ($connection/pim:writer | $connection/pim:reader)/@instance satisfies map:contains($targets, string($n)))"/>
   </xsl:function>
 
   <!-- the instances in the binding's start order; those without one (on a
@@ -438,15 +414,8 @@
   <!-- a host, with its computational resources and buses (seed 002) -->
   <xsl:function name="fp:oro-host" as="element(o:host)">
     <xsl:param name="host" as="element(pim:host)"/>
-    <o:host xmi-id="{$host/@xmi-id}" name="{$host/@name}" hostname="{$host/@hostname}" address="{$host/@address}"
-            real-time="{$host/@real-time}">
-      <xsl:sequence select="$host/(@cores, @memory)"/>
-      <xsl:for-each select="$host/../pim:link[pim:link-end/@host = $host/@xmi-id]">
-        <o:bus name="{@name}" kind="{@kind}"
-               to="{string-join((pim:link-end[not(@host = $host/@xmi-id)]/@node ! key('fp:id', ., root($host))/@name), ', ')}">
-          <xsl:sequence select="@bandwidth"/>
-        </o:bus>
-      </xsl:for-each>
+    <o:host xmi-id="{$host/@xmi-id}" name="{$host/@name}" hostname="{$host/@hostname}" address="{$host/@address}">
+      <xsl:sequence select="fp:psm-host-resources($host)"/>
     </o:host>
   </xsl:function>
 
