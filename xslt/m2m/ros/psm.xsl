@@ -121,6 +121,9 @@
   <xsl:key name="fp:connection-by-end" match="pim:connection"
       use="(pim:writer | pim:reader) ! (@instance || '/' || @data-port)"/>
   <xsl:key name="fp:node" match="r:node" use="@xmi-id"/>
+  <xsl:key name="fp:instance-by-name" match="pim:binding/pim:instance" use="@name"/>
+  <xsl:key name="fp:process" match="pim:process" use="@xmi-id"/>
+  <xsl:key name="fp:component-set" match="pim:component-set" use="@xmi-id"/>
 
   <xsl:variable name="fp:builtin-types" as="document-node()" select="doc('types.xml')"/>
   <xsl:variable name="fp:user-types" as="document-node()?"
@@ -148,17 +151,27 @@
   <xsl:template match="pim:model" mode="m:to-psm" as="element(r:package)">
     <xsl:variable name="binding" as="element(pim:binding)" select="pim:binding"/>
     <xsl:variable name="package" as="xs:string" select="fp:package-name($package-name, .)"/>
+    <!-- the instances of this package (N7): those deployed on the target's
+         middleware, all when none is -->
+    <xsl:variable name="instances" as="element(pim:instance)*"
+        select="$binding/pim:instance[fp:on-target(., $fp:target-middleware)]"/>
+    <xsl:variable name="targets" as="map(xs:string, xs:boolean)"
+        select="map:merge($instances ! map:entry(string(@name), true()))"/>
     <xsl:variable name="components" as="element(pim:bound-component)*"
-        select="$binding/pim:bound-component[exists(key('fp:instance-of', @component))]"/>
+        select="$binding/pim:bound-component[some $i in key('fp:instance-of', @component) satisfies map:contains($targets, string($i/@name))]"/>
     <xsl:sequence select="fp:check-class-names($components, 'ROS004')"/>
-    <!-- every instance is generated for ROS (ROS100): no call crosses middlewares here -->
-    <xsl:sequence select="fp:check-services($components, 'ROS009'), fp:warn-unbound-services($binding/pim:instance, 'ROS105')"/>
-    <xsl:sequence select="fp:ros-check-targets(.)"/>
+    <xsl:sequence select="fp:check-services($components, 'ROS009'), fp:check-calls($binding/pim:call, $targets, 'ROS009'),
+                          fp:warn-unbound-services($instances, 'ROS105')"/>
+    <xsl:sequence select="fp:ros-check-targets(., $instances)"/>
+    <xsl:variable name="connections" as="element(pim:connection)*"
+        select="$binding/pim:connection[fp:kept-connection(., $binding, $targets)]"/>
+    <xsl:sequence select="f:fail-all(for $c in $connections, $end in fp:foreign-ends($c, $targets)[not(fp:reachable(@middleware))]
+                                     return fp:no-transport($c, $end))"/>
     <!-- fp:host-key of each host the instances name, made once per host -->
     <xsl:variable name="host-keys" as="map(xs:string, xs:string)"
-        select="map:merge(distinct-values($binding/pim:instance ! string(@host))
+        select="map:merge(distinct-values($instances ! string(@host))
                           ! map:entry(., fp:host-key(., root($binding))))"/>
-    <xsl:variable name="hosts" as="element(r:host)*" select="fp:ros-hosts($binding, $host-keys)"/>
+    <xsl:variable name="hosts" as="element(r:host)*" select="fp:ros-hosts($instances, $host-keys)"/>
     <xsl:if test="$ros-version eq '2' and count($hosts) gt 1">
       <xsl:sequence select="f:warn('ROS102', $hosts[2]/@xmi-id, 'ROS 2 launch has no machine tag: one launch file per host ('
           || string-join($hosts/@launch, ', ') || '), each to be started on its host')"/>
@@ -175,8 +188,10 @@
         <xsl:sequence select="fp:ros-types($components, $nodes/r:node/r:port, root(.))"/>
         <xsl:sequence select="$nodes/r:node"/>
         <xsl:sequence select="$hosts"/>
-        <xsl:sequence select="$binding/pim:connection ! fp:topic(.)"/>
-        <xsl:sequence select="$binding/pim:instance ! fp:ros-instance(., $nodes, $host-keys)"/>
+        <xsl:sequence select="fp:ros-processes($instances, $host-keys)"/>
+        <xsl:sequence select="fp:ros-sets($instances, $host-keys)"/>
+        <xsl:sequence select="$connections ! fp:topic(., $targets)"/>
+        <xsl:sequence select="$instances ! fp:ros-instance(., $nodes, $host-keys, $targets)"/>
       </xsl:variable>
       <xsl:call-template name="t:indented-content">
         <xsl:with-param name="children" select="$children"/>
@@ -185,21 +200,28 @@
     </r:package>
   </xsl:template>
 
-  <!-- ROS008 when there is nothing to generate, ROS100 for the instances
-       the platform deploys on another middleware (generated anyway) -->
+  <!-- ROS008 when there is nothing to generate, ROS100 when the package
+       takes every instance although none is deployed on its middleware,
+       ROS110 for each instance it leaves to another middleware's target -->
   <xsl:function name="fp:ros-check-targets" as="empty-sequence()">
     <xsl:param name="model" as="element(pim:model)"/>
+    <xsl:param name="instances" as="element(pim:instance)*"/>
     <xsl:variable name="binding" as="element(pim:binding)" select="$model/pim:binding"/>
-    <xsl:if test="empty($binding/pim:instance)">
+    <xsl:if test="empty($instances)">
       <xsl:sequence select="f:fail('ROS008', $model/@id, 'nothing to generate: model ''' || $model/@name
           || ''' has no component instance (a component with ports or a realizing class)')"/>
     </xsl:if>
-    <xsl:variable name="other" as="element(pim:instance)*" select="$binding/pim:instance[@middleware ne $fp:target-middleware]"/>
+    <xsl:variable name="other" as="element(pim:instance)*" select="$instances[@middleware ne $fp:target-middleware]"/>
     <xsl:if test="exists($other)">
       <xsl:sequence select="f:warn('ROS100', $other[1]/@execution-environment, 'the platform model deploys instance(s) '''
           || string-join($other/@name, ''', ''') || ''' on ' || string-join(distinct-values($other/@middleware), ', ')
           || ', not ' || $fp:target-middleware || ': generated for ROS ' || $ros-version || ' anyway')"/>
     </xsl:if>
+    <xsl:for-each select="$binding/pim:instance except $instances">
+      <xsl:sequence select="f:warn('ROS110', string(@xmi-id), 'instance ''' || @name || ''' is deployed on '
+          || @middleware || ', not ' || $fp:target-middleware || ': it is not part of the ROS ' || $ros-version
+          || ' package (the ' || @middleware || ' target generates it)')"/>
+    </xsl:for-each>
   </xsl:function>
 
   <xsl:function name="fp:host-key" as="xs:string">
@@ -209,36 +231,143 @@
     <xsl:sequence select="if ($pim-host) then f:snake-case($pim-host/@name) else 'local'"/>
   </xsl:function>
 
-  <!-- one r:host per host key (N7) -->
+  <!-- one r:host per host key of the package's instances (N7), with the
+       host's resources and buses -->
   <xsl:function name="fp:ros-hosts" as="element(r:host)*">
-    <xsl:param name="binding" as="element(pim:binding)"/>
+    <xsl:param name="instances" as="element(pim:instance)*"/>
     <xsl:param name="host-keys" as="map(xs:string, xs:string)"/>
-    <xsl:for-each-group select="$binding/pim:instance" group-by="$host-keys(string(@host))">
+    <xsl:for-each-group select="$instances" group-by="$host-keys(string(@host))">
       <xsl:variable name="pim-host" as="element(pim:host)?"
-          select="key('fp:host', string(current-group()[1]/@host), root($binding))"/>
+          select="key('fp:host', string(current-group()[1]/@host), root(current-group()[1]))"/>
       <r:host xmi-id="{($pim-host/@xmi-id, current-group()[1]/@execution-environment)[1]}"
               name="{current-grouping-key()}" machine="{current-grouping-key()}"
               hostname="{($pim-host/@hostname, 'localhost')[1]}" address="{($pim-host/@address, 'localhost')[1]}"
-              launch="{current-grouping-key()}"/>
+              launch="{current-grouping-key()}">
+        <xsl:sequence select="$pim-host ! fp:psm-host-resources(.)"/>
+      </r:host>
     </xsl:for-each-group>
   </xsl:function>
 
-  <!-- a connection as a topic (N6); ROS005 when its name is not a graph name -->
+  <!-- ===================================================== deployment -->
+  <!-- the processes of the package's instances: a ROS 2 component
+       container each (multi-threaded where the model has threads in it);
+       ROS 1 runs one node per component: ROS111 per process of several,
+       ROS112 per thread -->
+  <xsl:function name="fp:ros-processes" as="element(r:process)*">
+    <xsl:param name="instances" as="element(pim:instance)*"/>
+    <xsl:param name="host-keys" as="map(xs:string, xs:string)"/>
+    <xsl:for-each-group select="$instances[@execution-environment]" group-by="@execution-environment">
+      <xsl:variable name="process" as="element(pim:process)?"
+          select="key('fp:process', current-grouping-key(), root(current-group()[1]))"/>
+      <xsl:variable name="members" as="element(pim:instance)*" select="current-group()"/>
+      <xsl:if test="exists($process)">
+        <xsl:variable name="threads" as="element(pim:thread)*" select="$process/pim:thread[@xmi-id = $members/@thread]"/>
+        <xsl:if test="$ros-version eq '1' and count($members) gt 1">
+          <xsl:sequence select="f:warn('ROS111', $process/@xmi-id, 'process ''' || $process/@name || ''' holds '''
+              || string-join($members/@name, ''', ''') || ''': ROS 1 runs each component as a node of its own (no nodelet manager is generated)')"/>
+        </xsl:if>
+        <xsl:for-each select="$threads[$ros-version eq '1']">
+          <xsl:variable name="thread" as="element(pim:thread)" select="."/>
+          <xsl:sequence select="f:warn('ROS112', @xmi-id, 'thread ''' || @name || ''' of process ''' || $process/@name
+              || ''': ROS 1 nodes cannot share a thread; ''' || string-join($members[@thread eq $thread/@xmi-id]/@name, ''', ''')
+              || ''' each run in their own, with the thread''s period')"/>
+        </xsl:for-each>
+        <xsl:if test="$process/@managed = 'true'">
+          <xsl:sequence select="f:warn('ROS113', $process/@xmi-id, 'process ''' || $process/@name || ''' asks for managed'
+              || ' (lifecycle) nodes: the ROS targets do not generate lifecycle nodes yet; '''
+              || string-join($members/@name, ''', ''') || ''' start active, in no managed sequence')"/>
+        </xsl:if>
+        <!-- a process all of whose components are in one set belongs to it -->
+        <xsl:variable name="sets" as="xs:string*" select="distinct-values($members ! string(@set))"/>
+        <r:process xmi-id="{$process/@xmi-id}" name="{$process/@name}" container="{f:snake-case($process/@name)}"
+                   host="{$host-keys(string($members[1]/@host))}" executor="{if (exists($threads)) then 'multi' else 'single'}"
+                   managed="{$process/@managed = 'true'}">
+          <xsl:if test="count($sets) eq 1 and $sets ne ''">
+            <xsl:attribute name="set" select="f:snake-case(key('fp:component-set', $sets, root($process))/@name)"/>
+          </xsl:if>
+          <xsl:if test="exists($threads)">
+            <xsl:attribute name="threads" select="string-join($threads/@name, ' ')"/>
+          </xsl:if>
+        </r:process>
+      </xsl:if>
+    </xsl:for-each-group>
+  </xsl:function>
+
+  <!-- the component sets of the package's instances: a launch file each,
+       on the host the set is deployed on (else its first member's) -->
+  <xsl:function name="fp:ros-sets" as="element(r:set)*">
+    <xsl:param name="instances" as="element(pim:instance)*"/>
+    <xsl:param name="host-keys" as="map(xs:string, xs:string)"/>
+    <xsl:for-each-group select="$instances[@set]" group-by="@set">
+      <xsl:variable name="set" as="element(pim:component-set)"
+          select="key('fp:component-set', current-grouping-key(), root(current-group()[1]))"/>
+      <xsl:variable name="host" as="xs:string"
+          select="(string($set/pim:on[map:contains($host-keys, string(@host))][1]/@host), string(current-group()[1]/@host))[. ne ''][1]"/>
+      <r:set xmi-id="{$set/@xmi-id}" name="{$set/@name}" launch="{f:snake-case($set/@name)}" host="{$host-keys($host)}"/>
+    </xsl:for-each-group>
+  </xsl:function>
+
+  <!-- the ends of $connection on instances another target generates -->
+  <xsl:function name="fp:foreign-ends" as="element(pim:instance)*">
+    <xsl:param name="connection" as="element(pim:connection)"/>
+    <xsl:param name="targets" as="map(xs:string, xs:boolean)"/>
+    <xsl:sequence select="($connection/pim:writer | $connection/pim:reader)[not(map:contains($targets, string(@instance)))]
+        ! key('fp:instance-by-name', string(@instance), root($connection))"/>
+  </xsl:function>
+
+  <!-- whether this target meets an instance on $middleware on a topic:
+       Orocos RTT reaches ROS 1 through rtt_roscomm (the agreed topic) -->
+  <xsl:function name="fp:reachable" as="xs:boolean">
+    <xsl:param name="middleware" as="xs:string"/>
+    <xsl:sequence select="$ros-version eq '1' and $middleware eq 'OROCOS'"/>
+  </xsl:function>
+
+  <!-- ROS011 for $connection, one of whose ends ($end) no transport from
+       this target reaches -->
+  <xsl:function name="fp:no-transport" as="map(*)">
+    <xsl:param name="connection" as="element(pim:connection)"/>
+    <xsl:param name="end" as="element(pim:instance)"/>
+    <xsl:sequence select="map { 'code': 'ROS011', 'id': string($connection/@xmi-id), 'message': 'connection '''
+        || $connection/@name || ''' joins ' || string-join(($connection/pim:writer | $connection/pim:reader)
+           ! ('''' || @instance || ''' (' || key('fp:instance-by-name', string(@instance), root($end))/@middleware || ')'), ' and ')
+        || ': no transport joins ' || $fp:target-middleware || ' and ' || $end/@middleware
+        || (if ($end/@middleware eq 'OROCOS') then ' (Orocos RTT reaches ROS 1 only, through rtt_roscomm)' else '')
+        || '; deploy both ends on one middleware, or exchange the data through a ROS 1 component' }"/>
+  </xsl:function>
+
+  <!-- the topic of a connection (N6): the policy's topic, else the
+       connection's name; from the root (/name) when it crosses to another
+       middleware, whose side names it so too -->
+  <xsl:function name="fp:topic-name" as="xs:string">
+    <xsl:param name="connection" as="element(pim:connection)"/>
+    <xsl:param name="targets" as="map(xs:string, xs:boolean)"/>
+    <xsl:variable name="topic" as="xs:string" select="($connection/pim:policy/@topic[normalize-space(.)], $connection/@name)[1]"/>
+    <xsl:sequence select="if (exists(fp:foreign-ends($connection, $targets)) and not(starts-with($topic, '/')))
+                          then '/' || $topic else $topic"/>
+  </xsl:function>
+
+  <!-- a connection as a topic (N6); ROS005 when its name is not a graph
+       name; an end on another middleware is marked with it -->
   <xsl:function name="fp:topic" as="element(r:topic)">
     <xsl:param name="connection" as="element(pim:connection)"/>
+    <xsl:param name="targets" as="map(xs:string, xs:boolean)"/>
     <xsl:for-each select="$connection">
-      <xsl:variable name="topic" as="xs:string" select="(pim:policy/@topic[normalize-space(.)], @name)[1]"/>
+      <xsl:variable name="topic" as="xs:string" select="fp:topic-name(., $targets)"/>
       <xsl:if test="not(matches($topic, '^[~/]?[A-Za-z][A-Za-z0-9_]*(/[A-Za-z][A-Za-z0-9_]*)*$'))">
         <xsl:sequence select="f:fail('ROS005', (pim:policy/@source-element, @xmi-id)[1],
             'topic ''' || $topic || ''' of connection ''' || @name || ''' is not a valid ROS graph name')"/>
       </xsl:if>
       <r:topic xmi-id="{@xmi-id}" connection="{@name}" name="{$topic}">
         <xsl:sequence select="fp:qos(pim:policy)"/>
-        <xsl:for-each select="pim:writer">
-          <r:writer instance="{@instance}" port="{@data-port}" xmi-id="{@port}"/>
-        </xsl:for-each>
-        <xsl:for-each select="pim:reader">
-          <r:reader instance="{@instance}" port="{@data-port}" xmi-id="{@port}"/>
+        <xsl:for-each select="pim:writer | pim:reader">
+          <xsl:element name="r:{local-name()}">
+            <xsl:attribute name="instance" select="@instance"/>
+            <xsl:attribute name="port" select="@data-port"/>
+            <xsl:attribute name="xmi-id" select="@port"/>
+            <xsl:if test="not(map:contains($targets, string(@instance)))">
+              <xsl:attribute name="middleware" select="key('fp:instance-by-name', string(@instance), root(.))/@middleware"/>
+            </xsl:if>
+          </xsl:element>
         </xsl:for-each>
       </r:topic>
     </xsl:for-each>
@@ -555,6 +684,7 @@
     <xsl:param name="instance" as="element(pim:instance)"/>
     <xsl:param name="nodes" as="document-node()"/>
     <xsl:param name="host-keys" as="map(xs:string, xs:string)"/>
+    <xsl:param name="targets" as="map(xs:string, xs:boolean)"/>
     <xsl:variable name="node" as="element(r:node)" select="key('fp:node', $instance/@component, $nodes)"/>
     <xsl:variable name="activity" as="element(pim:activity)" select="$instance/pim:activity"/>
     <r:instance xmi-id="{$instance/@xmi-id}" name="{$instance/@name}" node="{$node/@class}">
@@ -566,6 +696,17 @@
       <xsl:attribute name="executable" select="$node/@executable"/>
       <xsl:attribute name="host" select="$host-keys(string($instance/@host))"/>
       <xsl:attribute name="middleware" select="$instance/@middleware"/>
+      <!-- its process (a container), component set and thread, by name -->
+      <xsl:for-each select="key('fp:process', string($instance/@execution-environment), root($instance))">
+        <xsl:attribute name="process" select="@name"/>
+        <xsl:for-each select="pim:thread[@xmi-id eq $instance/@thread]">
+          <xsl:attribute name="thread" select="@name"/>
+        </xsl:for-each>
+      </xsl:for-each>
+      <xsl:for-each select="key('fp:component-set', string($instance/@set), root($instance))">
+        <xsl:attribute name="set" select="f:snake-case(@name)"/>
+      </xsl:for-each>
+      <xsl:sequence select="$instance/@start-order"/>
       <xsl:attribute name="period" select="$activity/@period"/>
       <xsl:attribute name="periodic" select="number($activity/@period) ne 0"/>
       <xsl:for-each select="$node/r:port">
@@ -580,7 +721,7 @@
         <xsl:for-each select="$connections[1]">
           <!-- a node in a namespace resolves a relative name in it: the
                topic is named from the root so that all ends meet -->
-          <xsl:variable name="topic" as="xs:string" select="(pim:policy/@topic[normalize-space(.)], @name)[1]"/>
+          <xsl:variable name="topic" as="xs:string" select="fp:topic-name(., $targets)"/>
           <r:remap from="{$port/@topic}"
                    to="{if ($instance/@parent and not(starts-with($topic, '/'))) then '/' || $topic else $topic}"/>
         </xsl:for-each>
@@ -588,7 +729,7 @@
       <!-- operation calls (seed 003): each client to the provider's
            private service, named from the root -->
       <xsl:for-each select="key('fp:call-by-caller', $instance/@name, root($instance))">
-        <xsl:variable name="provider" as="element(pim:instance)" select="../pim:instance[@name eq current()/pim:provider/@instance]"/>
+        <xsl:variable name="provider" as="element(pim:instance)" select="key('fp:instance-by-name', string(pim:provider/@instance), root(.))"/>
         <xsl:variable name="node-path" as="xs:string" select="translate(($provider/@path, $provider/@name)[1], '.', '/')"/>
         <xsl:for-each select="$node/r:service-client[@service eq key('fp:id', current()/@interface, root($instance))/@name]">
           <r:remap from="{@name}" to="/{$node-path}/{@name}"/>

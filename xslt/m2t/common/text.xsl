@@ -22,6 +22,7 @@
                            parent @model-name)
     fp:doc-of($e, $fallback)  the element's doc text, else $fallback
     fp:clean-path($p)      a path with "/" separators, no "." or empty steps
+    fp:host-lines($host)   a host's name, address, resources and buses, a line each
     fp:library-dir($lib)   the CMake default of an atomic-code library's
                            folder: as is when absolute, else relative to
                            the package (${CMAKE_CURRENT_SOURCE_DIR})
@@ -103,5 +104,18 @@
     <xsl:variable name="base" as="xs:string" select="fp:clean-path($model-dir-from-output)"/>
     <xsl:sequence select="if (xs:boolean($lib/@absolute)) then $lib/@path
         else string-join(('${CMAKE_CURRENT_SOURCE_DIR}', $base[. ne ''], fp:clean-path($lib/@path)[. ne '']), '/')"/>
+  </xsl:function>
+
+  <!-- what the model says of a PSM host (seed 002): name, address,
+       resources, and its <bus> children (o:host, r:host) -->
+  <xsl:function name="fp:host-lines" as="xs:string*">
+    <xsl:param name="host" as="element()?"/>
+    <xsl:for-each select="$host">
+      <xsl:sequence select="
+          'Host ''' || @name || ''' (hostname ' || @hostname || ', address ' || @address || '): '
+          || string-join((@cores ! (. || ' cores'), @memory ! (. || ' MiB memory'),
+                          if (@real-time = 'true') then 'real-time kernel' else 'no real-time kernel declared'), ', '),
+          *:bus ! ('bus ''' || @name || ''' (' || string-join((@kind[. ne ''], @bandwidth ! (. || ' Mbit/s')), ', ') || ') to ' || @to)"/>
+    </xsl:for-each>
   </xsl:function>
 </xsl:stylesheet>

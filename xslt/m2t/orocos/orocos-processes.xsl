@@ -201,16 +201,4 @@
         '',
         'wait'))"/>
   </xsl:function>
-
-  <!-- what the model says of host $host: name, address, resources, buses -->
-  <xsl:function name="fp:host-lines" as="xs:string*">
-    <xsl:param name="host" as="element(o:host)?"/>
-    <xsl:for-each select="$host">
-      <xsl:sequence select="
-          'Host ''' || @name || ''' (hostname ' || @hostname || ', address ' || @address || '): '
-          || string-join((@cores ! (. || ' cores'), @memory ! (. || ' MiB memory'),
-                          if (@real-time = 'true') then 'real-time kernel' else 'no real-time kernel declared'), ', '),
-          o:bus ! ('bus ''' || @name || ''' (' || string-join((@kind[. ne ''], @bandwidth ! (. || ' Mbit/s')), ', ') || ') to ' || @to)"/>
-    </xsl:for-each>
-  </xsl:function>
 </xsl:stylesheet>

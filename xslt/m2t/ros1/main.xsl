@@ -8,7 +8,7 @@
              include/<pkg>/<Class>.hpp, src/<Class>.cpp, src/<exe>.cpp  per node
              msg/<Type>.msg          per generated message
              CMakeLists.txt, package.xml
-             launch/<model>.launch, launch/<model>_<host>.launch
+             launch/<model>.launch, launch/<model>_<host>.launch, launch/<model>_<set>.launch
              config/<instance>.yaml
            One fs:file a line, as f:indent (common/indent.xsl) would indent
            the file set, written so directly (t:indented-content: no copy of
@@ -61,6 +61,10 @@
       <xsl:for-each select="r:host">
         <xsl:sequence select="fp:file(concat('launch/', $package/@deploy-name, '_', @launch, '.launch'), 'generated', $fp:launch-xsl,
                                       fp:ros1-host-launch($package, .))"/>
+      </xsl:for-each>
+      <xsl:for-each select="r:set">
+        <xsl:sequence select="fp:file(concat('launch/', $package/@deploy-name, '_', @launch, '.launch'), 'generated', $fp:launch-xsl,
+                                      fp:ros1-set-launch($package, .))"/>
       </xsl:for-each>
       <xsl:for-each select="r:instance">
         <xsl:sequence select="fp:file(concat('config/', @name, '.yaml'), 'generated', $fp:launch-xsl, fp:params-yaml(., $fp:launch-xsl))"/>

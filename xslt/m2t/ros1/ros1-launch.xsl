@@ -7,11 +7,15 @@
   Writes:  strings (file contents), wrapped into fs:file by main.xsl.
   Params:  none.  Errors: none.
 
-  launch/<model>_<host>.launch  one per host (component set): a <machine>
-                                (name = host, address) and one <node> per
-                                instance on it, with machine=, its private
+  launch/<model>_<host>.launch  one per host: a <machine> (name = host,
+                                address; the host's resources and buses in a
+                                comment), one <node> per instance on it in no
+                                component set, with machine=, its private
                                 parameters (<rosparam> of config/<instance>.yaml)
-                                and a <remap> per connected port
+                                and a <remap> per connected port, and an
+                                <include> of each component set on the host
+  launch/<model>_<set>.launch   one per component set (seed 002): the
+                                <machine>s and <node>s of its members
   launch/<model>.launch         includes every host file
   config/<instance>.yaml        the instance's private parameters: update_period
                                 and the component's parameters (defaults)
@@ -23,6 +27,40 @@
     xmlns:fp="urn:robomda:xslt:function:private"
     exclude-result-prefixes="#all">
 
+  <!-- a <node> of instance $i, its lines -->
+  <xsl:function name="fp:ros1-node" as="xs:string+">
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:param name="i" as="element(r:instance)"/>
+    <xsl:sequence select="
+        '',
+        concat('  &lt;node pkg=&quot;', $package/@name, '&quot; type=&quot;', $i/@executable, '&quot; ', fp:node-name-attributes($i, 'ns'),
+             ' machine=&quot;', fp:xml-text($i/@host), '&quot; output=&quot;screen&quot;&gt;'),
+        concat('    &lt;rosparam command=&quot;load&quot; file=&quot;$(find ', $package/@name, ')/config/', $i/@name, '.yaml&quot;/&gt;'),
+        concat('    &lt;rosparam command=&quot;load&quot; file=&quot;$(find ', $package/@name, ')/config/', $i/@name, '.user.yaml&quot;/&gt;'),
+        $i/r:remap ! (concat('    &lt;remap from=&quot;', @from, '&quot; to=&quot;', @to, '&quot;/&gt;')),
+        '  &lt;/node&gt;'"/>
+  </xsl:function>
+
+  <!-- the <machine> of each host, its resources and buses in a comment -->
+  <xsl:function name="fp:ros1-machines" as="xs:string*">
+    <xsl:param name="hosts" as="element(r:host)*"/>
+    <xsl:for-each select="$hosts">
+      <xsl:sequence select="
+          '  &lt;!-- ' || string-join(fp:host-lines(.) ! fp:xml-text(.), '&#10;       ') || ' --&gt;',
+          concat('  &lt;machine name=&quot;', fp:xml-text(@machine), '&quot; address=&quot;', fp:xml-text(@address), '&quot;/&gt;')"/>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- the topics shared with instances of another middleware, which the
+       launch files leave out to their own target: a comment line each -->
+  <xsl:function name="fp:ros-elsewhere" as="xs:string*">
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:for-each select="$package/r:topic[*/@middleware]">
+      <xsl:sequence select="'  Topic ' || @name || ' is shared with ' || string-join(*[@middleware] ! (@instance || ' (' || @middleware || ')'), ', ')
+                            || ', which its own target generates.'"/>
+    </xsl:for-each>
+  </xsl:function>
+
   <xsl:function name="fp:ros1-host-launch" as="xs:string">
     <xsl:param name="package" as="element(r:package)"/>
     <xsl:param name="host" as="element(r:host)"/>
@@ -30,19 +68,32 @@
         '&lt;?xml version=&quot;1.0&quot;?&gt;',
         '&lt;!--',
         fp:indent(2, fp:banner('', $fp:launch-xsl, concat('host ''', fp:xml-text($host/@name), ''' of model ''', fp:xml-text($package/@model-name), ''''), false())),
-        '  Component set of this host (seed 002): roslaunch starts the nodes in no',
-        '  guaranteed order. For a remote machine add env-loader=&quot;...&quot; to &lt;machine&gt;.',
+        '  The nodes of this host (seed 002) and its component sets; roslaunch',
+        '  starts them in no guaranteed order. For a remote machine add',
+        '  env-loader=&quot;...&quot; to &lt;machine&gt;.',
+        fp:ros-elsewhere($package),
         '--&gt;',
         '&lt;launch&gt;',
-        concat('  &lt;machine name=&quot;', fp:xml-text($host/@machine), '&quot; address=&quot;', fp:xml-text($host/@address), '&quot;/&gt;'),
-        for $i in $package/r:instance[@host eq $host/@name] return (
-          '',
-          concat('  &lt;node pkg=&quot;', $package/@name, '&quot; type=&quot;', $i/@executable, '&quot; ', fp:node-name-attributes($i, 'ns'),
-               ' machine=&quot;', fp:xml-text($host/@machine), '&quot; output=&quot;screen&quot;&gt;'),
-          concat('    &lt;rosparam command=&quot;load&quot; file=&quot;$(find ', $package/@name, ')/config/', $i/@name, '.yaml&quot;/&gt;'),
-          concat('    &lt;rosparam command=&quot;load&quot; file=&quot;$(find ', $package/@name, ')/config/', $i/@name, '.user.yaml&quot;/&gt;'),
-          $i/r:remap ! (concat('    &lt;remap from=&quot;', @from, '&quot; to=&quot;', @to, '&quot;/&gt;')),
-          '  &lt;/node&gt;'),
+        fp:ros1-machines($host),
+        for $i in $package/r:instance[@host eq $host/@name][not(@set)] return fp:ros1-node($package, $i),
+        $package/r:set[@host eq $host/@name] ! ('', concat('  &lt;include file=&quot;$(find ', $package/@name, ')/launch/', $package/@deploy-name, '_', @launch, '.launch&quot;/&gt;')),
+        '&lt;/launch&gt;'))"/>
+  </xsl:function>
+
+  <!-- a component set (seed 002): the nodes of its members, on their machines -->
+  <xsl:function name="fp:ros1-set-launch" as="xs:string">
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:param name="set" as="element(r:set)"/>
+    <xsl:variable name="members" as="element(r:instance)*" select="$package/r:instance[@set eq $set/@launch]"/>
+    <xsl:sequence select="fp:lines((
+        '&lt;?xml version=&quot;1.0&quot;?&gt;',
+        '&lt;!--',
+        fp:indent(2, fp:banner('', $fp:launch-xsl, concat('component set ''', fp:xml-text($set/@name), ''' of model ''', fp:xml-text($package/@model-name), ''''), false())),
+        concat('  Deployed on host ''', fp:xml-text($set/@host), ''' (seed 002); included by its launch file, or started alone.'),
+        '--&gt;',
+        '&lt;launch&gt;',
+        fp:ros1-machines($package/r:host[@name = $members/@host]),
+        for $i in $members return fp:ros1-node($package, $i),
         '&lt;/launch&gt;'))"/>
   </xsl:function>
 

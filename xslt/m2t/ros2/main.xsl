@@ -8,7 +8,8 @@
              include/<pkg>/<Class>.hpp, src/<Class>.cpp, src/<exe>.cpp  per node
              msg/<Type>.msg          per generated message
              CMakeLists.txt, package.xml
-             launch/<model>.launch.xml, launch/<model>_<host>.launch.xml
+             launch/<model>.launch.xml, launch/<model>_<host>.launch.xml,
+             launch/<model>_<set>.launch.xml
              config/params.yaml
            One fs:file a line, as f:indent (common/indent.xsl) would indent
            the file set, written so directly (t:indented-content: no copy of
@@ -61,6 +62,10 @@
       <xsl:for-each select="r:host">
         <xsl:sequence select="fp:file(concat('launch/', $package/@deploy-name, '_', @launch, '.launch.xml'), 'generated', $fp:launch-xsl,
                                       fp:ros2-host-launch($package, .))"/>
+      </xsl:for-each>
+      <xsl:for-each select="r:set">
+        <xsl:sequence select="fp:file(concat('launch/', $package/@deploy-name, '_', @launch, '.launch.xml'), 'generated', $fp:launch-xsl,
+                                      fp:ros2-set-launch($package, .))"/>
       </xsl:for-each>
       <xsl:sequence select="fp:file('config/params.yaml', 'generated', $fp:launch-xsl, fp:ros2-params-yaml(.))"/>
       <xsl:sequence select="fp:file('config/params.user.yaml', 'user', $fp:launch-xsl,

@@ -8,8 +8,16 @@
 
   launch/<model>_<host>.launch.xml  one per host (ROS 2 launch has no
         machine tag: start each on its host; the PSM stage warns, ROS102):
-        one <node pkg exec name> per instance with <param from=".yaml"/>
-        and a <remap> per connected port
+        a <node_container> per process of the model (component_container,
+        component_container_mt where the model has threads in it) whose
+        <composable_node>s, in the model's start order, are its instances
+        (intra-process communication stays off: Humble refuses it with the
+        transient_local durability a latched connection asks for), each with <param from=".yaml"/>
+        and a <remap> per connected port; a <node> per instance in no
+        process; an <include> per component set on the host
+  launch/<model>_<set>.launch.xml  one per component set (seed 002): the
+        containers of the processes wholly in it, and its members in other
+        processes loaded into theirs (<load_composable_node target>)
   launch/<model>.launch.xml  includes every host file (one-machine runs)
   config/params.yaml  "<instance>: ros__parameters: ..." for every instance
   Checked against schemas/ros2-launch/1/launch.xsd (launch_ros attributes).
@@ -21,23 +29,118 @@
     xmlns:fp="urn:robomda:xslt:function:private"
     exclude-result-prefixes="#all">
 
+  <!-- the settings of a node or composable node of instance $i: its
+       parameter files and remaps, indented by $n -->
+  <xsl:function name="fp:ros2-node-settings" as="xs:string*">
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:param name="i" as="element(r:instance)"/>
+    <xsl:param name="n" as="xs:integer"/>
+    <xsl:sequence select="fp:indent($n, (
+        concat('&lt;param from=&quot;$(find-pkg-share ', $package/@name, ')/config/params.yaml&quot;/&gt;'),
+        concat('&lt;param from=&quot;$(find-pkg-share ', $package/@name, ')/config/params.user.yaml&quot;/&gt;'),
+        $i/r:remap ! (concat('&lt;remap from=&quot;', @from, '&quot; to=&quot;', @to, '&quot;/&gt;'))))"/>
+  </xsl:function>
+
+  <!-- instance $i as a node of its own -->
+  <xsl:function name="fp:ros2-node" as="xs:string+">
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:param name="i" as="element(r:instance)"/>
+    <xsl:sequence select="
+        concat('  &lt;node pkg=&quot;', $package/@name, '&quot; exec=&quot;', $i/@executable, '&quot; ', fp:node-name-attributes($i, 'namespace'), ' output=&quot;screen&quot;&gt;'),
+        fp:ros2-node-settings($package, $i, 4),
+        '  &lt;/node&gt;'"/>
+  </xsl:function>
+
+  <!-- instance $i as a composable node in a container, indented by $n -->
+  <xsl:function name="fp:ros2-composable" as="xs:string+">
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:param name="i" as="element(r:instance)"/>
+    <xsl:param name="n" as="xs:integer"/>
+    <xsl:variable name="node" as="element(r:node)" select="$package/r:node[@class eq $i/@node]"/>
+    <xsl:sequence select="fp:indent($n, (
+        concat('&lt;composable_node pkg=&quot;', $package/@name, '&quot; plugin=&quot;', $node/@type-name, '&quot; ', fp:node-name-attributes($i, 'namespace'), '&gt;'),
+        fp:ros2-node-settings($package, $i, 2),
+        '&lt;/composable_node&gt;'))"/>
+  </xsl:function>
+
+  <!-- a process as a component container holding $members (in start order) -->
+  <xsl:function name="fp:ros2-container" as="xs:string+">
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:param name="process" as="element(r:process)"/>
+    <xsl:param name="members" as="element(r:instance)*"/>
+    <xsl:sequence select="
+        concat('  &lt;!-- process ''', fp:xml-text($process/@name), '''',
+               $process/@threads ! concat(', threads ', fp:xml-text(.), ': a multi-threaded container'), ' --&gt;'),
+        concat('  &lt;node_container pkg=&quot;rclcpp_components&quot; exec=&quot;component_container',
+               if ($process/@executor eq 'multi') then '_mt' else '', '&quot; name=&quot;', $process/@container,
+               '&quot; namespace=&quot;/&quot; output=&quot;screen&quot;', if (empty($members)) then '/&gt;' else '&gt;'),
+        if (empty($members)) then () else (
+          fp:in-start-order($members) ! fp:ros2-composable($package, ., 4),
+          '  &lt;/node_container&gt;')"/>
+  </xsl:function>
+
+  <!-- $members loaded into the running container of $process -->
+  <xsl:function name="fp:ros2-load" as="xs:string+">
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:param name="process" as="element(r:process)"/>
+    <xsl:param name="members" as="element(r:instance)+"/>
+    <xsl:sequence select="
+        concat('  &lt;load_composable_node target=&quot;/', $process/@container, '&quot;&gt;'),
+        fp:in-start-order($members) ! fp:ros2-composable($package, ., 4),
+        '  &lt;/load_composable_node&gt;'"/>
+  </xsl:function>
+
+  <!-- the instances in the model's start order (the binding's), those
+       without one last -->
+  <xsl:function name="fp:in-start-order" as="element(r:instance)*">
+    <xsl:param name="instances" as="element(r:instance)*"/>
+    <xsl:perform-sort select="$instances">
+      <xsl:sort select="empty(@start-order)"/>
+      <xsl:sort select="xs:integer((@start-order, 0)[1])"/>
+    </xsl:perform-sort>
+  </xsl:function>
+
   <xsl:function name="fp:ros2-host-launch" as="xs:string">
     <xsl:param name="package" as="element(r:package)"/>
     <xsl:param name="host" as="element(r:host)"/>
+    <xsl:variable name="here" as="element(r:instance)*" select="$package/r:instance[@host eq $host/@name]"/>
     <xsl:sequence select="fp:lines((
         '&lt;?xml version=&quot;1.0&quot;?&gt;',
         '&lt;!--',
         fp:indent(2, fp:banner('', $fp:launch-xsl, concat('host ''', fp:xml-text($host/@name), ''' (', fp:xml-text($host/@address),
              ') of model ''', fp:xml-text($package/@model-name), ''''), false())),
-        '  ROS 2 launch has no machine tag: start this file on that host.',
+        '  ROS 2 launch has no machine tag: start this file on that host. Each',
+        '  process of the model is a component container; its component sets',
+        '  are included.',
+        fp:indent(2, fp:host-lines($host) ! fp:xml-text(.)),
         '--&gt;',
         '&lt;launch&gt;',
-        for $i in $package/r:instance[@host eq $host/@name] return (
-          concat('  &lt;node pkg=&quot;', $package/@name, '&quot; exec=&quot;', $i/@executable, '&quot; ', fp:node-name-attributes($i, 'namespace'), ' output=&quot;screen&quot;&gt;'),
-          concat('    &lt;param from=&quot;$(find-pkg-share ', $package/@name, ')/config/params.yaml&quot;/&gt;'),
-          concat('    &lt;param from=&quot;$(find-pkg-share ', $package/@name, ')/config/params.user.yaml&quot;/&gt;'),
-          $i/r:remap ! (concat('    &lt;remap from=&quot;', @from, '&quot; to=&quot;', @to, '&quot;/&gt;')),
-          '  &lt;/node&gt;'),
+        for $p in $package/r:process[@host eq $host/@name][not(@set)]
+        return fp:ros2-container($package, $p, $here[@process eq $p/@name][not(@set)]),
+        for $i in $here[not(@process)][not(@set)] return fp:ros2-node($package, $i),
+        $package/r:set[@host eq $host/@name] ! concat('  &lt;include file=&quot;$(find-pkg-share ', $package/@name, ')/launch/',
+                                                       $package/@deploy-name, '_', @launch, '.launch.xml&quot;/&gt;'),
+        '&lt;/launch&gt;'))"/>
+  </xsl:function>
+
+  <!-- a component set (seed 002): the containers of the processes wholly
+       in it; its members in other processes loaded into theirs -->
+  <xsl:function name="fp:ros2-set-launch" as="xs:string">
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:param name="set" as="element(r:set)"/>
+    <xsl:variable name="members" as="element(r:instance)*" select="$package/r:instance[@set eq $set/@launch]"/>
+    <xsl:sequence select="fp:lines((
+        '&lt;?xml version=&quot;1.0&quot;?&gt;',
+        '&lt;!--',
+        fp:indent(2, fp:banner('', $fp:launch-xsl, concat('component set ''', fp:xml-text($set/@name), ''' of model ''',
+             fp:xml-text($package/@model-name), ''''), false())),
+        concat('  Deployed on host ''', fp:xml-text($set/@host), ''' (seed 002): included by its launch file.'),
+        '--&gt;',
+        '&lt;launch&gt;',
+        for $p in $package/r:process[@set eq $set/@launch] return fp:ros2-container($package, $p, $members[@process eq $p/@name]),
+        for $p in $package/r:process[not(@set)][@name = $members/@process]
+        return fp:ros2-load($package, $p, $members[@process eq $p/@name]),
+        for $i in $members[not(@process)] return fp:ros2-node($package, $i),
         '&lt;/launch&gt;'))"/>
   </xsl:function>
 
