@@ -191,6 +191,19 @@ def test_ros2_launch_xml_against_launch_ros_rules(case: Path) -> None:
 
 
 # ------------------------------------------------------ ROS 1: real tools
+def _all_ros_model(tmp: Path) -> Path:
+    """The distributed fixture (two hosts, three Orocos processes and a ROS one) with every
+    process on ROS 1, in TMP/cases/distributed beside its library (../headlamp/atomic)."""
+    cases = tmp / "cases"
+    (cases / "distributed").mkdir(parents=True)
+    (cases / "headlamp").symlink_to(ROOT / "fixtures" / "cases" / "headlamp")
+    text = (ROOT / "fixtures" / "cases" / "distributed" / "model.xmi").read_text(encoding="utf-8")
+    assert text.count(' version="2.10"') == 3, "the three Orocos processes of the fixture"
+    model = cases / "distributed" / "model.xmi"
+    model.write_text(text.replace(' version="2.10"', ' kind="ROS"'), encoding="utf-8")
+    return model
+
+
 @pytest.fixture(scope="module")
 def catkin_ws(tmp_path_factory) -> Path:
     """Every case's ROS 1 package in one catkin workspace, built once."""
@@ -198,6 +211,9 @@ def catkin_ws(tmp_path_factory) -> Path:
     ws = tmp_path_factory.mktemp("catkin_ws")
     for case in CASES:
         generate(case / "model.xmi", ws / "src" / case.name, "ros1")
+    # the distributed fixture with every process on ROS 1: two machines, a set, a thread
+    generate(_all_ros_model(tmp_path_factory.mktemp("all_ros")), ws / "src" / "distributed_ros", "ros1",
+             package_name="distributed_ros")
     # -C: catkin_make takes its workspace from $PWD, not from the cwd
     proc = subprocess.run(["catkin_make", "-C", str(ws), "-DPYTHON_EXECUTABLE=" + SYS_PY], cwd=ws,
                           env=_ros_env(PWD=str(ws)),
@@ -395,6 +411,53 @@ def test_ros1_tuned_parameters_in_the_user_file_win(tmp_path: Path) -> None:
     assert "kp: 42.5" in user.read_text() and "config/PIDController.user.yaml" in done.report.kept_user
 
 
+def _assert_topics_live(env: dict, connections: dict, node) -> None:
+    """Each topic of CONNECTIONS (topic -> pim:connection): its writer (NODE(instance name) is
+    its node) publishes, its readers subscribe, and data flows."""
+    pim = "{urn:robomda:pim:1}"
+    for topic, connection in sorted(connections.items()):
+        info = subprocess.run(["rostopic", "info", topic], env=env, capture_output=True, text=True,
+                              timeout=20).stdout
+        publishers = info.split("Subscribers:")[0]
+        subscribers = info.split("Subscribers:")[1] if "Subscribers:" in info else ""
+        assert f"* {node(connection.find(f'{pim}writer').get('instance'))} " in publishers, info
+        for reader in connection.findall(f"{pim}reader"):
+            assert f"* {node(reader.get('instance'))} " in subscribers, (topic, info)
+        echo = subprocess.run(["rostopic", "echo", "-n", "2", topic], env=env, capture_output=True,
+                              text=True, timeout=30)
+        assert echo.stdout.count("data:") == 2, (topic, echo.stdout + echo.stderr)
+
+
+def test_ros1_distributed_runs_on_two_machines_with_every_connection_live(catkin_ws: Path) -> None:
+    """Seed 002's deployment on ROS 1: the two hosts are two <machine>s on the loopback address,
+    the component set has a launch file of its own that its host's includes, and every connection
+    of the model, within a host and across the two, is a live topic."""
+    pkg = catkin_ws / "src" / "distributed_ros"
+    launch = pkg / "launch" / "distributed.launch"
+    assert (pkg / "launch" / "distributed_vision_set.launch").is_file()
+    env = _ros_env(ROS_PACKAGE_PATH=str(catkin_ws / "src") + ":/usr/share",
+                   CMAKE_PREFIX_PATH=str(catkin_ws / "devel") + ":/usr")
+    script = ("import sys, roslaunch.config, roslaunch.xmlloader\n"
+              "c = roslaunch.config.ROSLaunchConfig()\n"
+              "roslaunch.xmlloader.XmlLoader().load(sys.argv[1], c, verbose=False)\n"
+              "c.assign_machines()\n"
+              "print(sorted((m.name, m.address) for m in c.machines.values() if m.name))\n"
+              "print(sorted((n.name, n.machine_name) for n in c.nodes))\n")
+    proc = subprocess.run([SYS_PY, "-c", script, str(launch)], env=env, capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+    machines, nodes = proc.stdout.splitlines()
+    assert machines == str([("control_pc", "127.0.0.1"), ("vision_pc", "127.0.0.1")])
+    assert nodes == str(sorted([("arm", "control_pc"), ("camera", "vision_pc"), ("controller", "control_pc"),
+                                ("forceSensor", "control_pc"), ("vision", "vision_pc")]))
+    case = ROOT / "fixtures" / "cases" / "distributed"
+    binding = etree.fromstring(_run(case, "orocos").stages["bind"].encode()).find("{urn:robomda:pim:1}binding")
+    connections = {"/" + c.get("name"): c for c in binding.findall("{urn:robomda:pim:1}connection")}
+    assert len(connections) == 6
+    with _roscore_running(catkin_ws, launch) as ros:
+        _wait_for(ros, {"/arm", "/camera", "/controller", "/forceSensor", "/vision"}, set(connections))
+        _assert_topics_live(ros, connections, lambda name: "/" + name)
+
+
 @pytest.mark.parametrize("app", ["calligraphy", "learning"])
 def test_ros1_composites_run_under_roscore_with_every_connection_live(app: str, catkin_ws: Path) -> None:
     """Seed 003's applications: each node in the namespace of its composite parts, and every
@@ -413,17 +476,7 @@ def test_ros1_composites_run_under_roscore_with_every_connection_live(app: str, 
     connections = {"/" + c.get("name"): c for c in binding.findall(f"{pim}connection")}
     with _roscore_running(catkin_ws, catkin_ws / "src" / app / "launch" / f"{app}.launch") as env:
         _wait_for(env, want_nodes, set(connections))
-        for topic, connection in sorted(connections.items()):
-            info = subprocess.run(["rostopic", "info", topic], env=env, capture_output=True, text=True,
-                                  timeout=20).stdout
-            publishers = info.split("Subscribers:")[0]
-            subscribers = info.split("Subscribers:")[1] if "Subscribers:" in info else ""
-            assert f"* {node(connection.find(f'{pim}writer').get('instance'))} " in publishers, info
-            for reader in connection.findall(f"{pim}reader"):
-                assert f"* {node(reader.get('instance'))} " in subscribers, (topic, info)
-            echo = subprocess.run(["rostopic", "echo", "-n", "2", topic], env=env, capture_output=True,
-                                  text=True, timeout=30)
-            assert echo.stdout.count("data:") == 2, (topic, echo.stdout + echo.stderr)
+        _assert_topics_live(env, connections, node)
         # every operation call: the provider's service is up where the caller's client is
         # remapped to, and answers
         calls = binding.findall(f"{pim}call")

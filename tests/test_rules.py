@@ -99,6 +99,10 @@ CASES_BY_RULE: dict[str, tuple[Path, str | None, Path, list[tuple[str, str]]]] =
                                           '<r:instance xmi-id="_pid075k" name="TrajectoryGenerator"')]),
     "ROS204": (ROS_RULES, None, PID_ROS, [(r'(<r:instance xmi-id="_pid071k"[^>]*?)periodic="true"',
                                           r'\1periodic="false"')]),
+    "ROS205": (ROS_RULES, None, PID_ROS, [(r'(<r:process [^>]*/>)',
+                                          r'\1<r:set xmi-id="_s1" name="controlPC" launch="control_pc" host="control_pc"/>')]),
+    "ROS206": (ROS_RULES, None, PID_ROS, [('ros-version="1"', 'ros-version="2"'),
+                                          ('container="ros"', 'container="PIDController"')]),
 }
 # rules that already fire on the good base (the Meka PSM asks RTT for priorities under OTHER)
 _ON_BASE = {"ORO102", "ORO103"}

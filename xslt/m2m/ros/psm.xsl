@@ -42,9 +42,18 @@
       latch / durability transient_local when init is true, reliability
       reliable, history keep_last(depth). A port's QoS is taken from the
       first connection it is in (ROS sets QoS per publisher, not per link).
-  N7  deployment: one package per model; hosts -> ROS 1 machines, one launch
-      file per host (component set) plus a top-level one; ROS 2: one launch
-      file per host (warning ROS102: no machine tag).
+  N7  deployment (seed 002, docs/deployment.md): one package per model with
+      the instances deployed on the target's middleware (ROS / ROS2), all
+      when none is (ROS100); each other instance is its own target's
+      (ROS110). Hosts -> ROS 1 machines, one launch file per host plus a
+      top-level one; ROS 2: one launch file per host (warning ROS102: no
+      machine tag). Processes -> r:process: ROS 2 component containers
+      (multi-threaded where the model has threads in one); ROS 1 runs one
+      node per component (ROS111, ROS112). Component sets -> r:set, a
+      launch file each, included by its host's. A connection to an
+      instance on Orocos is a ROS 1 topic named from the root (/topic, as
+      the Orocos target's rtt_roscomm stream names it); any other
+      connection across middlewares is ROS011.
 
   Errors (urn:robomda:error, f:fail):
     ROS001  a port, service or Configurable parameter has a type the type
@@ -58,12 +67,19 @@
             targets do not generate a user base class yet)
     ROS008  nothing to generate: the model has no component instance
     ROS010  a data type that contains itself (types.xsl)
+    ROS011  a connection between an instance of the package and one on a
+            middleware no transport reaches from it (names both ends)
     ROS009  an operation call ROS cannot make (an operation of a provided
             or required interface that fits no std_srvs service, two ports
             of one interface and role, two required operations of one name)
   Warnings (f:warn):
-    ROS100  instances deployed on an execution environment of another
-            middleware are generated for ROS anyway (once per model)
+    ROS100  no instance is deployed on the target's middleware: the
+            instances of the others are generated for ROS anyway (once)
+    ROS110  an instance deployed on another middleware is left to its target
+    ROS111  ROS 1: a process of several components runs them as nodes of
+            their own
+    ROS112  ROS 1: the components of a thread each run in their own
+    ROS113  a managed (lifecycle) process: lifecycle nodes are not generated
     ROS101  operations with no fitting std_srvs service are left out (one
             warning per component type, naming them)
     ROS102  ROS 2 launch has no machine tag: one launch file per host
