@@ -1,0 +1,151 @@
+"""Seed 002's runtime architecture on the ROS targets (docs/deployment.md, docs/ros.md).
+
+The distributed fixture mixes Orocos and ROS 1: each target generates only
+the instances deployed on its middleware, and the one connection between
+them is a topic both sides name alike. Variants of the fixture (every
+process on ROS 1, on ROS 2, one end on ROS 2) check containers, component
+sets, threads and the transports no target can provide. No ROS tool is
+needed here: tests/test_ros.py runs the ROS 1 variant under roscore.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+import xmlschema
+from lxml import etree
+
+from robomda.api import generate
+from robomda.diagnostics import RobomdaError
+
+ROOT = Path(__file__).resolve().parent.parent
+CASE = ROOT / "fixtures" / "cases" / "distributed"
+FS = "{urn:robomda:fileset:1}"
+R = "{urn:robomda:psm-ros:1}"
+CAMERA_DEPLOYMENT = ('<deployment xmi:type="uml:Deployment" xmi:id="_7r_06xjuD8PlcTvtlRdcOv" '
+                     'client="_dstRttCameraEEw2X3y4Z5a" supplier="_ZFkQzwZWOKVfkNutf1AcmA" '
+                     'deployedArtifact="_ZFkQzwZWOKVfkNutf1AcmA"/>')
+VISION_DEPLOYMENT = ('<deployment xmi:type="uml:Deployment" xmi:id="_nb0fXVyf8f6tTvodAYVVsB" '
+                     'client="_dstRttVisionEEb6C7d8E9f" supplier="_1co18VX-WHKsg9uJFeno6f" '
+                     'deployedArtifact="_1co18VX-WHKsg9uJFeno6f"/>')
+ORO_PROCESSES = 3  # rttControl, rttCamera, rttVision: ' version="2.10"' on their Middleware stereotype
+
+
+def _files(done) -> dict[str, str]:
+    return {n.get("path"): n.text or "" for n in etree.fromstring(done.stages["text"].encode()).iter(f"{FS}file")}
+
+
+def _variant(tmp: Path, *edits: tuple[str, str, int]) -> Path:
+    """The fixture edited (old, new, expected count) in TMP/cases/distributed, beside its library."""
+    cases = tmp / "cases"
+    (cases / "distributed").mkdir(parents=True)
+    (cases / "headlamp").symlink_to(ROOT / "fixtures" / "cases" / "headlamp")
+    text = (CASE / "model.xmi").read_text(encoding="utf-8")
+    for old, new, count in edits:
+        assert text.count(old) == count, old
+        text = text.replace(old, new)
+    model = cases / "distributed" / "model.xmi"
+    model.write_text(text, encoding="utf-8")
+    return model
+
+
+def test_the_mixed_model_generates_each_component_once_with_one_agreed_topic() -> None:
+    ros = generate(CASE / "model.xmi", None, "ros1", write=False)
+    oro = generate(CASE / "model.xmi", None, "orocos", write=False)
+    psm = etree.fromstring(ros.stages["psm"].encode())
+    assert [i.get("name") for i in psm.iter(f"{R}instance")] == ["forceSensor"]
+    assert [n.get("class") for n in psm.iter(f"{R}node")] == ["WristForceSensor"]
+    left = sorted(d.message.split("'")[1] for d in ros.warnings if d.code == "ROS110")
+    assert left == ["arm", "camera", "controller", "vision"]
+    ros_files, oro_files = _files(ros), _files(oro)
+    assert not any("ImpedanceController" in p or "IndustrialArm" in p for p in ros_files)
+    assert not any("WristForceSensor" in p for p in oro_files)
+    launch = ros_files["launch/distributed_control_pc.launch"]
+    assert '<remap from="wrench" to="/wrenchConn"/>' in launch
+    # the Orocos side streams the same topic into the controller (rtt_roscomm, transport 3)
+    ops = oro_files["deploy/control_pc_rtt_control.ops"]
+    assert 'transport = 3' in ops and 'name_id = "/wrenchConn"' in ops
+
+
+def test_every_process_on_ros2_is_a_container_and_the_set_a_launch_file(tmp_path: Path) -> None:
+    model = _variant(tmp_path, (' version="2.10"', ' kind="ROS2"', ORO_PROCESSES), (' kind="ROS"', ' kind="ROS2"', 1))
+    done = generate(model, None, "ros2", write=False)
+    files = _files(done)
+    schema = xmlschema.XMLSchema(str(ROOT / "schemas/ros2-launch/1/launch.xsd"))
+    launches = {p: etree.fromstring(t.encode()) for p, t in files.items() if p.endswith(".launch.xml")}
+    for path, text in files.items():
+        if path.endswith(".launch.xml"):
+            schema.validate(text)
+    control = launches["launch/distributed_control_pc.launch.xml"]
+    containers = {c.get("name"): c for c in control.iter("node_container")}
+    assert set(containers) == {"rtt_control", "ros_sensor"}
+    # the thread: a multi-threaded container; its members load in the modelled start order
+    assert containers["rtt_control"].get("exec") == "component_container_mt"
+    assert containers["ros_sensor"].get("exec") == "component_container"
+    assert [n.get("name") for n in containers["rtt_control"].iter("composable_node")] == ["arm", "controller"]
+    assert [n.get("plugin") for n in containers["ros_sensor"].iter("composable_node")] == ["distributed::WristForceSensor"]
+    # the component set: its own launch file, holding the two processes wholly in it, included by its host's
+    vision = launches["launch/distributed_vision_pc.launch.xml"]
+    assert [i.get("file") for i in vision.iter("include")] == [
+        "$(find-pkg-share distributed)/launch/distributed_vision_set.launch.xml"]
+    in_set = launches["launch/distributed_vision_set.launch.xml"]
+    assert {c.get("name"): [n.get("name") for n in c.iter("composable_node")] for c in in_set.iter("node_container")} \
+        == {"rtt_camera": ["camera"], "rtt_vision": ["vision"]}
+    # every instance exactly once over all host files (the top file includes them all)
+    placed = [n.get("name") for p, x in launches.items() if p != "launch/distributed.launch.xml"
+              for n in x.iter("composable_node")]
+    assert sorted(placed) == ["arm", "camera", "controller", "forceSensor", "vision"]
+    assert not any(d.code.startswith("ROS11") for d in done.warnings)
+
+
+def test_a_set_member_in_a_shared_process_is_loaded_into_its_container(tmp_path: Path) -> None:
+    """camera leaves the set and joins vision's process: the host file starts that container with
+    camera in it, and the set's file loads vision into the running container."""
+    camera_manifestation = ('<manifestation xmi:type="uml:Manifestation" xmi:id="_9ep2JQCW_S88pcgnoowbe2" '
+                            'client="_dstVisionSetArtG0h1I2j3" supplier="_ZFkQzwZWOKVfkNutf1AcmA" '
+                            'utilizedElement="_ZFkQzwZWOKVfkNutf1AcmA"/>')
+    model = _variant(tmp_path, (' version="2.10"', ' kind="ROS2"', ORO_PROCESSES), (' kind="ROS"', ' kind="ROS2"', 1),
+                     (camera_manifestation, "", 1), (CAMERA_DEPLOYMENT, "", 1),
+                     (VISION_DEPLOYMENT, VISION_DEPLOYMENT + CAMERA_DEPLOYMENT.replace(
+                         'client="_dstRttCameraEEw2X3y4Z5a"', 'client="_dstRttVisionEEb6C7d8E9f"'), 1))
+    files = _files(generate(model, None, "ros2", write=False))
+    host = etree.fromstring(files["launch/distributed_vision_pc.launch.xml"].encode())
+    in_set = etree.fromstring(files["launch/distributed_vision_set.launch.xml"].encode())
+    assert {c.get("name"): [n.get("name") for n in c.iter("composable_node")] for c in host.iter("node_container")} \
+        == {"rtt_vision": ["camera"]}
+    loads = list(in_set.iter("load_composable_node"))
+    assert [(x.get("target"), [n.get("name") for n in x.iter("composable_node")]) for x in loads] \
+        == [("/rtt_vision", ["vision"])]
+    xmlschema.XMLSchema(str(ROOT / "schemas/ros2-launch/1/launch.xsd")).validate(files["launch/distributed_vision_set.launch.xml"])
+
+
+def test_ros1_names_what_it_cannot_express(tmp_path: Path) -> None:
+    model = _variant(tmp_path, (' version="2.10"', ' kind="ROS"', ORO_PROCESSES))
+    done = generate(model, None, "ros1", write=False)
+    codes = {d.code: d for d in done.warnings}
+    assert "ROS111" in codes and "'controller', 'arm'" in codes["ROS111"].message
+    assert codes["ROS111"].element_name == "rttControl" and codes["ROS111"].line
+    assert "ROS112" in codes and codes["ROS112"].element_name == "controlLoop"
+    files = _files(done)
+    assert "launch/distributed_vision_set.launch" in files
+    assert "4 cores, 8192 MiB memory, real-time kernel" in files["launch/distributed_control_pc.launch"]
+
+
+def test_a_connection_no_transport_carries_is_an_error_naming_both_ends(tmp_path: Path) -> None:
+    # forceSensor on ROS 2 feeds the Orocos controller: Orocos RTT 2.10 reaches ROS 1 only
+    model = _variant(tmp_path, (' kind="ROS"', ' kind="ROS2"', 1))
+    with pytest.raises(RobomdaError) as failed:
+        generate(model, tmp_path / "out", "ros2")
+    errors = [d for d in failed.value.diagnostics if d.code == "ROS011"]
+    assert len(errors) == 1 and errors[0].line
+    assert "'forceSensor' (ROS2) and 'controller' (OROCOS)" in errors[0].message
+    assert not (tmp_path / "out").exists()
+
+
+def test_managed_processes_are_named_in_a_warning(tmp_path: Path) -> None:
+    model = _variant(tmp_path, (' version="2.10"', ' kind="ROS2"', ORO_PROCESSES),
+                     (' kind="ROS"', ' kind="ROS2" managed="true"', 1))
+    done = generate(model, None, "ros2", write=False)
+    managed = [d for d in done.warnings if d.code == "ROS113"]
+    assert len(managed) == 1 and managed[0].element_name == "rosSensor"
