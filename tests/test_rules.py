@@ -34,10 +34,15 @@ ROS_LIMITS = ROOT / "schemas" / "psm-ros" / "1" / "ros-limits.sch"
 PID_PIM = CASES / "pid" / "expected" / "bind.xml"
 MEKA_PSM = CASES / "meka" / "expected" / "orocos" / "psm.xml"
 PID_ROS = CASES / "pid" / "expected" / "ros1" / "psm.xml"
+DIST_PIM = CASES / "distributed" / "expected" / "bind.xml"  # seed 002: hosts, processes, a thread, a set
 
 _SECOND_HOST = ('<pim:host xmi-id="_pid000node"', '<pim:host xmi-id="_h2" name="robotPC" hostname="robotpc" '
                 'hostname-source="name" address="robotpc" address-source="name"/>\n    <pim:host xmi-id="_pid000node"')
 _ROBOT_ON_H2 = (r'(<pim:instance name="RobotInterface"[^>]*?) host="_pid000node"', r'\1 host="_h2"')
+# the distributed fixture: camera asks for a real-time priority on visionPC (Host, 2 cores, realTime false)
+_CAMERA_RT = (r'(<pim:instance name="camera".*?<pim:activity [^>]*?)priority="0" priority-source="default" '
+              r'scheduler="OTHER" scheduler-source="default"',
+              r'\1priority="20" priority-source="stereotype" scheduler="RT" scheduler-source="stereotype"')
 
 # rule -> (rules, phase, base model, edits (regex, replacement) applied once each)
 CASES_BY_RULE: dict[str, tuple[Path, str | None, Path, list[tuple[str, str]]]] = {
@@ -69,6 +74,25 @@ CASES_BY_RULE: dict[str, tuple[Path, str | None, Path, list[tuple[str, str]]]] =
                                           r'\1<pim:deployed-on deployment="_d9" host="_h2"/>')]),
     "CMP003": (PIM_RULES, None, PID_PIM, [_SECOND_HOST, _ROBOT_ON_H2]),
     "CMP004": (PIM_RULES, None, PID_PIM, [_SECOND_HOST, _ROBOT_ON_H2]),
+    # arm, a member of thread controlLoop (process rttControl), in process rosSensor
+    "CMP007": (PIM_RULES, None, DIST_PIM, [(r'(<pim:instance name="arm"[^>]*?)execution-environment="_dstRttControlEEk1L2m3N4"',
+                                           r'\1execution-environment="_dstRosSensorEEr8S9t0U1v"')]),
+    "CMP008": (PIM_RULES, None, DIST_PIM, [_CAMERA_RT]),
+    # the same with visionPC not described: realTime just defaulted
+    "CMP009": (PIM_RULES, None, DIST_PIM, [_CAMERA_RT, (r'(name="visionPC"[^>]*?)described="true" cores="2" memory="4096"',
+                                                       r'\1described="false"')]),
+    # thread controlLoop on CPU 4 of controlPC's 4 (mask 16 = 2^4)
+    "CMP010": (PIM_RULES, None, DIST_PIM, [(r'(<pim:thread xmi-id="_dstControlLoopThO5p6Q7".*?)cpu-affinity="2"',
+                                           r'\1cpu-affinity="16"')]),
+    "CMP011": (PIM_RULES, None, DIST_PIM, [(r'<pim:on deployment="_dstVisionSetDeplr0S1t2U"[^>]*/>', '')]),
+    "CMP012": (PIM_RULES, None, DIST_PIM, [(r'(<pim:on deployment="_dstVisionSetDeplr0S1t2U"[^>]*/>)',
+                                           r'\1<pim:on deployment="_d9" host="_dstCtrlPCnodeA1b2C3d4E5"/>')]),
+    # camera, a member of visionSet (on visionPC), on controlPC
+    "CMP013": (PIM_RULES, None, DIST_PIM, [
+        (r'(<pim:instance name="camera"[^>]*?)host="_dstVisnPCnodeF6g7H8i9J0" execution-environment="_dstRttCameraEEw2X3y4Z5a"',
+         r'\1host="_dstCtrlPCnodeA1b2C3d4E5" execution-environment="_dstRttControlEEk1L2m3N4"'),
+        ('deployment="_7r_06xjuD8PlcTvtlRdcOv" execution-environment="_dstRttCameraEEw2X3y4Z5a" host="_dstVisnPCnodeF6g7H8i9J0"',
+         'deployment="_7r_06xjuD8PlcTvtlRdcOv" execution-environment="_dstRttControlEEk1L2m3N4" host="_dstCtrlPCnodeA1b2C3d4E5"')]),
     "CMP005": (PIM_RULES, None, PID_PIM, [(r'(<pim:instance name="PIDController"[^>]*?) start-order="2">',
                                           r'\1>\n      <pim:start-after instance="RobotInterface" xmi-id="_d1"/>'),
                                          (r'(<pim:instance name="RobotInterface"[^>]*?) start-order="3">',
