@@ -90,6 +90,7 @@
   <xsl:include href="../../common/indent.xsl"/>
   <xsl:include href="../../common/naming.xsl"/>
   <xsl:include href="../../common/profile.xsl"/>
+  <xsl:include href="../../common/sequence.xsl"/>
   <xsl:include href="../common/psm-kit.xsl"/>
   <xsl:include href="types.xsl"/>
   <xsl:include href="processes.xsl"/>
@@ -215,16 +216,6 @@
       <xsl:sequence select="f:warn('ORO007', string(@xmi-id), 'instance ''' || @name || ''' is deployed on '
           || @middleware || ', not OROCOS: it is not part of the Orocos package')"/>
     </xsl:for-each>
-  </xsl:function>
-
-  <!-- the instances in the binding's start order; those without one (on a
-       cycle of the constraints) last, in binding order -->
-  <xsl:function name="fp:in-start-order" as="element(pim:instance)*">
-    <xsl:param name="instances" as="element(pim:instance)*"/>
-    <xsl:perform-sort select="$instances">
-      <xsl:sort select="empty(@start-order)"/>
-      <xsl:sort select="xs:integer((@start-order, 0)[1])"/>
-    </xsl:perform-sort>
   </xsl:function>
 
   <!-- a kept connection: its policy, its Orocos ends in their processes

@@ -16,7 +16,7 @@
            all the text).
   Params:  model-dir-from-output (xslt/m2t/ros-common/ros-text.xsl).
   Errors:  none (the PSM is complete and valid).
-  Modules: ../ros-common/ros-text.xsl, ros2-cpp.xsl, ros2-build.xsl, ros2-launch.xsl.
+  Modules: ../../common/sequence.xsl, ../ros-common/ros-text.xsl, ros2-cpp.xsl, ros2-build.xsl, ros2-launch.xsl.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -34,6 +34,7 @@
   <xsl:include href="../common/package-manifest.xsl"/>
   <xsl:include href="../common/data-types.xsl"/>
   <xsl:include href="../../common/naming.xsl"/>
+  <xsl:include href="../../common/sequence.xsl"/>
   <xsl:include href="../ros-common/ros-text.xsl"/>
   <xsl:include href="ros2-cpp.xsl"/>
   <xsl:include href="ros2-build.xsl"/>

@@ -90,16 +90,6 @@
         '  &lt;/load_composable_node&gt;'"/>
   </xsl:function>
 
-  <!-- the instances in the model's start order (the binding's), those
-       without one last -->
-  <xsl:function name="fp:in-start-order" as="element(r:instance)*">
-    <xsl:param name="instances" as="element(r:instance)*"/>
-    <xsl:perform-sort select="$instances">
-      <xsl:sort select="empty(@start-order)"/>
-      <xsl:sort select="xs:integer((@start-order, 0)[1])"/>
-    </xsl:perform-sort>
-  </xsl:function>
-
   <xsl:function name="fp:ros2-host-launch" as="xs:string">
     <xsl:param name="package" as="element(r:package)"/>
     <xsl:param name="host" as="element(r:host)"/>
