@@ -256,17 +256,23 @@ def test_ros1_launch_files_load_with_roslaunch(case: Path, catkin_ws: Path) -> N
                       + i.get("node-name", i.get("name")) for i in etree.fromstring(
         _run(case, "ros1").stages["psm"].encode()).iter("{urn:robomda:psm-ros:1}instance"))
     for launch in launches:
-        script = ("import sys, roslaunch.config, roslaunch.xmlloader\n"
-                  "c = roslaunch.config.ROSLaunchConfig()\n"
-                  "roslaunch.xmlloader.XmlLoader().load(sys.argv[1], c, verbose=False)\n"
-                  "c.assign_machines()\n"
-                  "print('\\n'.join(sorted(n.namespace + n.name for n in c.nodes)))\n")
-        proc = subprocess.run([SYS_PY, "-c", script, str(launch)], env=env, capture_output=True, text=True)
-        assert proc.returncode == 0, proc.stderr
+        nodes = _roslaunch_config(launch, env, "print('\\n'.join(sorted(n.namespace + n.name for n in c.nodes)))")
         if launch.name == f"{_deploy_name(case)}.launch":
-            assert proc.stdout.split() == expected
+            assert nodes.split() == expected
         check = subprocess.run(["roslaunch", "--nodes", str(launch)], env=env, capture_output=True, text=True)
         assert check.returncode == 0, check.stderr
+
+
+def _roslaunch_config(launch: Path, env: dict, show: str) -> str:
+    """What SHOW (Python, with the loaded configuration as ``c``) prints of LAUNCH as roslaunch's
+    own loader reads it, machines assigned."""
+    script = ("import sys, roslaunch.config, roslaunch.xmlloader\n"
+              "c = roslaunch.config.ROSLaunchConfig()\n"
+              "roslaunch.xmlloader.XmlLoader().load(sys.argv[1], c, verbose=False)\n"
+              "c.assign_machines()\n" + show + "\n")
+    proc = subprocess.run([SYS_PY, "-c", script, str(launch)], env=env, capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+    return proc.stdout
 
 
 def _deploy_name(case: Path) -> str:
@@ -437,15 +443,8 @@ def test_ros1_distributed_runs_on_two_machines_with_every_connection_live(catkin
     assert (pkg / "launch" / "distributed_vision_set.launch").is_file()
     env = _ros_env(ROS_PACKAGE_PATH=str(catkin_ws / "src") + ":/usr/share",
                    CMAKE_PREFIX_PATH=str(catkin_ws / "devel") + ":/usr")
-    script = ("import sys, roslaunch.config, roslaunch.xmlloader\n"
-              "c = roslaunch.config.ROSLaunchConfig()\n"
-              "roslaunch.xmlloader.XmlLoader().load(sys.argv[1], c, verbose=False)\n"
-              "c.assign_machines()\n"
-              "print(sorted((m.name, m.address) for m in c.machines.values() if m.name))\n"
-              "print(sorted((n.name, n.machine_name) for n in c.nodes))\n")
-    proc = subprocess.run([SYS_PY, "-c", script, str(launch)], env=env, capture_output=True, text=True)
-    assert proc.returncode == 0, proc.stderr
-    machines, nodes = proc.stdout.splitlines()
+    machines, nodes = _roslaunch_config(launch, env, "print(sorted((m.name, m.address) for m in c.machines.values()"
+                                        " if m.name))\nprint(sorted((n.name, n.machine_name) for n in c.nodes))").splitlines()
     assert machines == str([("control_pc", "127.0.0.1"), ("vision_pc", "127.0.0.1")])
     assert nodes == str(sorted([("arm", "control_pc"), ("camera", "vision_pc"), ("controller", "control_pc"),
                                 ("forceSensor", "control_pc"), ("vision", "vision_pc")]))
