@@ -43,7 +43,7 @@ INPUT_CODES = frozenset({"XML001", "IO001", "IMP001", "IMP002"})
 
 # Saxon may follow the description with its own trace ("During lazy
 # evaluation of ..."), depending on how the transform was called
-_STYLESHEET_ERROR = re.compile(r"(?P<code>[A-Z]{2,5}[0-9]{3}): (?P<message>.*?) \[xmi:id=(?P<id>[^\]]*)\](?=\s|$)", re.S)
+_STYLESHEET_ERROR = re.compile(r"(?P<code>[A-Z]{2,5}[0-9]{3}): (?P<message>.*?) \[xmi:id=(?P<id>[^\]]*)\](?=\.?(?:\s|$))", re.S)
 
 
 @dataclass(frozen=True)
