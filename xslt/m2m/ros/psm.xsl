@@ -278,7 +278,9 @@
       <xsl:variable name="members" as="element(pim:instance)*" select="current-group()"/>
       <xsl:if test="exists($process)">
         <xsl:variable name="threads" as="element(pim:thread)*" select="$process/pim:thread[@xmi-id = $members/@thread]"/>
-        <xsl:if test="$ros-version eq '1' and count($members) gt 1">
+        <!-- an execution environment named after its middleware (the
+             unprofiled convention) stands for the middleware, not a process -->
+        <xsl:if test="$ros-version eq '1' and count($members) gt 1 and upper-case($process/@name) ne $process/@middleware">
           <xsl:sequence select="f:warn('ROS111', $process/@xmi-id, 'process ''' || $process/@name || ''' holds '''
               || string-join($members/@name, ''', ''') || ''': ROS 1 runs each component as a node of its own (no nodelet manager is generated)')"/>
         </xsl:if>
