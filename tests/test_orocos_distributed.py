@@ -31,13 +31,13 @@ from pathlib import Path
 
 import pytest
 
+from edits import distributed_variant
 from robomda.api import generate
 
 ROOT = Path(__file__).resolve().parents[1]
 SHARED = Path(os.environ.get("ROBOMDA_SHARED", ROOT.parent / "shared"))
 ENV_SH = SHARED / "orocos-reference" / "toolchain" / "env.sh"
 INSTALL = Path(os.environ.get("OROCOS_INSTALL", Path.home() / "orocos" / "install"))
-CASES = ROOT / "fixtures" / "cases"
 
 pytestmark = [
     pytest.mark.orocos_toolchain,
@@ -92,18 +92,11 @@ def _bash(script: str, cwd: Path, timeout: int = 1200, **kw) -> subprocess.Compl
 
 
 def _model(tmp: Path, all_orocos: bool) -> Path:
-    """The fixture's model in TMP/cases/distributed (its library is ../headlamp/atomic)."""
-    cases = tmp / "cases"
-    (cases / "distributed").mkdir(parents=True, exist_ok=True)
-    if not (cases / "headlamp").exists():
-        (cases / "headlamp").symlink_to(CASES / "headlamp")
-    text = (CASES / "distributed" / "model.xmi").read_text(encoding="utf-8")
+    """The fixture's model in TMP/cases/distributed (its library is ../headlamp/atomic); all on
+    Orocos: its ROS process is an Orocos one too."""
     if all_orocos:
-        assert text.count(' kind="ROS"') == 1
-        text = text.replace(' kind="ROS"', "")
-    model = cases / "distributed" / ("model.xmi" if all_orocos else "mixed.xmi")
-    model.write_text(text, encoding="utf-8")
-    return model
+        return distributed_variant(tmp, (' kind="ROS"', "", 1))
+    return distributed_variant(tmp, name="mixed.xmi")
 
 
 @pytest.fixture(scope="module")

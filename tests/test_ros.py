@@ -23,6 +23,7 @@ import pytest
 import xmlschema
 from lxml import etree
 
+from edits import distributed_variant
 from robomda.api import generate, import_model, targets
 from robomda.resources import target_of_middleware
 
@@ -191,19 +192,6 @@ def test_ros2_launch_xml_against_launch_ros_rules(case: Path) -> None:
 
 
 # ------------------------------------------------------ ROS 1: real tools
-def _all_ros_model(tmp: Path) -> Path:
-    """The distributed fixture (two hosts, three Orocos processes and a ROS one) with every
-    process on ROS 1, in TMP/cases/distributed beside its library (../headlamp/atomic)."""
-    cases = tmp / "cases"
-    (cases / "distributed").mkdir(parents=True)
-    (cases / "headlamp").symlink_to(ROOT / "fixtures" / "cases" / "headlamp")
-    text = (ROOT / "fixtures" / "cases" / "distributed" / "model.xmi").read_text(encoding="utf-8")
-    assert text.count(' version="2.10"') == 3, "the three Orocos processes of the fixture"
-    model = cases / "distributed" / "model.xmi"
-    model.write_text(text.replace(' version="2.10"', ' kind="ROS"'), encoding="utf-8")
-    return model
-
-
 @pytest.fixture(scope="module")
 def catkin_ws(tmp_path_factory) -> Path:
     """Every case's ROS 1 package in one catkin workspace, built once."""
@@ -212,8 +200,9 @@ def catkin_ws(tmp_path_factory) -> Path:
     for case in CASES:
         generate(case / "model.xmi", ws / "src" / case.name, "ros1")
     # the distributed fixture with every process on ROS 1: two machines, a set, a thread
-    generate(_all_ros_model(tmp_path_factory.mktemp("all_ros")), ws / "src" / "distributed_ros", "ros1",
-             package_name="distributed_ros")
+    # (the three Orocos processes of the fixture carry ' version="2.10"' on their Middleware)
+    generate(distributed_variant(tmp_path_factory.mktemp("all_ros"), (' version="2.10"', ' kind="ROS"', 3)),
+             ws / "src" / "distributed_ros", "ros1", package_name="distributed_ros")
     # -C: catkin_make takes its workspace from $PWD, not from the cwd
     proc = subprocess.run(["catkin_make", "-C", str(ws), "-DPYTHON_EXECUTABLE=" + SYS_PY], cwd=ws,
                           env=_ros_env(PWD=str(ws)),

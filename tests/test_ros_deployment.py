@@ -16,6 +16,7 @@ import pytest
 import xmlschema
 from lxml import etree
 
+from edits import distributed_variant
 from robomda.api import generate
 from robomda.diagnostics import RobomdaError
 
@@ -30,24 +31,11 @@ VISION_DEPLOYMENT = ('<deployment xmi:type="uml:Deployment" xmi:id="_nb0fXVyf8f6
                      'client="_dstRttVisionEEb6C7d8E9f" supplier="_1co18VX-WHKsg9uJFeno6f" '
                      'deployedArtifact="_1co18VX-WHKsg9uJFeno6f"/>')
 ORO_PROCESSES = 3  # rttControl, rttCamera, rttVision: ' version="2.10"' on their Middleware stereotype
+TO_ROS2 = ((' version="2.10"', ' kind="ROS2"', ORO_PROCESSES), (' kind="ROS"', ' kind="ROS2"', 1))  # every process
 
 
 def _files(done) -> dict[str, str]:
     return {n.get("path"): n.text or "" for n in etree.fromstring(done.stages["text"].encode()).iter(f"{FS}file")}
-
-
-def _variant(tmp: Path, *edits: tuple[str, str, int]) -> Path:
-    """The fixture edited (old, new, expected count) in TMP/cases/distributed, beside its library."""
-    cases = tmp / "cases"
-    (cases / "distributed").mkdir(parents=True)
-    (cases / "headlamp").symlink_to(ROOT / "fixtures" / "cases" / "headlamp")
-    text = (CASE / "model.xmi").read_text(encoding="utf-8")
-    for old, new, count in edits:
-        assert text.count(old) == count, old
-        text = text.replace(old, new)
-    model = cases / "distributed" / "model.xmi"
-    model.write_text(text, encoding="utf-8")
-    return model
 
 
 def test_the_mixed_model_generates_each_component_once_with_one_agreed_topic() -> None:
@@ -69,7 +57,7 @@ def test_the_mixed_model_generates_each_component_once_with_one_agreed_topic() -
 
 
 def test_every_process_on_ros2_is_a_container_and_the_set_a_launch_file(tmp_path: Path) -> None:
-    model = _variant(tmp_path, (' version="2.10"', ' kind="ROS2"', ORO_PROCESSES), (' kind="ROS"', ' kind="ROS2"', 1))
+    model = distributed_variant(tmp_path, *TO_ROS2)
     done = generate(model, None, "ros2", write=False)
     files = _files(done)
     schema = xmlschema.XMLSchema(str(ROOT / "schemas/ros2-launch/1/launch.xsd"))
@@ -105,10 +93,9 @@ def test_a_set_member_in_a_shared_process_is_loaded_into_its_container(tmp_path:
     camera_manifestation = ('<manifestation xmi:type="uml:Manifestation" xmi:id="_9ep2JQCW_S88pcgnoowbe2" '
                             'client="_dstVisionSetArtG0h1I2j3" supplier="_ZFkQzwZWOKVfkNutf1AcmA" '
                             'utilizedElement="_ZFkQzwZWOKVfkNutf1AcmA"/>')
-    model = _variant(tmp_path, (' version="2.10"', ' kind="ROS2"', ORO_PROCESSES), (' kind="ROS"', ' kind="ROS2"', 1),
-                     (camera_manifestation, "", 1), (CAMERA_DEPLOYMENT, "", 1),
-                     (VISION_DEPLOYMENT, VISION_DEPLOYMENT + CAMERA_DEPLOYMENT.replace(
-                         'client="_dstRttCameraEEw2X3y4Z5a"', 'client="_dstRttVisionEEb6C7d8E9f"'), 1))
+    model = distributed_variant(tmp_path, *TO_ROS2, (camera_manifestation, "", 1), (CAMERA_DEPLOYMENT, "", 1),
+                                (VISION_DEPLOYMENT, VISION_DEPLOYMENT + CAMERA_DEPLOYMENT.replace(
+                                    'client="_dstRttCameraEEw2X3y4Z5a"', 'client="_dstRttVisionEEb6C7d8E9f"'), 1))
     files = _files(generate(model, None, "ros2", write=False))
     host = etree.fromstring(files["launch/distributed_vision_pc.launch.xml"].encode())
     in_set = etree.fromstring(files["launch/distributed_vision_set.launch.xml"].encode())
@@ -121,7 +108,7 @@ def test_a_set_member_in_a_shared_process_is_loaded_into_its_container(tmp_path:
 
 
 def test_ros1_names_what_it_cannot_express(tmp_path: Path) -> None:
-    model = _variant(tmp_path, (' version="2.10"', ' kind="ROS"', ORO_PROCESSES))
+    model = distributed_variant(tmp_path, (' version="2.10"', ' kind="ROS"', ORO_PROCESSES))
     done = generate(model, None, "ros1", write=False)
     codes = {d.code: d for d in done.warnings}
     assert "ROS111" in codes and "'controller', 'arm'" in codes["ROS111"].message
@@ -134,7 +121,7 @@ def test_ros1_names_what_it_cannot_express(tmp_path: Path) -> None:
 
 def test_a_connection_no_transport_carries_is_an_error_naming_both_ends(tmp_path: Path) -> None:
     # forceSensor on ROS 2 feeds the Orocos controller: Orocos RTT 2.10 reaches ROS 1 only
-    model = _variant(tmp_path, (' kind="ROS"', ' kind="ROS2"', 1))
+    model = distributed_variant(tmp_path, (' kind="ROS"', ' kind="ROS2"', 1))
     with pytest.raises(RobomdaError) as failed:
         generate(model, tmp_path / "out", "ros2")
     errors = [d for d in failed.value.diagnostics if d.code == "ROS011"]
@@ -144,8 +131,7 @@ def test_a_connection_no_transport_carries_is_an_error_naming_both_ends(tmp_path
 
 
 def test_managed_processes_are_named_in_a_warning(tmp_path: Path) -> None:
-    model = _variant(tmp_path, (' version="2.10"', ' kind="ROS2"', ORO_PROCESSES),
-                     (' kind="ROS"', ' kind="ROS2" managed="true"', 1))
+    model = distributed_variant(tmp_path, TO_ROS2[0], (' kind="ROS"', ' kind="ROS2" managed="true"', 1))
     done = generate(model, None, "ros2", write=False)
     managed = [d for d in done.warnings if d.code == "ROS113"]
     assert len(managed) == 1 and managed[0].element_name == "rosSensor"
