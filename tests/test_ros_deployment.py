@@ -10,6 +10,7 @@ needed here: tests/test_ros.py runs the ROS 1 variant under roscore.
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
@@ -22,6 +23,7 @@ from robomda.diagnostics import RobomdaError
 
 ROOT = Path(__file__).resolve().parent.parent
 CASE = ROOT / "fixtures" / "cases" / "distributed"
+MANAGED = ROOT / "fixtures" / "ros" / "managed"
 FS = "{urn:robomda:fileset:1}"
 R = "{urn:robomda:psm-ros:1}"
 CAMERA_DEPLOYMENT = ('<deployment xmi:type="uml:Deployment" xmi:id="_7r_06xjuD8PlcTvtlRdcOv" '
@@ -130,8 +132,62 @@ def test_a_connection_no_transport_carries_is_an_error_naming_both_ends(tmp_path
     assert not (tmp_path / "out").exists()
 
 
-def test_managed_processes_are_named_in_a_warning(tmp_path: Path) -> None:
-    model = distributed_variant(tmp_path, TO_ROS2[0], (' kind="ROS"', ' kind="ROS2" managed="true"', 1))
-    done = generate(model, None, "ros2", write=False)
-    managed = [d for d in done.warnings if d.code == "ROS113"]
-    assert len(managed) == 1 and managed[0].element_name == "rosSensor"
+def test_managed_processes_are_lifecycle_nodes_a_manager_drives_in_the_deployment_sequence() -> None:
+    """Seed 002 on ROS 2 with managed processes (fixtures/ros/managed): their instances load as the
+    lifecycle classes of their nodes, and each host's lifecycle manager configures, then activates,
+    them in start order; the other instances stay plain nodes."""
+    done = generate(MANAGED / "model.xmi", None, "ros2", write=False)
+    assert "ROS113" not in [w.code for w in done.warnings]
+    psm = etree.fromstring(done.stages["psm"].encode())
+    managed = {i.get("name") for i in psm.iter(f"{R}instance") if i.get("managed") == "true"}
+    assert managed == {"controller", "arm", "vision"}
+    assert sorted(n.get("lifecycle-type-name") for n in psm.iter(f"{R}node") if n.get("lifecycle-type-name")) == [
+        "managed::lifecycle::ImpedanceController", "managed::lifecycle::IndustrialArm", "managed::lifecycle::VisionProcessing"]
+    files = _files(done)
+    order = {i.get("name"): int(i.get("start-order")) for i in psm.iter(f"{R}instance")}
+    for host, launch in (("control_pc", "launch/managed_control_pc.launch.xml"), ("vision_pc", "launch/managed_vision_pc.launch.xml")):
+        root = etree.fromstring(files[launch].encode())
+        manager = [n for n in root.iter("node") if n.get("exec") == "lifecycle_manager"]
+        assert len(manager) == 1 and manager[0].get("name") == f"{host}_lifecycle_manager"
+        param = manager[0].find("param")
+        assert param.get("name") == "node_names" and param.get("value-sep") == ","
+        names = [n.lstrip("/") for n in param.get("value").split(",")]
+        here = {i.get("name") for i in psm.iter(f"{R}instance") if i.get("host") == host} & managed
+        assert set(names) == here and names == sorted(names, key=order.get)
+    plugins = {c.get("name"): c.get("plugin") for f in files if f.endswith(".launch.xml")
+               for c in etree.fromstring(files[f].encode()).iter("composable_node")}
+    assert plugins["controller"] == "managed::lifecycle::ImpedanceController"
+    assert plugins["camera"] == "managed::Guppy80" and plugins["forceSensor"] == "managed::WristForceSensor"
+    cmake = files["CMakeLists.txt"]
+    assert "src/lifecycle/ImpedanceController.cpp" in cmake and '"managed::lifecycle::VisionProcessing"' in cmake
+    assert "add_executable(lifecycle_manager src/lifecycle_manager.cpp)" in cmake
+    assert "find_package(rclcpp_lifecycle REQUIRED)" in cmake and "<depend>lifecycle_msgs</depend>" in files["package.xml"]
+    assert not any(p.startswith("src/lifecycle/") and "Guppy80" in p for p in files)
+
+
+def test_a_lifecycle_node_runs_its_hooks_in_the_transitions() -> None:
+    """configure() in on_configure before the ports exist, start() in on_activate after the publishers
+    are activated, stop() in on_deactivate; a hook that returns false fails the transition."""
+    source = _files(generate(MANAGED / "model.xmi", None, "ros2", write=False))["src/lifecycle/ImpedanceController.cpp"]
+    bodies = dict(re.findall(r"::on_(configure|activate|deactivate|cleanup|shutdown)\(const rclcpp_lifecycle::State&[^)]*\)\n\{\n(.*?)\n\}",
+                             source, flags=re.S))
+    assert set(bodies) == {"configure", "activate", "deactivate", "cleanup", "shutdown"}
+    configure = bodies["configure"]
+    assert configure.index("::ImpedanceControl::configure()") < configure.index("create_publisher")
+    assert "return CallbackReturn::FAILURE;" in configure and "configure() failed" in configure
+    activate = bodies["activate"]
+    assert activate.index("pub_armCommand_->on_activate();") < activate.index("::ImpedanceControl::start()") \
+        < activate.index("create_wall_timer")
+    deactivate = bodies["deactivate"]
+    assert deactivate.index("running_ = false;") < deactivate.index("::ImpedanceControl::stop();") \
+        < deactivate.index("pub_armCommand_->on_deactivate();")
+    assert "pub_armCommand_.reset();" in bodies["cleanup"] and "::ImpedanceControl::stop();" in bodies["shutdown"]
+    assert "class ImpedanceController : public rclcpp_lifecycle::LifecycleNode, public ::ImpedanceControl" \
+        in _files(generate(MANAGED / "model.xmi", None, "ros2", write=False))["include/managed/lifecycle/ImpedanceController.hpp"]
+
+
+def test_ros1_names_the_managed_processes_it_cannot_manage() -> None:
+    done = generate(MANAGED / "model.xmi", None, "ros1", write=False)
+    managed = sorted(d.element_name for d in done.warnings if d.code == "ROS113")
+    assert managed == ["controlProcess", "visionProcess"]
+    assert "ROS 1 has no node lifecycle" in next(d.message for d in done.warnings if d.code == "ROS113")

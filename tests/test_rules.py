@@ -127,6 +127,8 @@ CASES_BY_RULE: dict[str, tuple[Path, str | None, Path, list[tuple[str, str]]]] =
                                           r'\1<r:set xmi-id="_s1" name="controlPC" launch="control_pc" host="control_pc"/>')]),
     "ROS206": (ROS_RULES, None, PID_ROS, [('ros-version="1"', 'ros-version="2"'),
                                           ('container="ros"', 'container="PIDController"')]),
+    "ROS207": (ROS_RULES, None, PID_ROS, [('ros-version="1"', 'ros-version="2"'),
+                                          (r'(<r:host [^>]*?)launch="control_pc"', r'\1launch="control_pc" lifecycle-manager="PIDController"')]),
 }
 # rules that already fire on the good base (the Meka PSM asks RTT for priorities under OTHER)
 _ON_BASE = {"ORO102", "ORO103"}

@@ -54,6 +54,12 @@
       instance on Orocos is a ROS 1 topic named from the root (/topic, as
       the Orocos target's rtt_roscomm stream names it); any other
       connection across middlewares is ROS011.
+  N8  managed lifecycle (ROS 2): an instance in a process whose middleware
+      is managed is a lifecycle node: its node class gets a lifecycle twin
+      (@lifecycle-type-name, <pkg>::lifecycle::<Class>), the instance
+      @managed, and its host a lifecycle manager node (@lifecycle-manager)
+      that configures the host's managed nodes, then activates them, in the
+      deployment sequence. ROS 1 has no node lifecycle (ROS113).
 
   Errors (urn:robomda:error, f:fail):
     ROS001  a port, service or Configurable parameter has a type the type
@@ -79,7 +85,7 @@
     ROS111  ROS 1: a process of several components runs them as nodes of
             their own
     ROS112  ROS 1: the components of a thread each run in their own
-    ROS113  a managed (lifecycle) process: lifecycle nodes are not generated
+    ROS113  ROS 1: a managed (lifecycle) process; ROS 1 has no node lifecycle
     ROS101  operations with no fitting std_srvs service are left out (one
             warning per component type, naming them)
     ROS102  ROS 2 launch has no machine tag: one launch file per host
@@ -194,7 +200,8 @@
     </xsl:if>
     <xsl:variable name="nodes" as="document-node()">
       <xsl:document>
-        <xsl:sequence select="$components ! fp:node(., $package)"/>
+        <xsl:sequence select="$components ! fp:node(., $package,
+            some $i in key('fp:instance-of', @component)[map:contains($targets, string(@name))] satisfies fp:managed($i))"/>
       </xsl:document>
     </xsl:variable>
     <r:package xmi-id="{@id}" model-name="{@name}" name="{$package}" namespace="{$package}" ros-version="{$ros-version}"
@@ -240,6 +247,14 @@
     </xsl:for-each>
   </xsl:function>
 
+  <!-- instance $instance is a ROS 2 managed (lifecycle) node: its process
+       asks for it (Middleware managed, N8) -->
+  <xsl:function name="fp:managed" as="xs:boolean">
+    <xsl:param name="instance" as="element(pim:instance)"/>
+    <xsl:sequence select="$ros-version eq '2'
+        and key('fp:process', string($instance/@execution-environment), root($instance))/@managed = 'true'"/>
+  </xsl:function>
+
   <xsl:function name="fp:host-key" as="xs:string">
     <xsl:param name="host" as="xs:string"/>
     <xsl:param name="root" as="document-node()"/>
@@ -259,6 +274,9 @@
               name="{current-grouping-key()}" machine="{current-grouping-key()}"
               hostname="{($pim-host/@hostname, 'localhost')[1]}" address="{($pim-host/@address, 'localhost')[1]}"
               launch="{current-grouping-key()}">
+        <xsl:if test="some $i in current-group() satisfies fp:managed($i)">
+          <xsl:attribute name="lifecycle-manager" select="current-grouping-key() || '_lifecycle_manager'"/>
+        </xsl:if>
         <xsl:sequence select="$pim-host ! fp:psm-host-resources(.)"/>
       </r:host>
     </xsl:for-each-group>
@@ -290,9 +308,9 @@
               || ''': ROS 1 nodes cannot share a thread; ''' || string-join($members[@thread eq $thread/@xmi-id]/@name, ''', ''')
               || ''' each run in their own, with the thread''s period')"/>
         </xsl:for-each>
-        <xsl:if test="$process/@managed = 'true'">
+        <xsl:if test="$ros-version eq '1' and $process/@managed = 'true'">
           <xsl:sequence select="f:warn('ROS113', $process/@xmi-id, 'process ''' || $process/@name || ''' asks for managed'
-              || ' (lifecycle) nodes: the ROS targets do not generate lifecycle nodes yet; '''
+              || ' (lifecycle) nodes: ROS 1 has no node lifecycle; '''
               || string-join($members/@name, ''', ''') || ''' start active, in no managed sequence')"/>
         </xsl:if>
         <!-- a process all of whose components are in one set belongs to it -->
@@ -445,6 +463,8 @@
   <xsl:function name="fp:node" as="element(r:node)">
     <xsl:param name="bc" as="element(pim:bound-component)"/>
     <xsl:param name="package" as="xs:string"/>
+    <!-- an instance of it is a managed (lifecycle) node (N8) -->
+    <xsl:param name="managed" as="xs:boolean"/>
     <xsl:variable name="component" as="element(pim:component)" select="key('fp:id', $bc/@component, root($bc))"/>
     <xsl:variable name="wrapper" as="xs:boolean" select="exists(fp:realization($bc))"/>
     <xsl:variable name="class" as="xs:string" select="f:upper-camel($component/@name)"/>
@@ -459,6 +479,9 @@
             generated-class="{if ($wrapper) then $class else $class || 'Base'}"
             executable="{f:snake-case($component/@name)}_node" default-name="{f:snake-case($component/@name)}"
             period="{($instances/pim:activity/@period)[1]}">
+      <xsl:if test="$managed">
+        <xsl:attribute name="lifecycle-type-name" select="$package || '::lifecycle::' || $class"/>
+      </xsl:if>
       <xsl:sequence select="fp:psm-doc($component)"/>
       <xsl:sequence select="fp:psm-realizing-class($bc)"/>
       <xsl:sequence select="fp:psm-hooks($bc)"/>
@@ -725,6 +748,9 @@
         <xsl:attribute name="set" select="f:snake-case(@name)"/>
       </xsl:for-each>
       <xsl:sequence select="$instance/@start-order"/>
+      <xsl:if test="fp:managed($instance)">
+        <xsl:attribute name="managed" select="true()"/>
+      </xsl:if>
       <xsl:attribute name="period" select="$activity/@period"/>
       <xsl:attribute name="periodic" select="number($activity/@period) ne 0"/>
       <xsl:for-each select="$node/r:port">

@@ -1,11 +1,14 @@
 <?xml version="1.0" encoding="UTF-8"?>
 <!--
-  xslt/m2t/ros2/main.xsl - ROS PSM (ros-version 2) -> file set (a catkin package).
+  xslt/m2t/ros2/main.xsl - ROS PSM (ros-version 2) -> file set (an ament package).
 
   Reads:   urn:robomda:psm-ros:1 (schemas/psm-ros/1/psm-ros.xsd), from
-           xslt/m2m/ros/psm.xsl with ros-version=1.
+           xslt/m2m/ros/psm.xsl with ros-version=2.
   Writes:  urn:robomda:fileset:1 (schemas/fileset/1/fileset.xsd), target "ros2":
              include/<pkg>/<Class>.hpp, src/<Class>.cpp, src/<exe>.cpp  per node
+             include/<pkg>/lifecycle/<Class>.hpp, src/lifecycle/<Class>.cpp
+                                     per node with a managed instance
+             src/lifecycle_manager.cpp  when an instance is managed
              msg/<Type>.msg          per generated message
              CMakeLists.txt, package.xml
              launch/<model>.launch.xml, launch/<model>_<host>.launch.xml,
@@ -16,7 +19,7 @@
            all the text).
   Params:  model-dir-from-output (xslt/m2t/ros-common/ros-text.xsl).
   Errors:  none (the PSM is complete and valid).
-  Modules: ../../common/sequence.xsl, ../ros-common/ros-text.xsl, ros2-cpp.xsl, ros2-build.xsl, ros2-launch.xsl.
+  Modules: ../../common/sequence.xsl, ../ros-common/ros-text.xsl, ros2-cpp.xsl, ros2-build.xsl, ros2-launch.xsl, ros2-lifecycle.xsl.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -39,6 +42,7 @@
   <xsl:include href="ros2-cpp.xsl"/>
   <xsl:include href="ros2-build.xsl"/>
   <xsl:include href="ros2-launch.xsl"/>
+  <xsl:include href="ros2-lifecycle.xsl"/>
 
   <xsl:output method="xml" indent="no" encoding="UTF-8" cdata-section-elements="fs:file"/>
   <xsl:mode name="m:emit-files" on-no-match="fail"/>
@@ -46,6 +50,7 @@
   <xsl:variable name="fp:cpp-xsl" as="xs:string" select="'m2t/ros2/ros2-cpp.xsl'"/>
   <xsl:variable name="fp:build-xsl" as="xs:string" select="'m2t/ros2/ros2-build.xsl'"/>
   <xsl:variable name="fp:launch-xsl" as="xs:string" select="'m2t/ros2/ros2-launch.xsl'"/>
+  <xsl:variable name="fp:lifecycle-xsl" as="xs:string" select="'m2t/ros2/ros2-lifecycle.xsl'"/>
 
   <xsl:template match="r:package" mode="m:emit-files" as="element(fs:files)">
     <xsl:variable name="pkg" as="xs:string" select="@name"/>
@@ -56,6 +61,14 @@
         <xsl:sequence select="fp:file(concat('src/', @class, '.cpp'), 'generated', $fp:cpp-xsl, fp:ros2-source(.))"/>
         <xsl:sequence select="fp:file(concat('src/', @executable, '.cpp'), 'generated', $fp:cpp-xsl, fp:ros2-main(.))"/>
       </xsl:for-each>
+      <xsl:for-each select="r:node[@lifecycle-type-name]">
+        <xsl:sequence select="fp:file(concat('include/', $pkg, '/lifecycle/', @class, '.hpp'), 'generated', $fp:lifecycle-xsl,
+                                      fp:ros2-lifecycle-header(.))"/>
+        <xsl:sequence select="fp:file(concat('src/lifecycle/', @class, '.cpp'), 'generated', $fp:lifecycle-xsl, fp:ros2-lifecycle-source(.))"/>
+      </xsl:for-each>
+      <xsl:if test="r:node[@lifecycle-type-name]">
+        <xsl:sequence select="fp:file('src/lifecycle_manager.cpp', 'generated', $fp:lifecycle-xsl, fp:ros2-lifecycle-manager(.))"/>
+      </xsl:if>
       <xsl:sequence select="fp:ros-type-files(.)"/>
       <xsl:sequence select="fp:file('CMakeLists.txt', 'generated', $fp:build-xsl, fp:ros2-cmakelists(.))"/>
       <xsl:sequence select="fp:file('package.xml', 'generated', $fp:build-xsl, fp:ros2-package-xml(.))"/>

@@ -7,8 +7,10 @@
   Writes:  strings (file contents), wrapped into fs:file by main.xsl.
   Params:  model-dir-from-output (ros-common/ros-text.xsl).  Errors: none.
 
-  One shared library <pkg>_components with every node class, registered
-  with rclcpp_components_register_nodes; one executable per node; the
+  One shared library <pkg>_components with every node class (and the
+  lifecycle class of a node with a managed instance), registered with
+  rclcpp_components_register_nodes; one executable per node, and
+  lifecycle_manager when a node is managed; the
   atomic-code library as in ROS 1; generated messages with
   rosidl_generate_interfaces.
 -->
@@ -23,6 +25,7 @@
   <xsl:function name="fp:ros2-deps" as="xs:string*">
     <xsl:param name="package" as="element(r:package)"/>
     <xsl:sequence select="sort(distinct-values(('rclcpp', 'rclcpp_components',
+        if ($package/r:node[@lifecycle-type-name]) then ('rclcpp_lifecycle', 'lifecycle_msgs') else (),
         ($package/r:node/r:port/r:message/@msg, $package/r:node/r:service/@srv, $package/r:node/r:service-client/@srv)[contains(., '/')] ! substring-before(., '/'))))"/>
   </xsl:function>
 
@@ -49,7 +52,8 @@
         $package/r:library ! fp:library-external-project(.),
         '',
         '# every node class, as rclcpp components',
-        concat('add_library(', $lib, ' SHARED ', string-join($package/r:node ! (concat('src/', @class, '.cpp')), ' '), ')'),
+        concat('add_library(', $lib, ' SHARED ', string-join(($package/r:node ! concat('src/', @class, '.cpp'),
+                                                             $package/r:node[@lifecycle-type-name] ! concat('src/lifecycle/', @class, '.cpp')), ' '), ')'),
         concat('target_include_directories(', $lib, ' PUBLIC'),
         '  $&lt;BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include&gt;',
         '  $&lt;INSTALL_INTERFACE:include&gt;)',
@@ -57,18 +61,25 @@
         if ($msgs) then concat('target_link_libraries(', $lib, ' ${${PROJECT_NAME}_msgs_cpp})') else (),
         fp:library-depends($package, $lib),
         if ($package/r:library) then concat('target_link_libraries(', $lib, ' ', string-join(fp:library-vars($package), ' '), ')') else (),
-        concat('rclcpp_components_register_nodes(', $lib, ' ', string-join($package/r:node ! (concat('&quot;', @type-name, '&quot;')), ' '), ')'),
+        concat('rclcpp_components_register_nodes(', $lib, ' ',
+               string-join(($package/r:node/@type-name, $package/r:node/@lifecycle-type-name) ! concat('&quot;', ., '&quot;'), ' '), ')'),
         for $n in $package/r:node return (
           '',
           concat('# node of component ', $n/@name),
           concat('add_executable(', $n/@executable, ' src/', $n/@executable, '.cpp)'),
           concat('target_link_libraries(', $n/@executable, ' ', $lib, ')')),
+        if ($package/r:node[@lifecycle-type-name]) then (
+          '',
+          '# configures, then activates, the managed nodes in the deployment sequence',
+          'add_executable(lifecycle_manager src/lifecycle_manager.cpp)',
+          'ament_target_dependencies(lifecycle_manager rclcpp lifecycle_msgs)')
+        else (),
         '',
         concat('install(TARGETS ', $lib),
         '  ARCHIVE DESTINATION lib',
         '  LIBRARY DESTINATION lib',
         '  RUNTIME DESTINATION bin)',
-        concat('install(TARGETS ', string-join($package/r:node/@executable, ' ')),
+        concat('install(TARGETS ', string-join(($package/r:node/@executable, $package/r:node[@lifecycle-type-name][1] ! 'lifecycle_manager'), ' ')),
         '  DESTINATION lib/${PROJECT_NAME})',
         'install(DIRECTORY include/ DESTINATION include)',
         'install(DIRECTORY config launch',

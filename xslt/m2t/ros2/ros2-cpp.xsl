@@ -38,11 +38,7 @@
         fp:ros-header-opening($node),
         '',
         '#include &lt;rclcpp/rclcpp.hpp&gt;',
-        distinct-values(($node/r:port/r:message/@msg ! (concat('#include &lt;', fp:ros2-type(., $package, 'msg')[1], '&gt;')),
-                         ($node/r:service/@srv, $node/r:service-client/@srv) ! (concat('#include &lt;', fp:ros2-type(., $package, 'srv')[1], '&gt;')))),
-        '#include &lt;memory&gt;',
-        '#include &lt;string&gt;',
-        concat('#include &lt;', $node/r:realizing-class/@header, '&gt;'), fp:conversions-include($node),
+        fp:ros2-includes($node),
         '',
         concat('namespace ', $package, ' {'),
         '',
@@ -59,23 +55,47 @@
         fp:client-overrides($node),
         '',
         'private:',
-        '  void step();',
-        $node/r:port[@direction eq 'in'] ! (concat('  void on_', @name, '(const ', fp:ros2-type(r:message/@msg, $package, 'msg')[2], '::SharedPtr msg);')),
-        $node/r:service ! (concat('  void on_', @name, '(const std::shared_ptr&lt;', fp:ros2-type(@srv, $package, 'srv')[2], '::Request&gt; request,'),
-                        concat('    std::shared_ptr&lt;', fp:ros2-type(@srv, $package, 'srv')[2], '::Response&gt; response);')),
-        '',
-        $node/r:port[@direction eq 'out'] ! (concat('  rclcpp::Publisher&lt;', fp:ros2-type(r:message/@msg, $package, 'msg')[2], '&gt;::SharedPtr ', @member, ';')),
-        $node/r:port[@direction eq 'in'] ! (concat('  rclcpp::Subscription&lt;', fp:ros2-type(r:message/@msg, $package, 'msg')[2], '&gt;::SharedPtr ', @member, ';')),
-        $node/r:service ! (concat('  rclcpp::Service&lt;', fp:ros2-type(@srv, $package, 'srv')[2], '&gt;::SharedPtr ', @member, ';')),
-        $node/r:service-client ! (concat('  rclcpp::Client&lt;', fp:ros2-type(@srv, $package, 'srv')[2], '&gt;::SharedPtr ', @member, ';')),
-        '  rclcpp::TimerBase::SharedPtr timer_;',
-        '  double period_;',
-        '  bool running_;',
+        fp:ros2-members($node, 'rclcpp::Publisher'),
         '};',
         '',
         concat('}  // namespace ', $package),
         '',
         concat('#endif  // ', fp:guard($package, $class))))"/>
+  </xsl:function>
+
+  <!-- the includes of a node's header after rclcpp's: its messages and
+       services, the realizing class, the message conversions -->
+  <xsl:function name="fp:ros2-includes" as="xs:string*">
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:variable name="package" as="xs:string" select="$node/@namespace"/>
+    <xsl:sequence select="(
+        distinct-values(($node/r:port/r:message/@msg ! (concat('#include &lt;', fp:ros2-type(., $package, 'msg')[1], '&gt;')),
+                         ($node/r:service/@srv, $node/r:service-client/@srv) ! (concat('#include &lt;', fp:ros2-type(., $package, 'srv')[1], '&gt;')))),
+        '#include &lt;memory&gt;',
+        '#include &lt;string&gt;',
+        concat('#include &lt;', $node/r:realizing-class/@header, '&gt;'), fp:conversions-include($node))"/>
+  </xsl:function>
+
+  <!-- the private members of a node class: step(), the callbacks, the
+       publishers ($publisher: their class template), subscriptions,
+       services, clients and the timer -->
+  <xsl:function name="fp:ros2-members" as="xs:string+">
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:param name="publisher" as="xs:string"/>
+    <xsl:variable name="package" as="xs:string" select="$node/@namespace"/>
+    <xsl:sequence select="(
+        '  void step();',
+        $node/r:port[@direction eq 'in'] ! (concat('  void on_', @name, '(const ', fp:ros2-type(r:message/@msg, $package, 'msg')[2], '::SharedPtr msg);')),
+        $node/r:service ! (concat('  void on_', @name, '(const std::shared_ptr&lt;', fp:ros2-type(@srv, $package, 'srv')[2], '::Request&gt; request,'),
+                        concat('    std::shared_ptr&lt;', fp:ros2-type(@srv, $package, 'srv')[2], '::Response&gt; response);')),
+        '',
+        $node/r:port[@direction eq 'out'] ! (concat('  ', $publisher, '&lt;', fp:ros2-type(r:message/@msg, $package, 'msg')[2], '&gt;::SharedPtr ', @member, ';')),
+        $node/r:port[@direction eq 'in'] ! (concat('  rclcpp::Subscription&lt;', fp:ros2-type(r:message/@msg, $package, 'msg')[2], '&gt;::SharedPtr ', @member, ';')),
+        $node/r:service ! (concat('  rclcpp::Service&lt;', fp:ros2-type(@srv, $package, 'srv')[2], '&gt;::SharedPtr ', @member, ';')),
+        $node/r:service-client ! (concat('  rclcpp::Client&lt;', fp:ros2-type(@srv, $package, 'srv')[2], '&gt;::SharedPtr ', @member, ';')),
+        '  rclcpp::TimerBase::SharedPtr timer_;',
+        '  double period_;',
+        '  bool running_;')"/>
   </xsl:function>
 
   <xsl:function name="fp:ros2-source" as="xs:string">
@@ -124,12 +144,10 @@
         concat('RCLCPP_COMPONENTS_REGISTER_NODE(', $node/@type-name, ')')))"/>
   </xsl:function>
 
-  <!-- the body of the constructor: parameters, configure() and start(),
-       then the publishers, subscriptions, services and the timer -->
-  <xsl:function name="fp:ros2-constructor" as="xs:string+">
+  <!-- the parameters (R4), declared with their type and the model default
+       into the realizing class's members, and update_period -->
+  <xsl:function name="fp:ros2-parameters" as="xs:string+">
     <xsl:param name="node" as="element(r:node)"/>
-    <xsl:variable name="class" as="xs:string" select="$node/@class"/>
-    <xsl:variable name="package" as="xs:string" select="$node/@namespace"/>
     <xsl:variable name="realizing-class" as="xs:string" select="$node/r:realizing-class/@cpp-name"/>
     <xsl:sequence select="(
         '  // parameters (R4), declared with their type and the model default',
@@ -142,13 +160,36 @@
           else concat('  ', $realizing-class, '::', $p/@member, ' = ',
              (if ($p/@param2 eq $p/@cpp-type) then '' else concat('static_cast&lt;', $p/@cpp-type, '&gt;(')),
              $read, (if ($p/@param2 eq $p/@cpp-type) then '' else ')'), ';'),
-        '  period_ = this->declare_parameter&lt;double&gt;(&quot;update_period&quot;, period_);',
-        for $hook in $node/r:hook[@name = ('configure', 'start')][@call] return
+        '  period_ = this->declare_parameter&lt;double&gt;(&quot;update_period&quot;, period_);')"/>
+  </xsl:function>
+
+  <!-- the calls of the realizing class's hooks $names (configure, start,
+       stop, cleanup); one that returns false fails: a plain node throws, a
+       lifecycle node ($lifecycle) logs and fails the transition -->
+  <xsl:function name="fp:ros2-hook-calls" as="xs:string*">
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:param name="names" as="xs:string+"/>
+    <xsl:param name="lifecycle" as="xs:boolean"/>
+    <xsl:variable name="realizing-class" as="xs:string" select="$node/r:realizing-class/@cpp-name"/>
+    <xsl:sequence select="
+        for $hook in $node/r:hook[@name = $names][@call] return
           if (xs:boolean($hook/@returns-bool))
           then (concat('  if (!', $realizing-class, '::', $hook/@call, '()) {'),
-                concat('    throw std::runtime_error(&quot;', $class, ': ', $hook/@call, '() failed&quot;);'),
+                if ($lifecycle)
+                then (concat('    RCLCPP_ERROR(get_logger(), &quot;', $hook/@call, '() failed&quot;);'),
+                      '    return CallbackReturn::FAILURE;')
+                else concat('    throw std::runtime_error(&quot;', $node/@class, ': ', $hook/@call, '() failed&quot;);'),
                 '  }')
-          else concat('  ', $realizing-class, '::', $hook/@call, '();'),
+          else concat('  ', $realizing-class, '::', $hook/@call, '();')"/>
+  </xsl:function>
+
+  <!-- the publishers, subscriptions (with the port's QoS), services and
+       clients of a node -->
+  <xsl:function name="fp:ros2-entities" as="xs:string*">
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:variable name="class" as="xs:string" select="$node/@class"/>
+    <xsl:variable name="package" as="xs:string" select="$node/@namespace"/>
+    <xsl:sequence select="(
         $node/r:port[@direction eq 'out'] ! (
             concat('  ', @member, ' = this->create_publisher&lt;', fp:ros2-type(r:message/@msg, $package, 'msg')[2], '&gt;('),
             concat('    ', fp:cpp-string(@topic), ', ', fp:ros2-qos(r:qos), ');')),
@@ -161,14 +202,26 @@
             concat('    ', fp:cpp-string(concat('~/', @name)), ', std::bind(&amp;', $class, '::on_', @name,
                    ', this, std::placeholders::_1, std::placeholders::_2));')),
         $node/r:service-client ! concat('  ', @member, ' = this->create_client&lt;', fp:ros2-type(@srv, $package, 'srv')[2], '&gt;(',
-                   fp:cpp-string(@name), ');'),
-        '  if (period_ &gt; 0.0) {',
-        concat('    timer_ = this->create_wall_timer(std::chrono::duration&lt;double&gt;(period_), std::bind(&amp;',
-               $class, '::step, this));'),
-        '  }',
-        '  running_ = true;')"/>
+                   fp:cpp-string(@name), ');'))"/>
   </xsl:function>
 
+  <!-- the wall timer that runs step(), when the node has a period -->
+  <xsl:function name="fp:ros2-timer" as="xs:string+">
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:sequence select="
+        '  if (period_ &gt; 0.0) {',
+        concat('    timer_ = this->create_wall_timer(std::chrono::duration&lt;double&gt;(period_), std::bind(&amp;',
+               $node/@class, '::step, this));'),
+        '  }'"/>
+  </xsl:function>
+
+  <!-- the body of the constructor: parameters, configure() and start(),
+       then the publishers, subscriptions, services and the timer -->
+  <xsl:function name="fp:ros2-constructor" as="xs:string+">
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:sequence select="(fp:ros2-parameters($node), fp:ros2-hook-calls($node, ('configure', 'start'), false()),
+                           fp:ros2-entities($node), fp:ros2-timer($node), '  running_ = true;')"/>
+  </xsl:function>
   <!-- the subscription and service callbacks, each after an empty line -->
   <xsl:function name="fp:ros2-callbacks" as="xs:string*">
     <xsl:param name="node" as="element(r:node)"/>

@@ -13,8 +13,10 @@
         <composable_node>s, in the model's start order, are its instances
         (intra-process communication stays off: Humble refuses it with the
         transient_local durability a latched connection asks for), each with <param from=".yaml"/>
-        and a <remap> per connected port; a <node> per instance in no
-        process; an <include> per component set on the host
+        and a <remap> per connected port (a managed instance: its node's
+        lifecycle class); a <node> per instance in no process; an <include>
+        per component set on the host; a lifecycle_manager <node> when the
+        host has managed instances, their names in start order (node_names)
   launch/<model>_<set>.launch.xml  one per component set (seed 002): the
         containers of the processes wholly in it, and its members in other
         processes loaded into theirs (<load_composable_node target>)
@@ -58,7 +60,8 @@
     <xsl:param name="n" as="xs:integer"/>
     <xsl:variable name="node" as="element(r:node)" select="$package/r:node[@class eq $i/@node]"/>
     <xsl:sequence select="fp:indent($n, (
-        concat('&lt;composable_node pkg=&quot;', $package/@name, '&quot; plugin=&quot;', $node/@type-name, '&quot; ', fp:node-name-attributes($i, 'namespace'), '&gt;'),
+        concat('&lt;composable_node pkg=&quot;', $package/@name, '&quot; plugin=&quot;',
+               if ($i/@managed) then $node/@lifecycle-type-name else $node/@type-name, '&quot; ', fp:node-name-attributes($i, 'namespace'), '&gt;'),
         fp:ros2-node-settings($package, $i, 2),
         '&lt;/composable_node&gt;'))"/>
   </xsl:function>
@@ -70,7 +73,8 @@
     <xsl:param name="members" as="element(r:instance)*"/>
     <xsl:sequence select="
         concat('  &lt;!-- process ''', fp:xml-text($process/@name), '''',
-               $process/@threads ! concat(', threads ', fp:xml-text(.), ': a multi-threaded container'), ' --&gt;'),
+               $process/@threads ! concat(', threads ', fp:xml-text(.), ': a multi-threaded container'),
+               if (xs:boolean($process/@managed)) then ', managed: lifecycle nodes' else '', ' --&gt;'),
         concat('  &lt;node_container pkg=&quot;rclcpp_components&quot; exec=&quot;component_container',
                if ($process/@executor eq 'multi') then '_mt' else '', '&quot; name=&quot;', $process/@container,
                '&quot; namespace=&quot;/&quot; output=&quot;screen&quot;', if (empty($members)) then '/&gt;' else '&gt;'),
@@ -110,7 +114,29 @@
         for $i in $here[not(@process)][not(@set)] return fp:ros2-node($package, $i),
         $package/r:set[@host eq $host/@name] ! concat('  &lt;include file=&quot;$(find-pkg-share ', $package/@name, ')/launch/',
                                                        $package/@deploy-name, '_', @launch, '.launch.xml&quot;/&gt;'),
+        $host/@lifecycle-manager ! fp:ros2-lifecycle-manager-node($package, $host, $here[@managed]),
         '&lt;/launch&gt;'))"/>
+  </xsl:function>
+
+  <!-- the lifecycle manager of a host: configures, then activates, its
+       managed nodes in the deployment sequence (ros2-lifecycle.xsl) -->
+  <xsl:function name="fp:ros2-lifecycle-manager-node" as="xs:string+">
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:param name="host" as="element(r:host)"/>
+    <xsl:param name="managed" as="element(r:instance)+"/>
+    <xsl:sequence select="
+        '  &lt;!-- the managed (lifecycle) nodes on this host: configured, then activated, in the deployment sequence --&gt;',
+        concat('  &lt;node pkg=&quot;', $package/@name, '&quot; exec=&quot;lifecycle_manager&quot; name=&quot;', $host/@lifecycle-manager,
+               '&quot; namespace=&quot;/&quot; output=&quot;screen&quot;&gt;'),
+        concat('    &lt;param name=&quot;node_names&quot; value=&quot;', string-join(fp:in-start-order($managed) ! fp:ros2-fqn(.), ','),
+               '&quot; value-sep=&quot;,&quot;/&gt;'),
+        '  &lt;/node&gt;'"/>
+  </xsl:function>
+
+  <!-- the fully qualified node name of instance $i -->
+  <xsl:function name="fp:ros2-fqn" as="xs:string">
+    <xsl:param name="i" as="element(r:instance)"/>
+    <xsl:sequence select="if ($i/@namespace) then concat('/', $i/@namespace, '/', $i/@node-name) else concat('/', $i/@name)"/>
   </xsl:function>
 
   <!-- a component set (seed 002): the containers of the processes wholly
@@ -153,7 +179,7 @@
         fp:banner('# ', $fp:launch-xsl, concat('model ''', $package/@model-name, ''''), false()),
         for $i in $package/r:instance return (
           (: a node in a namespace: its fully qualified name :)
-          concat(if ($i/@namespace) then concat('/', $i/@namespace, '/', $i/@node-name) else $i/@name, ':'),
+          concat(if ($i/@namespace) then fp:ros2-fqn($i) else $i/@name, ':'),
           '  ros__parameters:',
           fp:indent(4, fp:yaml-mapping($i/r:parameter-value, '')))))"/>
   </xsl:function>
