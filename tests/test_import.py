@@ -356,3 +356,20 @@ def test_fixture_dialects_give_the_same_pim(case: str) -> None:
         import difflib
         diff = "\n".join(difflib.unified_diff(na.splitlines(), nb.splitlines(), "papyrus", "ea", lineterm="", n=2))
         pytest.fail(f"{case}: Papyrus and EA PIMs differ:\n{diff[:6000]}")
+
+
+def test_a_deployment_owned_by_one_node_with_another_as_client_deploys_once_on_its_client(tmp_path: Path) -> None:
+    """The camera's Deployment stays inside process rttCamera but names rttVision as its client: it is
+    imported once, on rttVision (before, it was imported on both and the PIM broke its own schema),
+    and IMP117 names both nodes."""
+    from edits import distributed_variant
+    from robomda.api import generate
+
+    model = distributed_variant(tmp_path, ('client="_dstRttCameraEEw2X3y4Z5a" supplier="_ZFkQzwZWOKVfkNutf1AcmA"',
+                                           'client="_dstRttVisionEEb6C7d8E9f" supplier="_ZFkQzwZWOKVfkNutf1AcmA"', 1))
+    done = generate(model, None, "orocos", write=False)
+    moved = [w for w in done.warnings if w.code == "IMP117"]
+    assert len(moved) == 1 and "'rttCamera'" in moved[0].message and "'rttVision'" in moved[0].message
+    pim = etree.fromstring(done.stages["import"].encode())
+    deployments = pim.findall(".//{urn:robomda:pim:1}deployment[@id='_7r_06xjuD8PlcTvtlRdcOv']")
+    assert len(deployments) == 1 and deployments[0].getparent().get("name") == "rttVision"

@@ -77,7 +77,8 @@
   of the model reported (f:fail-all).
   Warnings (f:warn) about what the import leaves out: IMP030, IMP101-IMP103
   (application.xsl), IMP110-IMP116 (report.xsl), IMP048 (urdf.xsl: a
-  Robot's rootLink / tipLink without urdf); docs/errors.md. Every
+  Robot's rootLink / tipLink without urdf), IMP117 (platform.xsl: a
+  deployment owned by a node whose client is another); docs/errors.md. Every
   duplicate id and dangling reference is reported (f:fail-all).
 -->
 <xsl:stylesheet version="3.0"

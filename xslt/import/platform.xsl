@@ -14,6 +14,7 @@
            pim:kinematic-chain of each robot Device by its id, counted in
            its URDF file by urdf.xsl).
   Errors:  none raised here: check.xsl has reported dangling references.
+  Warnings: IMP117 a deployment owned by one node whose client is another.
 
   Rules
   - Node, Device, ExecutionEnvironment -> pim:node kind node / device /
@@ -26,7 +27,9 @@
   - Node attributes: its owned Properties (not ports).
   - Deployment (owned by the node, or anywhere with client = the node):
     deployed = deployedArtifact, plus supplier, local ids only, in order,
-    without duplicates.
+    without duplicates. One owned by a node whose client is another node
+    deploys on its client, once (warning IMP117 names both); one whose
+    client is no node is not imported (IMP113, report.xsl).
   - Artifact and DeploymentSpecification (nested artifacts too) ->
     top-level pim:artifact; @file-name = fileName. Manifestation (owned by
     the artifact, or anywhere with client = the artifact): element =
@@ -39,6 +42,7 @@
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
     xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
     xmlns:x="urn:robomda:import:xmi"
     xmlns:mp="urn:robomda:xslt:mode:private"
@@ -75,7 +79,19 @@
       <!-- a robot Device's kinematic chain, counted in its URDF file (urdf.xsl) -->
       <xsl:sequence select="$chains(fp:id(.))"/>
       <xsl:apply-templates select="ownedAttribute[not(@x:type = 'Port')]" mode="mp:feature"/>
-      <xsl:for-each select="deployment[@x:type eq 'Deployment']
+      <!-- a deployment owned here whose client is another element is that
+           one's (IMP117 when it is a node: imported there, once) -->
+      <xsl:variable name="node" as="element()" select="."/>
+      <xsl:variable name="elsewhere" as="element()*"
+          select="deployment[@x:type eq 'Deployment'][exists(fp:targets(., 'client') except $node)]"/>
+      <xsl:for-each select="$elsewhere">
+        <xsl:variable name="client" as="element()*" select="fp:targets(., 'client')[@x:type = $node-metas]"/>
+        <xsl:if test="exists($client)">
+          <xsl:sequence select="f:warn('IMP117', fp:id(.), fp:label(.) || ' is owned by ' || fp:label($node) || ' but its client is '
+              || string-join($client ! fp:label(.), ', ') || ': it deploys there (its client), not on its owner')"/>
+        </xsl:if>
+      </xsl:for-each>
+      <xsl:for-each select="(deployment[@x:type eq 'Deployment'] except $elsewhere)
                             | key('fp:dep-by-client', fp:id(.))[@x:type eq 'Deployment']">
         <xsl:variable name="deployed" as="xs:string*"
             select="distinct-values((fp:targets(., 'deployedArtifact'), fp:targets(., 'supplier')) ! fp:id(.))"/>
