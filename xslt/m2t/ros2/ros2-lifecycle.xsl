@@ -23,6 +23,9 @@
     on_deactivate the timer cancelled; stop(); publishers deactivated
     on_cleanup    cleanup(); every entity released
     on_shutdown   stop() if active, cleanup() if configured
+    destructor    the shutdown transition if not finalized (rclcpp after
+                  Jazzy warns of a lifecycle node destroyed unfinalized),
+                  then stop() / cleanup() if that transition could not run
   A hook that returns false fails its transition (the node stays where it
   was). step() runs only while active (running_), so nothing is published
   and update() is not called otherwise.
@@ -106,6 +109,7 @@
         '#include &lt;chrono&gt;',
         '#include &lt;cstdint&gt;',
         '#include &lt;functional&gt;',
+        '#include &lt;lifecycle_msgs/msg/state.hpp&gt;',
         '#include &lt;rclcpp_components/register_node_macro.hpp&gt;',
         '',
         concat('namespace ', $package, ' {'),
@@ -120,6 +124,11 @@
         '',
         concat($class, '::~', $class, '()'),
         '{',
+        '  // finalized before it goes (its container stopping): on_shutdown winds the atomic code down',
+        '  if (get_current_state().id() != lifecycle_msgs::msg::State::PRIMARY_STATE_FINALIZED) {',
+        '    shutdown();',
+        '  }',
+        '  // and so here, where that transition could not run (the context already shut down)',
         fp:ros2-wind-down($stop, $cleanup),
         '}',
         fp:ros2-transition($class, 'configure', (fp:ros2-hook-calls($node, 'configure', true()), fp:ros2-entities($node),
