@@ -1,4 +1,4 @@
-"""Watch mode (robomda.watch, ``robomda watch``): what regenerates, what a failed save leaves, the one line.
+"""Watch mode (robomda.watcher, ``robomda watch``): what regenerates, what a failed save leaves, the one line.
 
 Driven poll by poll (no sleeping, no timing): a "save" rewrites a file and
 moves its modification time on explicitly, so two saves within the file
@@ -17,7 +17,7 @@ from robomda.api import generate
 from robomda.cli import main
 from robomda.inputs import model_files
 from robomda.output import STATE_FILE
-from robomda.watch import Watcher, output_folders
+from robomda.watcher import Watcher, output_folders
 
 ROOT = Path(__file__).resolve().parent.parent
 CASES = ROOT / "fixtures" / "cases"

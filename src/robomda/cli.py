@@ -202,7 +202,7 @@ def _check(args: argparse.Namespace) -> int:
 
 def _watch(args: argparse.Namespace) -> int:
     from robomda.api import PackageInfo
-    from robomda.watch import Regeneration, watch
+    from robomda.watcher import Regeneration, watch
 
     if args.polls is not None and args.polls < 1 or args.interval < 0:
         print("robomda: --polls needs a positive number and --interval a non-negative one", file=sys.stderr)
