@@ -75,7 +75,7 @@ class RunResult:
     """Each step's output text, in order; ``output`` is the last one."""
 
     stages: dict[str, str] = field(default_factory=dict)
-    tree: etree._Element | None = None
+    tree: etree._Element | None = None  # the last step's lxml tree (an earlier step's is dropped once checked)
     # per step: (name, seconds in XSLT, in XSD validation, in Schematron rules)
     timings: list[tuple[str, float, float, float]] = field(default_factory=list)
     # warnings and infos: from the stylesheets (f:warn) and from the rules,
@@ -149,7 +149,8 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
     ``resume``: an earlier run on the same model (e.g. the import chain that
     found the model's targets). The leading steps that it ran with the same
     stylesheet, parameters, schema and rules are taken from it, with their
-    warnings, instead of being run again.
+    warnings, instead of being run again. Its tree is handed over
+    (``resume.tree`` is None afterwards; a later resume parses its text).
     """
     locator = XmiLocator(model, tuple(Path(unquote(urlparse(u).path)) for u in context.get("model-path", "").split()))
     result = RunResult()
@@ -166,14 +167,20 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
             # the rules this chain checks on the step and the earlier run did not
             pending = tuple(c for c in step.checks if c not in checked)
             result.stages[step.name] = previous = resume.stages[step.name]
-            # the step's tree: the earlier run kept its last one; another is
-            # parsed only when rules or the caller need it
-            result.tree = (resume.tree if index == len(resume.done) - 1
-                           else parse(previous) if pending or index == len(chain) - 1 else None)
+            # the step's tree: the earlier run kept its last one and hands it
+            # over (one lxml tree alive at a time); another is parsed only
+            # when rules or the caller need it
+            kept = resume.tree if index == len(resume.done) - 1 else None
+            if kept is not None:
+                resume.tree = None
+            result.tree = kept if kept is not None else parse(previous) if pending or index == len(chain) - 1 else None
             result.warnings = list(resume.warnings[:warned])
-            result.timings.append(resume.timings[index])
+            checking = time.perf_counter()
             _checks(pending, result, step, locator)
+            name, xslt, xsd, rules = resume.timings[index]
+            result.timings.append((name, xslt, xsd, rules + time.perf_counter() - checking))
             result.done.append((key, len(result.warnings), step.checks))
+            _drop_tree(result, index, chain)
             continue
         started = time.perf_counter()
         try:
@@ -193,21 +200,28 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
         if errors:  # reported without stopping: an error all the same
             raise RobomdaError(result.warnings + errors, EXIT_FINDINGS)
         transformed = time.perf_counter()
-        tree, violations = validate(text, step.schema)
+        result.tree, violations = validate(text, step.schema)
         validated = time.perf_counter()
         if violations:
             raise RobomdaError([
                 locator.diagnostic("SCHEMA", f"the {step.name} step wrote a model that breaks "
                                    f"{step.schema.name}: {v.reason} at {v.path}", v.element_id, step=step.name)
                 for v in violations], EXIT_INTERNAL)
-        result.tree = tree
         _checks(step.checks, result, step, locator)
         result.timings.append((step.name, transformed - started, validated - transformed,
                                time.perf_counter() - validated))
         result.stages[step.name] = text
         result.done.append((key, len(result.warnings), step.checks))
+        _drop_tree(result, index, chain)
         previous = handed if handed is not None else text
     return result
+
+
+def _drop_tree(result: RunResult, index: int, chain: tuple[Step, ...]) -> None:
+    """Forget the lxml tree of step ``index`` once its rules ran, unless it is the chain's last (the caller's):
+    the next step's tree is parsed without it alive (at 10,000 components each is 0.3 to 0.6 GiB)."""
+    if index < len(chain) - 1:
+        result.tree = None
 
 
 def _checks(checks: tuple[Check, ...], result: RunResult, step: Step, locator: XmiLocator) -> None:
