@@ -52,7 +52,8 @@ _IDENTITY = """<xsl:stylesheet version="3.0" xmlns:xsl="http://www.w3.org/1999/X
 
 def _one(size: int, workdir: Path) -> dict[str, object]:
     """Measure one size in this process (called in a child process)."""
-    from robomda.api import _engine, generate
+    from robomda.api import generate
+    from robomda.engine import shared
 
     warm = write_model(2, workdir / "warm.xmi")
     generate(warm, workdir / "warm-out")
@@ -64,7 +65,7 @@ def _one(size: int, workdir: Path) -> dict[str, object]:
 
     identity = workdir / "identity.xsl"
     identity.write_text(_IDENTITY)
-    engine = _engine()
+    engine = shared()
     engine.transform(identity, {}, source_file=warm)
     started = time.perf_counter()
     engine.transform(identity, {}, source_file=model)

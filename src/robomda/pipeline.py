@@ -75,7 +75,10 @@ class RunResult:
     """Each step's output text, in order; ``output`` is the last one."""
 
     stages: dict[str, str] = field(default_factory=dict)
-    tree: etree._Element | None = None  # the last step's lxml tree (an earlier step's is dropped once checked)
+    # the file set's lxml tree (the last step of a chain that yields files), for
+    # the writer; no other stage is held as an lxml tree (0.3 to 0.6 GiB each
+    # at 10,000 components)
+    tree: etree._Element | None = None
     # per step: (name, seconds in XSLT, in XSD validation, in Schematron rules)
     timings: list[tuple[str, float, float, float]] = field(default_factory=list)
     # warnings and infos: from the stylesheets (f:warn) and from the rules,
@@ -149,8 +152,7 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
     ``resume``: an earlier run on the same model (e.g. the import chain that
     found the model's targets). The leading steps that it ran with the same
     stylesheet, parameters, schema and rules are taken from it, with their
-    warnings, instead of being run again. Its tree is handed over
-    (``resume.tree`` is None afterwards; a later resume parses its text).
+    warnings, instead of being run again.
     """
     locator = XmiLocator(model, tuple(Path(unquote(urlparse(u).path)) for u in context.get("model-path", "").split()))
     result = RunResult()
@@ -166,26 +168,23 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
             _, warned, checked = resume.done[index]
             # the rules this chain checks on the step and the earlier run did not
             pending = tuple(c for c in step.checks if c not in checked)
-            result.stages[step.name] = previous = resume.stages[step.name]
-            # the step's tree: the earlier run kept its last one and hands it
-            # over (one lxml tree alive at a time); another is parsed only
-            # when rules or the caller need it
-            kept = resume.tree if index == len(resume.done) - 1 else None
-            if kept is not None:
-                resume.tree = None
-            result.tree = kept if kept is not None else parse(previous) if pending or index == len(chain) - 1 else None
+            text = result.stages[step.name] = previous = resume.stages[step.name]
+            result.tree = parse(text) if _writes_files(pipeline, index) else None
             result.warnings = list(resume.warnings[:warned])
             checking = time.perf_counter()
-            _checks(pending, result, step, locator)
+            if pending:  # the rules run on its tree in Saxon, which the next step then reads
+                previous = engine.parse(text)
+                _checks(pending, result, step, locator, previous, text, engine)
             name, xslt, xsd, rules = resume.timings[index]
             result.timings.append((name, xslt, xsd, rules + time.perf_counter() - checking))
             result.done.append((key, len(result.warnings), step.checks))
-            _drop_tree(result, index, chain)
             continue
         started = time.perf_counter()
         try:
-            # every stage but the last keeps its tree for the next one
-            text, handed = engine.run(step.stylesheet, params, previous, keep_tree=index < len(chain) - 1)
+            # every stage but the last keeps its tree for the next one, and
+            # every stage with rules for them
+            text, handed = engine.run(step.stylesheet, params, previous,
+                                      keep_tree=index < len(chain) - 1 or bool(step.checks))
         except TransformError as exc:
             failure = _transform_failure(exc, step, locator)
             found, errors = _messages(engine.messages, step, locator)
@@ -200,34 +199,36 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
         if errors:  # reported without stopping: an error all the same
             raise RobomdaError(result.warnings + errors, EXIT_FINDINGS)
         transformed = time.perf_counter()
-        result.tree, violations = validate(text, step.schema)
+        # an lxml tree for the writer only: the rules run on Saxon's tree,
+        # and a valid model is validated as it is parsed
+        result.tree, violations = validate(text, step.schema, keep_tree=_writes_files(pipeline, index))
         validated = time.perf_counter()
         if violations:
             raise RobomdaError([
                 locator.diagnostic("SCHEMA", f"the {step.name} step wrote a model that breaks "
                                    f"{step.schema.name}: {v.reason} at {v.path}", v.element_id, step=step.name)
                 for v in violations], EXIT_INTERNAL)
-        _checks(step.checks, result, step, locator)
+        _checks(step.checks, result, step, locator, handed, text, engine)
         result.timings.append((step.name, transformed - started, validated - transformed,
                                time.perf_counter() - validated))
         result.stages[step.name] = text
         result.done.append((key, len(result.warnings), step.checks))
-        _drop_tree(result, index, chain)
         previous = handed if handed is not None else text
     return result
 
 
-def _drop_tree(result: RunResult, index: int, chain: tuple[Step, ...]) -> None:
-    """Forget the lxml tree of step ``index`` once its rules ran, unless it is the chain's last (the caller's):
-    the next step's tree is parsed without it alive (at 10,000 components each is 0.3 to 0.6 GiB)."""
-    if index < len(chain) - 1:
-        result.tree = None
+def _writes_files(pipeline: Pipeline, index: int) -> bool:
+    """Whether step ``index`` of ``pipeline`` makes the file set, whose lxml tree the writer reads."""
+    return pipeline.yields == "files" and index == len(pipeline.steps) - 1
 
 
-def _checks(checks: tuple[Check, ...], result: RunResult, step: Step, locator: XmiLocator) -> None:
-    """Run ``checks`` on ``result.tree``; their warnings join ``result``; an error stops the run."""
+def _checks(checks: tuple[Check, ...], result: RunResult, step: Step, locator: XmiLocator, source: Tree | None,
+            text: str, engine: Engine) -> None:
+    """Run ``checks`` on the step's model (``source``: its tree in Saxon; ``text``: the same, parsed by
+    lxml only to locate findings); their warnings join ``result``; an error stops the run."""
+    tree = result.tree if result.tree is not None else functools.cache(lambda: parse(text))
     for check in checks:
-        found = run_rules(check.rules, check.phase, result.tree, locator, step.name)
+        found = run_rules(check.rules, check.phase, tree, locator, step.name, source=source, engine=engine)
         if any(d.severity == "error" for d in found):
             raise RobomdaError(result.warnings + found, EXIT_FINDINGS)
         result.warnings.extend(found)
