@@ -31,7 +31,7 @@ from robomda.diagnostics import (
 )
 from robomda.engine import Engine, TransformError, Tree
 from robomda.resources import resource_root
-from robomda.rules import run_rules
+from robomda.rules import SAXON_FROM, run_rules
 from robomda.validate import parse, schema_of, validate
 
 __all__ = ["Param", "Check", "Step", "Pipeline", "RunResult", "load", "run"]
@@ -225,10 +225,12 @@ def _writes_files(pipeline: Pipeline, index: int) -> bool:
 def _checks(checks: tuple[Check, ...], result: RunResult, step: Step, locator: XmiLocator, source: Tree | None,
             text: str, engine: Engine) -> None:
     """Run ``checks`` on the step's model (``source``: its tree in Saxon; ``text``: the same, parsed by
-    lxml only to locate findings); their warnings join ``result``; an error stops the run."""
+    lxml for a small model's rules and to locate findings); their warnings join ``result``; an error
+    stops the run."""
     tree = result.tree if result.tree is not None else functools.cache(lambda: parse(text))
+    on_saxon = source if len(text) >= SAXON_FROM else None  # see robomda.rules
     for check in checks:
-        found = run_rules(check.rules, check.phase, tree, locator, step.name, source=source, engine=engine)
+        found = run_rules(check.rules, check.phase, tree, locator, step.name, source=on_saxon, engine=engine)
         if any(d.severity == "error" for d in found):
             raise RobomdaError(result.warnings + found, EXIT_FINDINGS)
         result.warnings.extend(found)

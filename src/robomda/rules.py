@@ -4,10 +4,12 @@ The rules live in ``schemas/*/1/*.sch`` next to the XSD of the model they
 check. They use the standard XSLT 1.0 query binding (with ``xsl:key`` for
 look-ups), so any ISO Schematron engine runs them unchanged. robomda
 compiles each rule set once per process to XSLT with lxml's ISO Schematron
-implementation (the ISO reference skeleton), and runs that stylesheet in
-SaxonC, on the tree of the stage Saxon already holds: no lxml tree of the
-stage is needed unless a finding must be located (at 10,000 components
-such a tree is 0.3 to 0.6 GiB).
+implementation (the ISO reference skeleton). On a large model that
+stylesheet runs in SaxonC, on the tree of the stage Saxon already holds, so
+no lxml tree of the stage is needed unless a finding must be located (at
+10,000 components such a tree is 0.3 to 0.6 GiB); on a small one (below
+:data:`SAXON_FROM` characters) it runs on libxslt, as compiling it for
+Saxon would cost more than the whole check.
 
 Each finding of the SVRL report becomes a :class:`Diagnostic`: the code is
 the assert's or report's ``id``, the severity its ``role`` (``error`` when
@@ -27,7 +29,7 @@ from lxml import etree, isoschematron
 from robomda.diagnostics import Diagnostic, XmiLocator, model_element_id
 from robomda.engine import Engine, Tree, shared
 
-__all__ = ["Finding", "findings", "run_rules", "SEVERITIES"]
+__all__ = ["Finding", "findings", "run_rules", "SEVERITIES", "SAXON_FROM"]
 
 SEVERITIES = ("error", "warning", "info")
 _SVRL = "http://purl.oclc.org/dsdl/svrl"
@@ -43,37 +45,46 @@ class Finding:
     xmi_id: str | None
 
 
+# a model of fewer characters has its rules run on libxslt: parsing it for
+# lxml costs less than compiling the rules for Saxon (0.03 s a fresh command);
+# a larger one in Saxon, on the tree Saxon holds (no lxml tree of it)
+SAXON_FROM = 1 << 20
+
+
 @functools.lru_cache(maxsize=None)
-def _as_xslt(rules: Path, phase: str | None) -> str:
-    """The rule set compiled to an XSLT 1.0 stylesheet that writes the SVRL report (once per process)."""
+def _compiled(rules: Path, phase: str | None) -> isoschematron.Schematron:
+    """The rule set compiled by the ISO skeleton (once per process): runs on libxslt, and its XSLT
+    (XSLT 1.0, writing the SVRL report) on Saxon."""
     # no svrl:fired-rule per matched element: only failures and reports are
     # read, and the full trace was larger than the model itself
-    schematron = isoschematron.Schematron(etree.parse(str(rules)), phase=phase, store_xslt=True,
-                                          compile_params={"generate-fired-rule": "'false'"})
-    return str(schematron.validator_xslt)
+    return isoschematron.Schematron(etree.parse(str(rules)), phase=phase, store_report=True, store_xslt=True,
+                                    compile_params={"generate-fired-rule": "'false'"})
 
 
-def _report(rules: Path, phase: str | None, source: Tree, engine: Engine) -> etree._Element:
-    """The SVRL report of ``rules`` on ``source``, run in SaxonC."""
+def _report(rules: Path, phase: str | None, tree: etree._Element | Callable[[], etree._Element],
+            source: Tree | None, engine: Engine | None) -> etree._Element:
+    """The SVRL report of ``rules``: run in SaxonC on ``source``, else on libxslt on ``tree``."""
+    compiled = _compiled(rules, phase)
+    if source is None:
+        compiled.validate(_tree(tree))
+        return compiled.validation_report.getroot()
+    engine = engine or shared()
     name = rules.with_name(f"{rules.name}.{phase or 'all'}.xsl")  # what the compiled rules are known by
-    engine.compile(name, _as_xslt(rules, phase))
+    engine.compile(name, str(compiled.validator_xslt))
     return etree.fromstring(engine.run(name, {}, source, keep_tree=False)[0].encode("utf-8"))
 
 
-def findings(rules: Path, phase: str | None, tree: etree._Element, *, source: Tree | None = None,
-             engine: Engine | None = None) -> list[Finding]:
+def findings(rules: Path, phase: str | None, tree: etree._Element | Callable[[], etree._Element], *,
+             source: Tree | None = None, engine: Engine | None = None) -> list[Finding]:
     """Every failed assert and successful report of ``rules`` on a model, in report order.
 
-    The rules run on ``source``, the model's tree in Saxon (without one, on
-    ``tree`` handed to Saxon as text); ``tree``, the model's lxml tree, or a
-    function that makes it, locates the findings, and is asked for only when
-    there are some.
+    The rules run in SaxonC on ``source``, the model's tree there, when
+    given, else on libxslt on ``tree``, its lxml tree; ``tree`` (or a
+    function that makes it) also locates the findings, and is asked for
+    only when there are some.
     """
-    engine = engine or shared()
-    if source is None:
-        source = engine.parse(etree.tostring(_tree(tree), encoding="unicode"))
-    found = list(_report(rules, phase, source, engine).iter(f"{{{_SVRL}}}failed-assert",
-                                                          f"{{{_SVRL}}}successful-report"))
+    found = list(_report(rules, phase, tree, source, engine).iter(f"{{{_SVRL}}}failed-assert",
+                                                                  f"{{{_SVRL}}}successful-report"))
     if not found:
         return []
     doc = _tree(tree).getroottree()
