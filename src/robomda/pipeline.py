@@ -172,7 +172,7 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
             result.tree = parse(text) if _writes_files(pipeline, index) else None
             result.warnings = list(resume.warnings[:warned])
             checking = time.perf_counter()
-            if pending:  # the rules run on its tree in Saxon, which the next step then reads
+            if pending:  # its tree in Saxon: a large model's rules run on it, and the next step reads it
                 previous = engine.parse(text)
                 _checks(pending, result, step, locator, previous, text, engine)
             name, xslt, xsd, rules = resume.timings[index]
