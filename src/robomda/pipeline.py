@@ -171,9 +171,10 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
             text = result.stages[step.name] = previous = resume.stages[step.name]
             result.tree = parse(text) if _writes_files(pipeline, index) else None
             result.warnings = list(resume.warnings[:warned])
-            checking = time.perf_counter()
             if pending:  # its tree in Saxon: a large model's rules run on it, and the next step reads it
                 previous = engine.parse(text)
+            checking = time.perf_counter()
+            if pending:
                 _checks(pending, result, step, locator, previous, text, engine)
             name, xslt, xsd, rules = resume.timings[index]
             result.timings.append((name, xslt, xsd, rules + time.perf_counter() - checking))
