@@ -175,7 +175,7 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
                 previous = engine.parse(text)
             checking = time.perf_counter()
             if pending:
-                _checks(pending, result, step, locator, previous, text, engine)
+                _checks(pending, result, step, locator, result.tree, previous, text, engine)
             name, xslt, xsd, rules = resume.timings[index]
             result.timings.append((name, xslt, xsd, rules + time.perf_counter() - checking))
             result.done.append((key, len(result.warnings), step.checks))
@@ -200,16 +200,20 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
         if errors:  # reported without stopping: an error all the same
             raise RobomdaError(result.warnings + errors, EXIT_FINDINGS)
         transformed = time.perf_counter()
-        # an lxml tree for the writer only: the rules run on Saxon's tree,
-        # and a valid model is validated as it is parsed
-        result.tree, violations = validate(text, step.schema, keep_tree=_writes_files(pipeline, index))
+        # an lxml tree for the writer, and for a small stage's rules (libxslt);
+        # a large stage's rules run on Saxon's tree, and a valid large stage
+        # is validated as it is parsed
+        writes = _writes_files(pipeline, index)
+        tree, violations = validate(text, step.schema,
+                                    keep_tree=writes or bool(step.checks) and len(text) < SAXON_FROM)
+        result.tree = tree if writes else None
         validated = time.perf_counter()
         if violations:
             raise RobomdaError([
                 locator.diagnostic("SCHEMA", f"the {step.name} step wrote a model that breaks "
                                    f"{step.schema.name}: {v.reason} at {v.path}", v.element_id, step=step.name)
                 for v in violations], EXIT_INTERNAL)
-        _checks(step.checks, result, step, locator, handed, text, engine)
+        _checks(step.checks, result, step, locator, tree, handed, text, engine)
         result.timings.append((step.name, transformed - started, validated - transformed,
                                time.perf_counter() - validated))
         result.stages[step.name] = text
@@ -223,15 +227,15 @@ def _writes_files(pipeline: Pipeline, index: int) -> bool:
     return pipeline.yields == "files" and index == len(pipeline.steps) - 1
 
 
-def _checks(checks: tuple[Check, ...], result: RunResult, step: Step, locator: XmiLocator, source: Tree | None,
-            text: str, engine: Engine) -> None:
-    """Run ``checks`` on the step's model (``source``: its tree in Saxon; ``text``: the same, parsed by
-    lxml for a small model's rules and to locate findings); their warnings join ``result``; an error
-    stops the run."""
-    tree = result.tree if result.tree is not None else functools.cache(lambda: parse(text))
+def _checks(checks: tuple[Check, ...], result: RunResult, step: Step, locator: XmiLocator,
+            tree: etree._Element | None, source: Tree | None, text: str, engine: Engine) -> None:
+    """Run ``checks`` on the step's model (``tree``: its lxml tree, if parsed; ``source``: its tree in
+    Saxon; ``text``: the same, parsed by lxml when a small model's rules or a finding's location need
+    it); their warnings join ``result``; an error stops the run."""
+    lxml_tree = tree if tree is not None else functools.cache(lambda: parse(text))
     on_saxon = source if len(text) >= SAXON_FROM else None  # see robomda.rules
     for check in checks:
-        found = run_rules(check.rules, check.phase, tree, locator, step.name, source=on_saxon, engine=engine)
+        found = run_rules(check.rules, check.phase, lxml_tree, locator, step.name, source=on_saxon, engine=engine)
         if any(d.severity == "error" for d in found):
             raise RobomdaError(result.warnings + found, EXIT_FINDINGS)
         result.warnings.extend(found)
