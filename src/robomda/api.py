@@ -14,22 +14,12 @@ from lxml import etree
 
 from robomda import pipeline as pipelines
 from robomda.diagnostics import EXIT_FINDINGS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, Diagnostic, RobomdaError
-from robomda.engine import Engine
+from robomda.engine import shared
 from robomda.output import WriteReport, write_fileset
 from robomda.resources import available_targets, default_target, pipeline_path, target_of_middleware
+from robomda.validate import stream
 
 __all__ = ["generate", "import_model", "check", "targets", "default_targets", "Generated", "Checked", "PackageInfo"]
-
-_ENGINE: Engine | None = None
-
-
-def _engine() -> Engine:
-    """The process's one Saxon engine (stylesheets stay compiled across calls)."""
-    global _ENGINE
-    if _ENGINE is None:
-        _ENGINE = Engine()
-    return _ENGINE
-
 
 def targets() -> list[str]:
     """The middleware targets ``generate`` knows."""
@@ -94,7 +84,7 @@ def _run(chain: pipelines.Pipeline, model: Path, context: dict[str, str], *,
     if resume is not None and unread:  # the earlier run's warnings start with them: _run put them there
         resume = dataclasses.replace(resume, warnings=resume.warnings[len(unread):])
     try:
-        result = pipelines.run(chain, _engine(), model, context, steps=steps, resume=resume)
+        result = pipelines.run(chain, shared(), model, context, steps=steps, resume=resume)
     except RobomdaError as exc:
         if exc.exit_code == EXIT_INTERNAL:
             _check_well_formed(model)
@@ -249,7 +239,7 @@ def check(model: Path | str, target: str | None = None, *, package_name: str = "
         shared = run_until_text("check")
         if shared is None:
             return Checked(diagnostics, ["model"], exit_code, rule_sets)
-        chosen = _targets_of(shared.tree) or [default_target()]
+        chosen = _targets_of(shared.output) or [default_target()]
         diagnostics.clear()  # the targets' runs repeat the shared findings
     for name in chosen:
         run_until_text(name, shared)
@@ -276,11 +266,10 @@ def _rule_ids(rules: Path) -> frozenset[str]:
                                 namespaces={"sch": "http://purl.oclc.org/dsdl/schematron"}))
 
 
-def _targets_of(bound_pim: etree._Element | None) -> list[str]:
-    """The targets of the middlewares the instances of a bound PIM are deployed on, in target order."""
-    if bound_pim is None:
-        return []
-    deployed = {i.get("middleware") for i in bound_pim.iter("{urn:robomda:pim:1}instance")}
+def _targets_of(bound_pim: str) -> list[str]:
+    """The targets of the middlewares the instances of a bound PIM (its text) are deployed on, in target
+    order (read as a stream: no tree of the whole model for a few attributes)."""
+    deployed = {e.get("middleware") for e in stream(bound_pim) if e.tag == "{urn:robomda:pim:1}instance"}
     served = target_of_middleware()
     return [t for t in available_targets() if any(served.get(m) == t for m in deployed)]
 
@@ -296,7 +285,7 @@ def _default_targets(model: Path, context: dict[str, str]) -> tuple[list[str], p
     """:func:`default_targets` of a readable ``model``, and the import run that found them (a
     target's chain resumes from it)."""
     bound = _run(pipelines.load(pipeline_path("import")), model, context)
-    return _targets_of(bound.tree) or [default_target()], bound
+    return _targets_of(bound.output) or [default_target()], bound
 
 
 def _add(into: list[Diagnostic], found: list[Diagnostic]) -> None:

@@ -48,12 +48,12 @@ from dataclasses import dataclass, field
 from multiprocessing import get_context
 from pathlib import Path
 from typing import Callable, Sequence
-from urllib.parse import unquote
 
 from lxml import etree
 
 from robomda import __version__
-from robomda.diagnostics import EXIT_INTERNAL, EXIT_OK, Diagnostic, RobomdaError, file_ref_path, linked_files
+from robomda.diagnostics import EXIT_OK, as_error, linked_files
+from robomda.inputs import urdf_files
 from robomda.output import STATE_FILE as OUTPUT_STATE
 from robomda.output import atomic_write
 from robomda.resources import resource_root
@@ -175,12 +175,10 @@ def _generate_one(model: str, out: str, target: str | None, package_name: str, t
                         package=PackageInfo(*package), model_path=model_path)
         result.files_written = len(done.report.written) if done.report else 0
         result.diagnostics = [w.format() for w in done.warnings]
-    except RobomdaError as exc:
-        result.status, result.exit_code = "failed", exc.exit_code
-        result.diagnostics = [d.format() for d in exc.diagnostics]
     except Exception as exc:  # noqa: BLE001 - one model's bug must not stop the batch
-        result.status, result.exit_code = "failed", EXIT_INTERNAL
-        result.diagnostics = [Diagnostic("error", "INTERNAL", f"{type(exc).__name__}: {exc}", file=model).format()]
+        failed = as_error(exc, model)
+        result.status, result.exit_code = "failed", failed.exit_code
+        result.diagnostics = [d.format() for d in failed.diagnostics]
     result.seconds = time.perf_counter() - started
     return result
 
@@ -198,34 +196,10 @@ def _input_hash(model: Path, linked: list[Path]) -> str:
     digest = hashlib.sha256(model.read_bytes())
     for path in linked:
         digest.update(b"\0" + path.as_posix().encode() + b"\0" + path.read_bytes())
-    for path in [urdf for source in (model, *linked) for urdf in _urdf_files(source)]:
+    for path in [urdf for source in (model, *linked) for urdf in urdf_files(source)]:
         digest.update(b"\0urdf\0" + path.as_posix().encode() + b"\0"
                       + (path.read_bytes() if path.is_file() else b"(missing)"))
     return digest.hexdigest()
-
-
-_PROFILE_URI = "http://robomda.org/profile/robomda/1"
-
-
-def _urdf_files(model: Path) -> list[Path]:
-    """The URDF files the «Robot» stereotype applications of ``model`` name (tag urdf), as the import reads
-    them (xslt/import/urdf.xsl: relative to the model file; no other URI scheme than file:), there or not."""
-    try:
-        root = etree.parse(str(model), etree.XMLParser(huge_tree=True, resolve_entities=False,
-                                                       no_network=True)).getroot()
-    except (OSError, etree.XMLSyntaxError):
-        return []
-    found = []
-    for app in root:
-        if not isinstance(app.tag, str) or etree.QName(app).localname != "Robot":
-            continue
-        if (app.prefix or "").lower() != "robomda" and etree.QName(app).namespace != _PROFILE_URI:
-            continue
-        named = (app.get("urdf") or app.findtext("urdf") or "").strip().replace("\\", "/")
-        path = file_ref_path(unquote(named), model.parent) if named else None
-        if path is not None:
-            found.append(Path(os.path.normpath(path)))
-    return found
 
 
 def run_batch(folder: Path, out: Path, target: str | None = None, *, package_name: str = "", jobs: int | None = None,

@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 import argparse
+import itertools
 import signal
 import sys
+import time
 from pathlib import Path
 
 from robomda import __version__
-from robomda.diagnostics import EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, Diagnostic, RobomdaError
+from robomda.diagnostics import EXIT_INPUT, EXIT_OK, Diagnostic, RobomdaError, as_error
 from robomda.formats import FORMATS, render
 from robomda.resources import available_targets as targets
 
@@ -27,6 +29,23 @@ _EXIT_CODES = """exit codes:
   2  usage error, or input that cannot be read (missing, not XML, not UML XMI)
   3  internal error in robomda (please report it with the model)
   130 / 143  interrupted by SIGINT (Ctrl-C) / SIGTERM: no output folder is half-written"""
+
+
+def _package_options(parser: argparse.ArgumentParser) -> None:
+    """The options of what a package is made from and named: generate and watch share them."""
+    parser.add_argument("--maintainer", default="", metavar="'NAME <E-MAIL>'",
+                        help="the package maintainer written in package.xml")
+    parser.add_argument("--license", default="", metavar="LICENSE", help="the package license (e.g. Apache-2.0)")
+    parser.add_argument("--package-version", default="", metavar="X.Y.Z", help="the package version (default 0.0.0)")
+    parser.add_argument("-t", "--target", default=None, choices=targets(),
+                        help="middleware target (default: the one the model deploys on; Orocos if it deploys on none)")
+    parser.add_argument("--package-name", default="", metavar="NAME",
+                        help="package / CMake project name (default: derived from the model name)")
+    parser.add_argument("--type-map", type=Path, metavar="FILE",
+                        help="ROS targets: your message type map (format of xslt/m2m/ros/types.xml); its entries win")
+    parser.add_argument("--model-path", type=Path, action="append", default=[], metavar="DIR",
+                        help="a folder of model files your model references (libraries kept elsewhere); "
+                             "repeat for several. Without it only files in the model's own folder are read")
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -52,19 +71,7 @@ def _parser() -> argparse.ArgumentParser:
                      help="folder mode: models generated in parallel (default: number of CPUs)")
     gen.add_argument("--force", action="store_true",
                      help="folder mode: regenerate models whose input and stylesheets did not change")
-    gen.add_argument("--maintainer", default="", metavar="'NAME <E-MAIL>'",
-                     help="the package maintainer written in package.xml")
-    gen.add_argument("--license", default="", metavar="LICENSE", help="the package license (e.g. Apache-2.0)")
-    gen.add_argument("--package-version", default="", metavar="X.Y.Z", help="the package version (default 0.0.0)")
-    gen.add_argument("-t", "--target", default=None, choices=targets(),
-                     help="middleware target (default: the one the model deploys on; Orocos if it deploys on none)")
-    gen.add_argument("--package-name", default="", metavar="NAME",
-                     help="package / CMake project name (default: derived from the model name)")
-    gen.add_argument("--type-map", type=Path, metavar="FILE",
-                     help="ROS targets: your message type map (format of xslt/m2m/ros/types.xml); its entries win")
-    gen.add_argument("--model-path", type=Path, action="append", default=[], metavar="DIR",
-                     help="a folder of model files your model references (libraries kept elsewhere); "
-                          "repeat for several. Without it only files in the model's own folder are read")
+    _package_options(gen)
     gen.add_argument("--save-stages", type=Path, metavar="DIR",
                      help="also write every intermediate model (PIM, PSM, file set) into DIR")
     gen.add_argument("--format", default="text", choices=FORMATS,
@@ -86,6 +93,23 @@ def _parser() -> argparse.ArgumentParser:
     chk.add_argument("--package-name", default="", metavar="NAME", help="as for generate")
     chk.add_argument("--type-map", type=Path, metavar="FILE", help="as for generate")
     chk.add_argument("--model-path", type=Path, action="append", default=[], metavar="DIR", help="as for generate")
+
+    wat = sub.add_parser(
+        "watch", help="regenerate packages on each save of their models",
+        description="Generate each MODEL into OUT (one model) or into OUT/<its path below the folder that holds "
+                    "them all>, then again on each save of the model or of a file it reads (the model files it "
+                    "references, the URDF files it names, the type map), with one line of result per run. "
+                    "Stylesheets stay compiled between runs. A failed run writes nothing; the next save "
+                    "retries. Ctrl-C stops.",
+        epilog=_EXIT_CODES, formatter_class=argparse.RawDescriptionHelpFormatter)
+    wat.add_argument("models", type=Path, nargs="+", metavar="MODEL", help="the UML XMI files to watch")
+    wat.add_argument("-o", "--output", type=Path, required=True, metavar="OUT", help="output folder")
+    _package_options(wat)
+    wat.add_argument("--interval", type=float, default=0.25, metavar="SECONDS",
+                     help="how often the files are checked (default 0.25)")
+    wat.add_argument("--polls", type=int, default=None, metavar="N",
+                     help="stop after N checks (scripts and tests; default: until Ctrl-C), exit code that of "
+                          "each model's latest run, the worst")
 
     imp = sub.add_parser(
         "import", help="write the platform-independent model (PIM) of an XMI model",
@@ -176,6 +200,34 @@ def _check(args: argparse.Namespace) -> int:
     return done.exit_code
 
 
+def _watch(args: argparse.Namespace) -> int:
+    from robomda.api import PackageInfo
+    from robomda.watcher import Regeneration, watch
+
+    if args.polls is not None and args.polls < 1 or args.interval < 0:
+        print("robomda: --polls needs a positive number and --interval a non-negative one", file=sys.stderr)
+        return EXIT_INPUT
+    polls = itertools.count(1)
+    shown: dict[Path, list[str]] = {}
+
+    def show(result: Regeneration) -> None:
+        # the diagnostics when they differ from the model's last ones; always the one line of result
+        lines = [d.format() for d in result.diagnostics]
+        if lines != shown.get(result.model):
+            for line in lines:
+                print(line, file=sys.stderr)
+            shown[result.model] = lines
+        print(f"{time.strftime('%H:%M:%S')} {result.line()}", flush=True)
+
+    print(f"robomda: watching {len(args.models)} model(s) every {args.interval:g} s; Ctrl-C stops",
+          file=sys.stderr, flush=True)
+    return watch(args.models, args.output, interval=args.interval, on_result=show,
+                 stop=(lambda: next(polls) >= args.polls) if args.polls else None,
+                 target=args.target, package_name=args.package_name, type_map=args.type_map,
+                 model_path=args.model_path,
+                 package=PackageInfo(args.package_version, args.maintainer, args.license))
+
+
 class Terminated(BaseException):
     """SIGTERM, raised where Python next runs, as KeyboardInterrupt is for SIGINT."""
 
@@ -211,6 +263,8 @@ def _main(args: argparse.Namespace, fmt: str) -> int:
             return _batch(args)
         if args.command == "check":
             return _check(args)
+        if args.command == "watch":
+            return _watch(args)
         if args.command == "generate":
             done = generate(args.model, args.output, args.target, package_name=args.package_name,
                             type_map=args.type_map, model_path=args.model_path,
@@ -234,16 +288,10 @@ def _main(args: argparse.Namespace, fmt: str) -> int:
             dest = _pim_destination(args.model, args.output)
             _write_model_file(dest, text)
             print(f"robomda: PIM written to {dest}")
-    except RobomdaError as exc:
-        _report(fmt, exc.diagnostics, exc.exit_code)
-        return exc.exit_code
-    except OSError as exc:
-        _report(fmt, [Diagnostic("error", "IO001", str(exc), file=exc.filename and str(exc.filename))], EXIT_INPUT)
-        return EXIT_INPUT
-    except Exception as exc:  # noqa: BLE001 - the last guard: a bug, reported without a traceback
-        _report(fmt, [Diagnostic("error", "INTERNAL", f"{type(exc).__name__}: {exc} (please report it with "
-                                 "the model)", file=str(getattr(args, "model", "")) or None)], EXIT_INTERNAL)
-        return EXIT_INTERNAL
+    except Exception as exc:  # noqa: BLE001 - the last guard: a bug is reported without a traceback
+        failed = as_error(exc, str(getattr(args, "model", "")))
+        _report(fmt, failed.diagnostics, failed.exit_code)
+        return failed.exit_code
     return EXIT_OK
 
 

@@ -30,6 +30,7 @@ __all__ = [
     "parse_stylesheet_warning",
     "parse_stylesheet_message",
     "model_element_id",
+    "as_error",
 ]
 
 EXIT_OK = 0
@@ -95,6 +96,19 @@ class RobomdaError(Exception):
 
     def __str__(self) -> str:
         return "\n".join(d.format() for d in self.diagnostics)
+
+
+def as_error(exc: Exception, model: str | None) -> RobomdaError:
+    """What a run on ``model`` that raised ``exc`` reports: a :class:`RobomdaError` as it is, an OSError
+    as IO001 (input that cannot be read or written), anything else as INTERNAL, a bug said in one line
+    without a traceback."""
+    if isinstance(exc, RobomdaError):
+        return exc
+    if isinstance(exc, OSError):
+        return RobomdaError([Diagnostic("error", "IO001", str(exc), file=exc.filename and str(exc.filename))],
+                            EXIT_INPUT)
+    return RobomdaError([Diagnostic("error", "INTERNAL", f"{type(exc).__name__}: {exc} (please report it with "
+                                    "the model)", file=model or None)], EXIT_INTERNAL)
 
 
 def parse_stylesheet_warning(text: str) -> tuple[str, str, str] | None:

@@ -15,7 +15,7 @@ from typing import Iterator
 
 from saxonche import PySaxonApiError, PySaxonProcessor
 
-__all__ = ["Engine", "TransformError", "Tree"]
+__all__ = ["Engine", "TransformError", "Tree", "shared"]
 
 # writes a kept result tree as its text (see Engine.run)
 _SERIALIZER = """<xsl:stylesheet version="3.0" xmlns:xsl="http://www.w3.org/1999/XSL/Transform">
@@ -88,14 +88,16 @@ class Engine:
     def version(self) -> str:
         return str(self._proc.version)
 
-    def compile(self, stylesheet: Path) -> object:
-        """The compiled form of ``stylesheet`` (compiled on first use)."""
+    def compile(self, stylesheet: Path, text: str | None = None) -> object:
+        """The compiled form of ``stylesheet`` (compiled on first use), read from its file or, for a
+        stylesheet made in memory (the Schematron rules compiled to XSLT), from ``text``."""
         stylesheet = stylesheet.resolve()
         executable = self._compiled.get(stylesheet)
         if executable is None:
+            source = {"stylesheet_file": str(stylesheet)} if text is None else {"stylesheet_text": text}
             with _captured_stderr() as err:
                 try:
-                    executable = self._xslt.compile_stylesheet(stylesheet_file=str(stylesheet))
+                    executable = self._xslt.compile_stylesheet(**source)
                 except PySaxonApiError as exc:
                     failure = exc
                 else:
@@ -104,6 +106,10 @@ class Engine:
                 raise TransformError(stylesheet, str(failure or "compilation failed").strip(), "".join(err))
             self._compiled[stylesheet] = executable
         return executable
+
+    def parse(self, text: str) -> Tree:
+        """A tree of ``text`` (robomda's own XML: an earlier stage's result) to run stylesheets on."""
+        return Tree(self._proc.parse_xml(xml_text=text))
 
     def transform(self, stylesheet: Path, params: dict[str, str], *,
                   source_file: Path | None = None, source_text: str | None = None) -> str:
@@ -121,9 +127,11 @@ class Engine:
         large models). A kept tree is serialized as plain XML (UTF-8, no
         indentation), which is what every intermediate stage declares.
         """
-        executable = self.compile(stylesheet)
-        executable.clear_parameters()
-        executable.clear_xsl_messages()
+        # a clone for this run: an executable keeps its global context item,
+        # so the compiled one would hold each stage's source tree in Saxon's
+        # heap for the rest of the process (peak memory 1,040 -> 901 MiB at
+        # 4,000 components); the clone shares the compiled stylesheet
+        executable = self.compile(stylesheet).clone()
         executable.set_save_xsl_message(True, None)
         self.messages = []
         for name, value in params.items():
@@ -161,5 +169,17 @@ class Engine:
     def _serialize(self, tree: Tree) -> str:
         if self._serializer is None:
             self._serializer = self._xslt.compile_stylesheet(stylesheet_text=_SERIALIZER)
-        self._serializer.set_global_context_item(xdm_item=tree.node)
-        return self._serializer.apply_templates_returning_string(xdm_value=tree.node)
+        serializer = self._serializer.clone()  # as in run: the compiled one must not hold the tree
+        serializer.set_global_context_item(xdm_item=tree.node)
+        return serializer.apply_templates_returning_string(xdm_value=tree.node)
+
+
+_SHARED: Engine | None = None
+
+
+def shared() -> Engine:
+    """The process's one Saxon engine: every stylesheet it compiles stays compiled across runs."""
+    global _SHARED
+    if _SHARED is None:
+        _SHARED = Engine()
+    return _SHARED

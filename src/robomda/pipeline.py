@@ -31,7 +31,7 @@ from robomda.diagnostics import (
 )
 from robomda.engine import Engine, TransformError, Tree
 from robomda.resources import resource_root
-from robomda.rules import run_rules
+from robomda.rules import SAXON_FROM, run_rules
 from robomda.validate import parse, schema_of, validate
 
 __all__ = ["Param", "Check", "Step", "Pipeline", "RunResult", "load", "run"]
@@ -75,6 +75,9 @@ class RunResult:
     """Each step's output text, in order; ``output`` is the last one."""
 
     stages: dict[str, str] = field(default_factory=dict)
+    # the file set's lxml tree (the last step of a chain that yields files), for
+    # the writer; no other stage is held as an lxml tree (0.3 to 0.6 GiB each
+    # at 10,000 components)
     tree: etree._Element | None = None
     # per step: (name, seconds in XSLT, in XSD validation, in Schematron rules)
     timings: list[tuple[str, float, float, float]] = field(default_factory=list)
@@ -165,20 +168,24 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
             _, warned, checked = resume.done[index]
             # the rules this chain checks on the step and the earlier run did not
             pending = tuple(c for c in step.checks if c not in checked)
-            result.stages[step.name] = previous = resume.stages[step.name]
-            # the step's tree: the earlier run kept its last one; another is
-            # parsed only when rules or the caller need it
-            result.tree = (resume.tree if index == len(resume.done) - 1
-                           else parse(previous) if pending or index == len(chain) - 1 else None)
+            text = result.stages[step.name] = previous = resume.stages[step.name]
+            result.tree = parse(text) if _writes_files(pipeline, index) else None
             result.warnings = list(resume.warnings[:warned])
-            result.timings.append(resume.timings[index])
-            _checks(pending, result, step, locator)
+            if pending:  # its tree in Saxon: a large model's rules run on it, and the next step reads it
+                previous = engine.parse(text)
+            checking = time.perf_counter()
+            if pending:
+                _checks(pending, result, step, locator, result.tree, previous, text, engine)
+            name, xslt, xsd, rules = resume.timings[index]
+            result.timings.append((name, xslt, xsd, rules + time.perf_counter() - checking))
             result.done.append((key, len(result.warnings), step.checks))
             continue
         started = time.perf_counter()
         try:
-            # every stage but the last keeps its tree for the next one
-            text, handed = engine.run(step.stylesheet, params, previous, keep_tree=index < len(chain) - 1)
+            # every stage but the last keeps its tree for the next one, and
+            # every stage with rules for them
+            text, handed = engine.run(step.stylesheet, params, previous,
+                                      keep_tree=index < len(chain) - 1 or bool(step.checks))
         except TransformError as exc:
             failure = _transform_failure(exc, step, locator)
             found, errors = _messages(engine.messages, step, locator)
@@ -193,15 +200,20 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
         if errors:  # reported without stopping: an error all the same
             raise RobomdaError(result.warnings + errors, EXIT_FINDINGS)
         transformed = time.perf_counter()
-        tree, violations = validate(text, step.schema)
+        # an lxml tree for the writer, and for a small stage's rules (libxslt);
+        # a large stage's rules run on Saxon's tree, and a valid large stage
+        # is validated as it is parsed
+        writes = _writes_files(pipeline, index)
+        tree, violations = validate(text, step.schema,
+                                    keep_tree=writes or bool(step.checks) and len(text) < SAXON_FROM)
+        result.tree = tree if writes else None
         validated = time.perf_counter()
         if violations:
             raise RobomdaError([
                 locator.diagnostic("SCHEMA", f"the {step.name} step wrote a model that breaks "
                                    f"{step.schema.name}: {v.reason} at {v.path}", v.element_id, step=step.name)
                 for v in violations], EXIT_INTERNAL)
-        result.tree = tree
-        _checks(step.checks, result, step, locator)
+        _checks(step.checks, result, step, locator, tree, handed, text, engine)
         result.timings.append((step.name, transformed - started, validated - transformed,
                                time.perf_counter() - validated))
         result.stages[step.name] = text
@@ -210,10 +222,20 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
     return result
 
 
-def _checks(checks: tuple[Check, ...], result: RunResult, step: Step, locator: XmiLocator) -> None:
-    """Run ``checks`` on ``result.tree``; their warnings join ``result``; an error stops the run."""
+def _writes_files(pipeline: Pipeline, index: int) -> bool:
+    """Whether step ``index`` of ``pipeline`` makes the file set, whose lxml tree the writer reads."""
+    return pipeline.yields == "files" and index == len(pipeline.steps) - 1
+
+
+def _checks(checks: tuple[Check, ...], result: RunResult, step: Step, locator: XmiLocator,
+            tree: etree._Element | None, source: Tree | None, text: str, engine: Engine) -> None:
+    """Run ``checks`` on the step's model (``tree``: its lxml tree, if parsed; ``source``: its tree in
+    Saxon; ``text``: the same, parsed by lxml when a small model's rules or a finding's location need
+    it); their warnings join ``result``; an error stops the run."""
+    lxml_tree = tree if tree is not None else functools.cache(lambda: parse(text))
+    on_saxon = source if len(text) >= SAXON_FROM else None  # see robomda.rules
     for check in checks:
-        found = run_rules(check.rules, check.phase, result.tree, locator, step.name)
+        found = run_rules(check.rules, check.phase, lxml_tree, locator, step.name, source=on_saxon, engine=engine)
         if any(d.severity == "error" for d in found):
             raise RobomdaError(result.warnings + found, EXIT_FINDINGS)
         result.warnings.extend(found)
