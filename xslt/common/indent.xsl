@@ -11,7 +11,7 @@
   Public:  f:indent($doc) indents a document; mode m:indent (template
            parameter margin: a newline and the indentation of the node's
            own line) indents one node at that margin; template
-           t:indented-content (parameters children, margin) writes the
+           t:indented-content (parameters children, margin, reuse) writes the
            content of an element at that margin, its children indented
            one level deeper. The last two are for a stage that writes its
            result indented in one pass instead of building it and then
@@ -76,7 +76,9 @@
     <xsl:for-each select="$children">
       <xsl:value-of select="$inner"/>
       <xsl:choose>
-        <xsl:when test="$reuse and f:indented(., $inner)">
+        <!-- no child element (most nodes of a model): what m:indent does
+             with it, a copy, without a template -->
+        <xsl:when test="not(*) or ($reuse and f:indented(., $inner))">
           <xsl:copy-of select="."/>
         </xsl:when>
         <xsl:otherwise>
