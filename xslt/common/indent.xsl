@@ -101,19 +101,19 @@
   <xsl:function name="f:indented" as="xs:boolean">
     <xsl:param name="node" as="node()"/>
     <xsl:param name="margin" as="xs:string"/>
-    <xsl:variable name="nodes" as="node()*"
+    <xsl:variable name="children" as="node()*"
         select="if ($node instance of element() and $node/* and not($node/text()[normalize-space()]))
-                then $node/node() else ()"/>
-    <xsl:variable name="count" as="xs:integer" select="count($nodes)"/>
+                then $node/(* | comment() | processing-instruction()) else ()"/>
+    <xsl:variable name="texts" as="text()*" select="if (exists($children)) then $node/text() else ()"/>
     <xsl:variable name="inner" as="xs:string" select="$margin || '  '"/>
-    <xsl:sequence select="$count eq 0
-        or ($count mod 2 eq 1
-            and (every $i in 1 to $count satisfies
-                   (if ($i mod 2 eq 1)
-                    then $nodes[$i] instance of text()
-                         and string($nodes[$i]) eq (if ($i eq $count) then $margin else $inner)
-                    else not($nodes[$i] instance of text())))
-            and (every $child in $nodes[. instance of element()] satisfies f:indented($child, $inner)))"/>
+    <!-- two text nodes are never adjacent: as many texts as children plus
+         one, a text first and last, alternate -->
+    <xsl:sequence select="empty($children)
+        or (count($texts) eq count($children) + 1
+            and $node/node()[1] instance of text() and $node/node()[last()] instance of text()
+            and string($texts[last()]) eq $margin
+            and (every $text in $texts[position() lt last()] satisfies string($text) eq $inner)
+            and (every $child in $children[. instance of element()] satisfies f:indented($child, $inner)))"/>
   </xsl:function>
 
   <!-- anything else (empty, text-only or mixed content): as it is -->
