@@ -11,11 +11,15 @@
   Public:  f:indent($doc) indents a document; mode m:indent (template
            parameter margin: a newline and the indentation of the node's
            own line) indents one node at that margin; template
-           t:indented-content (parameters children, margin) writes the
+           t:indented-content (parameters children, margin, reuse) writes the
            content of an element at that margin, its children indented
            one level deeper. The last two are for a stage that writes its
            result indented in one pass instead of building it and then
-           copying it through f:indent.
+           copying it through f:indent. With reuse="true()",
+           t:indented-content copies a child that is indented already
+           (f:indented) as it is, with no template per node: for a stage
+           that passes on most of its input, which the stage before it
+           indented (bind.xsl).
   Errors:  none.
 
   Why: serializers indent differently (Saxon 10+ wraps long attribute
@@ -67,17 +71,50 @@
   <xsl:template name="t:indented-content" as="node()*">
     <xsl:param name="children" as="node()*"/>
     <xsl:param name="margin" as="xs:string"/>
+    <xsl:param name="reuse" as="xs:boolean" select="false()"/>
     <xsl:variable name="inner" as="xs:string" select="$margin || '  '"/>
     <xsl:for-each select="$children">
       <xsl:value-of select="$inner"/>
-      <xsl:apply-templates select="." mode="m:indent">
-        <xsl:with-param name="margin" select="$inner"/>
-      </xsl:apply-templates>
+      <xsl:choose>
+        <!-- no child element (most nodes of a model): what m:indent does
+             with it, a copy, without a template -->
+        <xsl:when test="not(*) or ($reuse and f:indented(., $inner))">
+          <xsl:copy-of select="."/>
+        </xsl:when>
+        <xsl:otherwise>
+          <xsl:apply-templates select="." mode="m:indent">
+            <xsl:with-param name="margin" select="$inner"/>
+          </xsl:apply-templates>
+        </xsl:otherwise>
+      </xsl:choose>
     </xsl:for-each>
     <xsl:if test="exists($children)">
       <xsl:value-of select="$margin"/>
     </xsl:if>
   </xsl:template>
+
+  <!-- true when mode m:indent at $margin makes of $node a copy of it:
+       $node is indented by these rules already. The element-only elements
+       are checked level by level, the text between the children first
+       (most nodes that are not indented fail there, at once), then each
+       child element -->
+  <xsl:function name="f:indented" as="xs:boolean">
+    <xsl:param name="node" as="node()"/>
+    <xsl:param name="margin" as="xs:string"/>
+    <xsl:variable name="children" as="node()*"
+        select="if ($node instance of element() and $node/* and not($node/text()[normalize-space()]))
+                then $node/(* | comment() | processing-instruction()) else ()"/>
+    <xsl:variable name="texts" as="text()*" select="if (exists($children)) then $node/text() else ()"/>
+    <xsl:variable name="inner" as="xs:string" select="$margin || '  '"/>
+    <!-- two text nodes are never adjacent: as many texts as children plus
+         one, a text first and last, alternate -->
+    <xsl:sequence select="empty($children)
+        or (count($texts) eq count($children) + 1
+            and $node/node()[1] instance of text() and $node/node()[last()] instance of text()
+            and string($texts[last()]) eq $margin
+            and (every $text in $texts[position() lt last()] satisfies string($text) eq $inner)
+            and (every $child in $children[. instance of element()] satisfies f:indented($child, $inner)))"/>
+  </xsl:function>
 
   <!-- anything else (empty, text-only or mixed content): as it is -->
   <xsl:template match="*" mode="m:indent" as="element()">

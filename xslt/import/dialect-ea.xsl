@@ -83,12 +83,18 @@
                           [some $t in fp:targets(., 'client') satisfies fp:meta($t) = ('Class', 'Component')]"/>
   </xsl:function>
 
+  <!-- $marked-id: the first id of $doc that looks like an EA or a StarUML
+       one (fp:marked-id of import.xsl), so that a file without such ids
+       is not scanned again here -->
   <xsl:function name="fp:is-ea" as="xs:boolean">
     <xsl:param name="doc" as="document-node()"/>
     <xsl:param name="exporter" as="xs:string"/>
+    <xsl:param name="marked-id" as="xs:string?"/>
     <xsl:sequence select="contains(lower-case($exporter), 'enterprise architect')
         or (not($exporter) and (
               some $ns in $doc/*/namespace::* satisfies contains($ns, 'sparxsystems')
-              or exists(($doc/*//@*:id[starts-with(., 'EAID_') or starts-with(., 'EAPK_')])[1])))"/>
+              or starts-with($marked-id, 'EA')
+              or (exists($marked-id)
+                  and exists(($doc/*//@*:id[starts-with(., 'EAID_') or starts-with(., 'EAPK_')])[1]))))"/>
   </xsl:function>
 </xsl:stylesheet>

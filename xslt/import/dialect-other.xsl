@@ -23,11 +23,15 @@
     xmlns:fp="urn:robomda:xslt:function:private"
     exclude-result-prefixes="#all">
 
+  <!-- $marked-id: as for fp:is-ea (dialect-ea.xsl); the ids are scanned
+       only when some looks like a StarUML one -->
   <xsl:function name="fp:is-staruml" as="xs:boolean">
     <xsl:param name="doc" as="document-node()"/>
     <xsl:param name="exporter" as="xs:string"/>
+    <xsl:param name="marked-id" as="xs:string?"/>
     <xsl:sequence select="contains(lower-case($exporter), 'staruml')
-        or (not($exporter) and exists(($doc/*//@*:id[starts-with(., 'AAAAAA')][matches(., '^AAAAAA[A-Za-z0-9+/]{10,}=*$')])[1]))"/>
+        or (not($exporter) and exists($marked-id)
+            and exists(($doc/*//@*:id[starts-with(., 'AAAAAA')][matches(., '^AAAAAA[A-Za-z0-9+/]{10,}=*$')])[1]))"/>
   </xsl:function>
 
   <xsl:function name="fp:is-visual-paradigm" as="xs:boolean">

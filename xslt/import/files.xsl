@@ -42,12 +42,28 @@
   <!-- the document part of an href that names a model file to load, else () -->
   <xsl:function name="fp:model-file-ref" as="xs:string?">
     <xsl:param name="href" as="attribute()"/>
-    <xsl:variable name="doc" as="xs:string" select="substring-before(string($href) || '#', '#')"/>
+    <xsl:variable name="doc" as="xs:string?" select="fp:model-file-doc(fp:href-doc($href))"/>
+    <xsl:sequence select="
+        if (empty($doc)) then ()
+        else if ($href/ancestor::*[local-name() = ('profileApplication', 'appliedProfile')]) then ()
+        else $doc"/>
+  </xsl:function>
+
+  <!-- the document part of an href ('' when it has none) -->
+  <xsl:function name="fp:href-doc" as="xs:string">
+    <xsl:param name="href" as="xs:string"/>
+    <xsl:sequence select="substring-before($href || '#', '#')"/>
+  </xsl:function>
+
+  <!-- $doc (the document part of an href) when, by the text alone, it may
+       name a model file to load (fp:model-file-ref without the place of
+       the href), else () -->
+  <xsl:function name="fp:model-file-doc" as="xs:string?">
+    <xsl:param name="doc" as="xs:string"/>
     <xsl:sequence select="
         if ($doc eq '' or matches($doc, '\.profile\.(uml|xmi)$', 'i')) then ()
         else if (matches($doc, '^[A-Za-z][A-Za-z0-9+.\-]*:') and not(starts-with(lower-case($doc), 'file:'))) then ()
-        else if ($href/ancestor::*[local-name() = ('profileApplication', 'appliedProfile')]) then ()
-        else if (fp:href-library(string($href)) ne 'external') then ()
+        else if (fp:href-library($doc) ne 'external') then ()
         else $doc"/>
   </xsl:function>
 
@@ -78,7 +94,13 @@
   <xsl:function name="fp:file-refs" as="xs:string*">
     <xsl:param name="doc" as="document-node()"/>
     <xsl:param name="roots" as="xs:string*"/>
-    <xsl:for-each-group select="$doc//@href[fp:model-file-ref(.)]"
+    <!-- the few distinct document parts are tested first: the many hrefs
+         into libraries (pathmap://...) are then passed over without a
+         call each -->
+    <xsl:variable name="hrefs" as="attribute()*" select="$doc//@href"/>
+    <xsl:variable name="files" as="xs:string*"
+        select="distinct-values($hrefs ! fp:href-doc(.))[exists(fp:model-file-doc(.))]"/>
+    <xsl:for-each-group select="if (empty($files)) then () else $hrefs[fp:href-doc(.) = $files][fp:model-file-ref(.)]"
                         group-by="string(resolve-uri(fp:model-file-ref(.), base-uri(..)))">
       <xsl:variable name="uri" as="xs:string" select="current-grouping-key()"/>
       <xsl:variable name="who" as="element()?" select="fp:referrer(.)"/>

@@ -296,15 +296,25 @@
     <xsl:param name="src" as="document-node()"/>
     <xsl:param name="src-model" as="element()"/>
     <xsl:variable name="exporter" as="xs:string" select="fp:exporter($src/*)"/>
+    <!-- without an exporter the ids tell EA and StarUML: one scan of them
+         for both (a second only when one looks like a StarUML id) -->
+    <xsl:variable name="marked-id" as="xs:string?" select="if ($exporter) then () else fp:marked-id($src)"/>
     <xsl:sequence select="
-        if (fp:is-ea($src, $exporter)) then 'enterprise-architect'
+        if (fp:is-ea($src, $exporter, $marked-id)) then 'enterprise-architect'
         else if (fp:is-magicdraw($src, $exporter)) then 'magicdraw'
-        else if (fp:is-staruml($src, $exporter)) then 'staruml'
+        else if (fp:is-staruml($src, $exporter, $marked-id)) then 'staruml'
         else if (fp:is-visual-paradigm($src, $exporter)) then 'visual-paradigm'
         else if (fp:is-modelio($src, $exporter)) then 'modelio'
         else if (fp:is-papyrus($src, $exporter)) then 'papyrus'
         else if (fp:is-eclipse-uml2(namespace-uri($src-model))) then 'eclipse-uml2'
         else 'unknown'"/>
+  </xsl:function>
+
+  <!-- the first id of $src that looks like an EA id (EAID_, EAPK_) or a
+       StarUML one (AAAAAA...), if any -->
+  <xsl:function name="fp:marked-id" as="xs:string?">
+    <xsl:param name="src" as="document-node()"/>
+    <xsl:sequence select="($src/*//@*:id[starts-with(., 'EAID_') or starts-with(., 'EAPK_') or starts-with(., 'AAAAAA')])[1]"/>
   </xsl:function>
 
   <!-- xmi:version as written, else from the XMI namespace -->

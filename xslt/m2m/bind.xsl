@@ -7,7 +7,9 @@
   Writes:  the same PIM with pim:binding appended (schemas/pim/1/binding.xsd),
            indented as f:indent (common/indent.xsl) indents it; a model with
            element-only content is indented in the same pass, through
-           f:indent's own rules (t:indented-content), with no copy of it first.
+           f:indent's own rules (t:indented-content), with no copy of it first;
+           the parts of it that are indented already (as import.xsl writes
+           them: f:indented) are copied whole.
   Params:  none.
   Modules: by concern, in bind/: values.xsl (tags and value parsing),
            lookups.xsl (realizing classes, middlewares, hosts),
@@ -177,8 +179,11 @@
        in one pass: the model's children go straight through f:indent's
        rules (t:indented-content of common/indent.xsl), with the new binding
        last, which gives the bytes f:indent of the bound copy would give
-       without building that copy of the whole model first. Any other input
-       takes the general way. -->
+       without building that copy of the whole model first; a child of the
+       model that is indented already (f:indented: the application and the
+       platform as import.xsl wrote them) is copied whole, which gives the
+       same bytes with no template per node. Any other input takes the
+       general way. -->
   <xsl:template match="/" as="document-node()">
     <xsl:choose>
       <xsl:when test="pim:model[empty(text()[normalize-space()])]">
@@ -225,6 +230,9 @@
       <xsl:call-template name="t:indented-content">
         <xsl:with-param name="children" select="(* except pim:binding) | comment() | processing-instruction(), $binding/pim:binding"/>
         <xsl:with-param name="margin" select="'&#10;'"/>
+        <!-- the model as import.xsl wrote it is indented already: copied
+             whole, not a template per node -->
+        <xsl:with-param name="reuse" select="true()"/>
       </xsl:call-template>
     </xsl:copy>
   </xsl:template>

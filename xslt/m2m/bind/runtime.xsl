@@ -6,7 +6,7 @@
 
   Reads:   the PIM (urn:robomda:pim:1) and the instances of fp:binding.
   Writes:  parts of pim:binding (schemas/pim/1/binding.xsd), or values.
-  Params:  none.  Keys: those of bind.xsl.
+  Params:  none.  Keys: those of bind.xsl, and fp:component-set (below).
   Provides: fp:is-thread, fp:process-of, fp:is-set, fp:set-deployment,
            fp:sets-of, fp:processes, fp:component-sets, fp:links,
            fp:thread-activity, fp:member-activity,
@@ -117,7 +117,18 @@
   </xsl:function>
 
   <!-- ================================================ component sets -->
+  <!-- the component sets by id, each artifact decided once: an artifact
+       holds a child per manifestation, so deciding it on every call
+       (f:stereotype reads its children) made the binding quadratic in the
+       components one artifact manifests -->
+  <xsl:key name="fp:component-set" match="pim:artifact[fp:artifact-is-set(.)]" use="string(@id)"/>
+
   <xsl:function name="fp:is-set" as="xs:boolean">
+    <xsl:param name="artifact" as="element(pim:artifact)"/>
+    <xsl:sequence select="exists(key('fp:component-set', string($artifact/@id), root($artifact)))"/>
+  </xsl:function>
+
+  <xsl:function name="fp:artifact-is-set" as="xs:boolean">
     <xsl:param name="artifact" as="element(pim:artifact)"/>
     <xsl:sequence select="exists(f:stereotype($artifact, 'ComponentSet'))
         or (empty(f:stereotype($artifact, 'Library'))

@@ -17,8 +17,8 @@
              deploy/<instance>.user.cpf (mode user) per instance with
              properties: the user's tuned values, loaded after the model's
            One fs:file a line, as f:indent (common/indent.xsl) would indent
-           the file set, written so directly (t:indented-content: no copy of
-           all the text).
+           the file set, each written straight into it (no copy of all the
+           text).
   Params:  model-dir-from-output (xslt/m2t/common/text.xsl).
   Errors:  none (the PSM is complete and valid).
   Modules: ../common/text.xsl (the text kit every target shares),
@@ -34,10 +34,8 @@
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
     xmlns:m="urn:robomda:xslt:mode"
-    xmlns:t="urn:robomda:xslt:template"
     exclude-result-prefixes="#all">
 
-  <xsl:include href="../../common/indent.xsl"/>
   <xsl:include href="../common/text.xsl"/>
   <xsl:include href="../common/package-manifest.xsl"/>
   <xsl:include href="orocos-cpp.xsl"/>
@@ -55,10 +53,12 @@
   <xsl:variable name="fp:deploy-xsl" as="xs:string" select="'m2t/orocos/orocos-deploy.xsl'"/>
   <xsl:variable name="fp:typekit-xsl" as="xs:string" select="'m2t/orocos/orocos-types.xsl'"/>
   <xsl:mode name="m:emit-files" on-no-match="fail"/>
+  <!-- what goes before each file in fs:files: one file a line -->
+  <xsl:variable name="fp:file-margin" as="xs:string" select="'&#10;  '"/>
 
   <!-- the file set comes out as f:indent (common/indent.xsl) would indent
-       it (one fs:file a line; their text as it is), written so directly with
-       t:indented-content: f:indent would copy all the text once more -->
+       it (one fs:file a line; their text as it is), written so directly:
+       f:indent would copy all the text once more -->
   <xsl:template match="/" as="document-node()">
     <xsl:document>
       <xsl:apply-templates select="o:deployment" mode="m:emit-files"/>
@@ -67,51 +67,49 @@
 
   <xsl:template match="o:deployment" mode="m:emit-files" as="element(fs:files)">
     <xsl:variable name="pkg" as="xs:string" select="@package"/>
-    <xsl:variable name="files" as="element(fs:file)*">
+    <!-- each file on a line of its own, as f:indent would put it: written
+         straight into fs:files, not built first and copied (the text of
+         every file would be copied once more) -->
+    <fs:files target="orocos">
       <xsl:for-each select="o:task-context">
-        <xsl:sequence select="fp:file(concat('include/', $pkg, '/', @generated-class, '.hpp'), 'generated', $fp:cpp-xsl,
+        <xsl:sequence select="$fp:file-margin, fp:file(concat('include/', $pkg, '/', @generated-class, '.hpp'), 'generated', $fp:cpp-xsl,
                                       if (@kind eq 'thread') then fp:thread-header(.) else fp:cpp-header(.))"/>
-        <xsl:sequence select="fp:file(concat('src/', @generated-class, '.cpp'), 'generated', $fp:cpp-xsl,
+        <xsl:sequence select="$fp:file-margin, fp:file(concat('src/', @generated-class, '.cpp'), 'generated', $fp:cpp-xsl,
                                       if (@kind eq 'thread') then fp:thread-source(.) else fp:cpp-source(.))"/>
         <xsl:if test="@kind eq 'base'">
-          <xsl:sequence select="fp:user-file(concat('include/', $pkg, '/', @class, '.hpp'), ., fp:user-header(.))"/>
-          <xsl:sequence select="fp:user-file(concat('src/', @class, '.cpp'), ., fp:user-source(.))"/>
+          <xsl:sequence select="$fp:file-margin, fp:user-file(concat('include/', $pkg, '/', @class, '.hpp'), ., fp:user-header(.))"/>
+          <xsl:sequence select="$fp:file-margin, fp:user-file(concat('src/', @class, '.cpp'), ., fp:user-source(.))"/>
         </xsl:if>
       </xsl:for-each>
       <xsl:for-each select="o:types/(o:struct | o:enum)">
-        <xsl:sequence select="fp:file('include/' || @header, 'generated', 'm2t/common/data-types.xsl',
+        <xsl:sequence select="$fp:file-margin, fp:file('include/' || @header, 'generated', 'm2t/common/data-types.xsl',
                                       fp:type-header(., ../(o:struct | o:enum), ../../@model-name))"/>
       </xsl:for-each>
-      <xsl:sequence select="o:types ! fp:file('src/typekit.cpp', 'generated', $fp:typekit-xsl, fp:typekit-cpp(.))"/>
-      <xsl:sequence select="fp:file('src/components.cpp', 'generated', $fp:cpp-xsl, fp:components-cpp(.))"/>
-      <xsl:sequence select="fp:file('CMakeLists.txt', 'generated', $fp:build-xsl, fp:cmakelists(.))"/>
-      <xsl:sequence select="fp:file('package.xml', 'generated', $fp:build-xsl, fp:package-xml(.))"/>
+      <xsl:sequence select="o:types ! ($fp:file-margin, fp:file('src/typekit.cpp', 'generated', $fp:typekit-xsl, fp:typekit-cpp(.)))"/>
+      <xsl:sequence select="$fp:file-margin, fp:file('src/components.cpp', 'generated', $fp:cpp-xsl, fp:components-cpp(.))"/>
+      <xsl:sequence select="$fp:file-margin, fp:file('CMakeLists.txt', 'generated', $fp:build-xsl, fp:cmakelists(.))"/>
+      <xsl:sequence select="$fp:file-margin, fp:file('package.xml', 'generated', $fp:build-xsl, fp:package-xml(.))"/>
       <!-- one deployment per process (orocos-processes.xsl) -->
       <xsl:variable name="deployment" as="element(o:deployment)" select="."/>
       <xsl:for-each select="o:process">
         <xsl:variable name="view" as="element(o:deployment)" select="fp:process-view($deployment, .)"/>
-        <xsl:sequence select="fp:file(concat('deploy/', @file, '.xml'), 'generated', $fp:deploy-xsl, fp:deploy-xml($view))"/>
-        <xsl:sequence select="fp:file(concat('deploy/', @file, '.ops'), 'generated', $fp:deploy-xsl, fp:deploy-ops($view))"/>
-        <xsl:sequence select="fp:file(concat('deploy/', @file, '.lua'), 'generated', $fp:deploy-xsl, fp:deploy-lua($view))"/>
-        <xsl:sequence select="fp:file(concat('deploy/', @file, '-check.lua'), 'generated', $fp:deploy-xsl, fp:deploy-check-lua($view))"/>
+        <xsl:sequence select="$fp:file-margin, fp:file(concat('deploy/', @file, '.xml'), 'generated', $fp:deploy-xsl, fp:deploy-xml($view))"/>
+        <xsl:sequence select="$fp:file-margin, fp:file(concat('deploy/', @file, '.ops'), 'generated', $fp:deploy-xsl, fp:deploy-ops($view))"/>
+        <xsl:sequence select="$fp:file-margin, fp:file(concat('deploy/', @file, '.lua'), 'generated', $fp:deploy-xsl, fp:deploy-lua($view))"/>
+        <xsl:sequence select="$fp:file-margin, fp:file(concat('deploy/', @file, '-check.lua'), 'generated', $fp:deploy-xsl, fp:deploy-check-lua($view))"/>
       </xsl:for-each>
       <!-- several processes: a start script per host -->
       <xsl:if test="count(o:process) gt 1">
         <xsl:for-each-group select="o:process" group-by="string(@host)">
           <xsl:variable name="host" as="element(o:host)?" select="$deployment/o:host[@name eq current-grouping-key()]"/>
-          <xsl:sequence select="fp:file('deploy/' || current-group()[1]/@start-script, 'generated', $fp:deploy-xsl,
+          <xsl:sequence select="$fp:file-margin, fp:file('deploy/' || current-group()[1]/@start-script, 'generated', $fp:deploy-xsl,
                                         fp:start-script($deployment, $host, current-group()))"/>
         </xsl:for-each-group>
       </xsl:if>
       <xsl:for-each select="o:instance[o:property-value]">
-        <xsl:sequence select="fp:user-cpf-file(.)"/>
+        <xsl:sequence select="$fp:file-margin, fp:user-cpf-file(.)"/>
       </xsl:for-each>
-    </xsl:variable>
-    <fs:files target="orocos">
-      <xsl:call-template name="t:indented-content">
-        <xsl:with-param name="children" select="$files"/>
-        <xsl:with-param name="margin" select="'&#10;'"/>
-      </xsl:call-template>
+      <xsl:text>&#10;</xsl:text>
     </fs:files>
   </xsl:template>
 
