@@ -9,11 +9,12 @@
 #   $ROS2_PREFIX/install_py       stage 2, an overlay: rclpy, launch, launch_ros, a ros2cli subset, and the
 #                                 interface packages again with their Python bindings (only to run launch files)
 #
-# Usage: build.sh [--check] [--no-apt] [--stage1-only] [--cmake-clean-cache]
+# Usage: build.sh [--check] [--no-apt] [--sources-only] [--stage1-only] [--cmake-clean-cache]
 #   --check              build nothing: report what is present and what is missing (Debian packages,
 #                        sources and their commits, venv pins, every package of both stages installed);
 #                        exit status 1 if anything is missing
 #   --no-apt             do not install Debian packages (only check they are there)
+#   --sources-only       stop after fetching the sources (to build later, offline)
 #   --stage1-only        stop after the C++ core (enough to build generated packages, not to launch them)
 #   --cmake-clean-cache  passed to colcon in both stages (after changing interface packages, so they
 #                        find the overlay's service_msgs etc.); stage 2's second pass always uses it
@@ -25,11 +26,12 @@ HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 PREFIX=${ROS2_PREFIX:-$HOME/ros2}
 JOBS=${JOBS:-2}
 NICE=${NICE:-19}
-CHECK=0 APT=1 STAGE2=1 CLEAN=()
+CHECK=0 APT=1 STAGE2=1 SOURCES_ONLY=0 CLEAN=()
 for arg in "$@"; do
   case $arg in
     --check) CHECK=1 ;;
     --no-apt) APT=0 ;;
+    --sources-only) SOURCES_ONLY=1 ;;
     --stage1-only) STAGE2=0 ;;
     --cmake-clean-cache) CLEAN=(--cmake-clean-cache) ;;
     -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
@@ -89,7 +91,7 @@ while IFS=$'\t' read -r dir name url ref commit; do
   fi
   if [ $CHECK = 1 ]; then missing "source $dir/$name ($url $ref)"; continue; fi
   mkdir -p "$PREFIX/$dir"
-  git clone -q --depth 1 --branch "$ref" "$url" "$dest"
+  git -c advice.detachedHead=false clone -q --depth 1 --branch "$ref" "$url" "$dest"
   got=$(git -C "$dest" rev-parse HEAD)
   if [ "$got" != "$commit" ]; then
     if git -C "$dest" fetch -q --depth 1 origin "$commit" && git -C "$dest" -c advice.detachedHead=false checkout -q "$commit"; then
@@ -99,7 +101,10 @@ while IFS=$'\t' read -r dir name url ref commit; do
     fi
   fi
 done < "$HERE/sources.tsv"
-[ $CHECK = 1 ] && [ $MISSING = 0 ] && say "sources: all present in $PREFIX/src, $PREFIX/src_py (exported trees without .git cannot show their commit)"
+if [ $CHECK = 1 ] && [ $MISSING = 0 ]; then
+  say "sources: all present in $PREFIX/src, $PREFIX/src_py (exported trees without .git cannot show their commit)"
+fi
+if [ $SOURCES_ONLY = 1 ] && [ $CHECK = 0 ]; then say "sources fetched into $PREFIX"; exit 0; fi
 
 # --- venv with the PyPI tools -------------------------------------------------------------------------
 VENV=$PREFIX/venv
