@@ -5,11 +5,13 @@ is a failure: tests/run.sh installs every tool the real-tool tests need, so a
 skip there means an install step is missing, which must not pass unnoticed.
 On a developer's machine the same tests skip and say what is missing.
 
-One exception: tests marked ``orocos_toolchain`` build and deploy generated
-packages on a real Orocos RTT / OCL 2.10 toolchain, which is built from
-public source (../shared/orocos-reference/toolchain/) and cannot be fetched
-in CI. CI deselects them, and says so in the summary; developers run them
-where the toolchain is installed.
+Two exceptions, for toolchains built from public sources that CI cannot
+fetch: tests marked ``orocos_toolchain`` build and deploy generated packages
+on a real Orocos RTT / OCL 2.10 toolchain
+(../shared/orocos-reference/toolchain/), and tests marked ``ros2_toolchain``
+build and launch generated packages on a minimal ROS 2 Jazzy
+(toolchains/ros2/). CI deselects them, and says so in the summary; developers
+run them where the toolchain is installed.
 """
 
 from __future__ import annotations
@@ -24,13 +26,22 @@ _CI = os.environ.get("CI", "").lower() not in ("", "0", "false", "no")
 def pytest_configure(config: pytest.Config) -> None:
     config.addinivalue_line("markers", "orocos_toolchain: needs a real Orocos RTT / OCL 2.10 toolchain "
                             "(not in CI: it is built from fetched sources)")
+    config.addinivalue_line("markers", "ros2_toolchain: needs a minimal ROS 2 Jazzy built by toolchains/ros2/build.sh "
+                            "(not in CI: it is built from fetched sources)")
+
+
+_TOOLCHAIN_MARKERS = ("orocos_toolchain", "ros2_toolchain")
+
+
+def _needs_toolchain(item: pytest.Item) -> bool:
+    return any(item.get_closest_marker(m) is not None for m in _TOOLCHAIN_MARKERS)
 
 
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
     if not _CI:
         return
-    kept = [item for item in items if item.get_closest_marker("orocos_toolchain") is None]
-    dropped = [item for item in items if item.get_closest_marker("orocos_toolchain") is not None]
+    kept = [item for item in items if not _needs_toolchain(item)]
+    dropped = [item for item in items if _needs_toolchain(item)]
     if dropped:
         config.hook.pytest_deselected(items=dropped)
         items[:] = kept
@@ -38,7 +49,8 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
 
 def pytest_report_header(config: pytest.Config) -> str | None:
     if _CI:
-        return "CI: skips fail; tests marked orocos_toolchain are deselected (the toolchain cannot be fetched here)"
+        return ("CI: skips fail; tests marked orocos_toolchain or ros2_toolchain are deselected "
+                "(those toolchains cannot be fetched here)")
     return None
 
 

@@ -1,0 +1,355 @@
+"""Build and run generated ROS 2 packages on a real ROS 2 Jazzy.
+
+Not in CI (marker ``ros2_toolchain``, deselected there by conftest.py): ROS 2
+is in no registry CI reaches; it is built from fetched public sources with
+toolchains/ros2/build.sh into ``$ROS2_PREFIX`` (default ``~/ros2``), whose
+``install/`` (C++ core) and ``install_py/`` (rclpy, launch_ros, ros2cli)
+overlays these tests use through toolchains/ros2/env.sh.
+
+- every fixture's ROS 2 package (fixtures/cases/*/model.xmi,
+  fixtures/ros/*/model.xmi) is generated and built with colcon in one
+  workspace, with ``-Wall -Wextra``, and no compiler warning points into a
+  generated package;
+- fixtures/ros/managed: ``ros2 launch managed managed.launch.xml`` loads every
+  composable node, both lifecycle managers exit 0, /arm, /controller and
+  /vision report ``active`` (``ros2 lifecycle get``), messages flow on every
+  connection topic (``*Conn``), ``ros2 lifecycle set /controller deactivate``
+  stops /armCommandConn and ``activate`` restarts it;
+- fixtures/cases/pid: ``ros2 launch pid pid.launch.xml`` loads its three nodes
+  and messages flow on its three topics.
+
+Each launch runs in its own process group on a private ROS_DOMAIN_ID and is
+stopped with SIGINT; no process of the group may outlive it. Waits poll with
+generous bounds: the machines these run on are slow and shared.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import signal
+import subprocess
+import time
+import warnings
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import pytest
+
+from robomda.api import generate
+
+ROOT = Path(__file__).resolve().parents[1]
+TOOLCHAIN = ROOT / "toolchains" / "ros2"
+ENV_SH = TOOLCHAIN / "env.sh"
+PREFIX = Path(os.environ.get("ROS2_PREFIX", Path.home() / "ros2")).expanduser()
+MODELS = sorted((ROOT / "fixtures" / "cases").glob("*/model.xmi")) + sorted((ROOT / "fixtures" / "ros").glob("*/model.xmi"))
+# a domain of our own, so that another ROS 2 on the machine neither sees nor disturbs these nodes
+DOMAIN = os.environ.get("ROS_DOMAIN_ID") or str(50 + os.getpid() % 50)
+
+pytestmark = [
+    pytest.mark.ros2_toolchain,
+    pytest.mark.skipif(not (PREFIX / "install" / "setup.bash").is_file() or not (PREFIX / "venv" / "bin" / "colcon").exists(),
+                       reason=f"no ROS 2 built in {PREFIX} (set ROS2_PREFIX, or build it with {TOOLCHAIN}/build.sh)"),
+]
+needs_launch = pytest.mark.skipif(not (PREFIX / "install_py" / "bin" / "ros2").exists(),
+                                  reason=f"no ros2 launch in {PREFIX}/install_py (stage 2 of {TOOLCHAIN}/build.sh)")
+
+
+def _env(home: Path) -> dict[str, str]:
+    return dict(os.environ, ROS2_PREFIX=str(PREFIX), ROS_DOMAIN_ID=DOMAIN, ROS_HOME=str(home), MAKEFLAGS="-j2")
+
+
+def _script(ws: Path, command: str) -> list[str]:
+    return ["bash", "-c", f"source {ENV_SH} >/dev/null && source {ws}/install/local_setup.bash && {command}"]
+
+
+@dataclass
+class Workspace:
+    root: Path
+    packages: dict[str, str]  # fixture name -> package name
+    build: subprocess.CompletedProcess[str] = field(repr=False)
+
+    def run(self, command: str, timeout: float = 180) -> subprocess.CompletedProcess[str]:
+        return subprocess.run(_script(self.root, command), cwd=self.root, env=_env(self.root / "home"),
+                              capture_output=True, text=True, timeout=timeout)
+
+
+def _fixture_name(model: Path) -> str:
+    return model.parent.name
+
+
+@pytest.fixture(scope="module")
+def workspace(tmp_path_factory) -> Workspace:
+    """Every fixture's ROS 2 package generated into one colcon workspace and built (nice 19, -j2)."""
+    ws = tmp_path_factory.mktemp("ros2ws")
+    (ws / "home").mkdir()
+    packages = {}
+    for model in MODELS:
+        out = ws / "src" / _fixture_name(model)
+        generate(model, out, "ros2")
+        packages[_fixture_name(model)] = ET.parse(out / "package.xml").getroot().findtext("name")
+    build = subprocess.run(
+        ["bash", "-c", f"source {ENV_SH} >/dev/null && nice -n 19 colcon --log-base log build --base-paths src "
+         "--install-base install --build-base build --parallel-workers 1 --continue-on-error "
+         "--event-handlers console_direct- console_cohesion- --cmake-args -DBUILD_TESTING=OFF "
+         "-DCMAKE_BUILD_TYPE=None '-DCMAKE_CXX_FLAGS=-Wall -Wextra' -DPython3_EXECUTABLE=$(command -v python3)"],
+        cwd=ws, env=_env(ws / "home"), capture_output=True, text=True, timeout=4 * 3600)
+    return Workspace(ws, packages, build)
+
+
+@pytest.mark.parametrize("model", MODELS, ids=_fixture_name)
+def test_package_builds_without_a_warning(model: Path, workspace: Workspace) -> None:
+    pkg = workspace.packages[_fixture_name(model)]
+    log = workspace.root / "log" / "latest_build" / pkg / "stdout_stderr.log"
+    said = log.read_text(errors="replace") if log.is_file() else workspace.build.stdout + workspace.build.stderr
+    assert (workspace.root / "install" / pkg / "share" / pkg / "package.xml").is_file(), said[-5000:]
+    cache = (workspace.root / "build" / pkg / "CMakeCache.txt").read_text()
+    assert re.search(r"^CMAKE_CXX_FLAGS:STRING=.*-Wall -Wextra", cache, re.M), "the warning flags did not reach the build"
+    assert re.search(r"\.cpp\.o\b|Building CXX", said), said[-3000:]  # something was compiled
+    generated = str(workspace.root / "src" / _fixture_name(model))
+    ours = [line for line in said.splitlines() if "warning:" in line and generated in line]
+    assert not ours, "\n".join(ours[:20])
+
+
+# counts the messages of each topic given, for SECONDS once every topic has a publisher matched;
+# prints {"topic": count, ...}; a topic without a publisher within 60 s counts -1
+_COUNTER = r'''
+import json, sys, time
+import rclpy
+from rclpy.qos import qos_profile_sensor_data
+from rosidl_runtime_py.utilities import get_message
+seconds, topics = float(sys.argv[1]), sys.argv[2:]
+rclpy.init()
+node = rclpy.create_node("robomda_topic_counter")
+types, deadline = {}, time.monotonic() + 60
+while len(types) < len(topics) and time.monotonic() < deadline:
+    for name, kinds in node.get_topic_names_and_types():
+        if name in topics and kinds and node.count_publishers(name) > 0:
+            types[name] = kinds[0]
+    rclpy.spin_once(node, timeout_sec=0.2)
+counts = {t: 0 for t in topics}
+def counter(t):
+    def cb(_):
+        counts[t] += 1
+    return cb
+subs = [node.create_subscription(get_message(types[t]), t, counter(t), qos_profile_sensor_data) for t in types]
+deadline = time.monotonic() + 30
+while any(s.get_publisher_count() == 0 for s in subs) and time.monotonic() < deadline:
+    rclpy.spin_once(node, timeout_sec=0.1)
+for t in topics:
+    counts[t] = 0 if t in types else -1
+end = time.monotonic() + seconds
+while time.monotonic() < end:
+    rclpy.spin_once(node, timeout_sec=0.05)
+    for t in topics:
+        if t not in types:
+            counts[t] = -1
+print(json.dumps(counts))
+'''
+
+
+def _count(ws: Workspace, topics: list[str], seconds: float = 2.0) -> dict[str, int]:
+    (ws.root / "count.py").write_text(_COUNTER)
+    run = ws.run(f"exec python3 {ws.root / 'count.py'} {seconds} {' '.join(topics)}", timeout=240)
+    assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-3000:]
+    return json.loads(run.stdout.strip().splitlines()[-1])
+
+
+@dataclass
+class Launch:
+    """``ros2 launch PKG FILE`` in its own process group, output in ``log``."""
+    ws: Workspace
+    pkg: str
+    file: str
+    log: Path
+    proc: subprocess.Popen[bytes] | None = None
+    offset: int = 0  # where this run's output starts in the log
+    notes: list[str] = field(default_factory=list)
+
+    def start(self) -> None:
+        self.offset = self.log.stat().st_size if self.log.exists() else 0
+        with self.log.open("ab") as out:
+            self.proc = subprocess.Popen(_script(self.ws.root, f"exec ros2 launch {self.pkg} {self.file}"),
+                                         cwd=self.ws.root, env=_env(self.ws.root / "home"), stdout=out,
+                                         stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL, start_new_session=True)
+
+    def text(self) -> str:
+        """The output of the current (last) run."""
+        return self.log.read_bytes()[self.offset:].decode(errors="replace")
+
+    def wait_for(self, done, timeout: float = 240) -> bool:
+        """Polls the launch output until ``done(text)`` or the launch ends or ``timeout`` passes."""
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            if done(self.text()):
+                return True
+            if self.proc is not None and self.proc.poll() is not None:
+                return done(self.text())
+            time.sleep(1)
+        return False
+
+    def group(self) -> list[int]:
+        """Pids still in the launch's process group."""
+        if self.proc is None:
+            return []
+        self.proc.poll()  # reaps the launch process once it ended
+        pgid = self.proc.pid
+        found = subprocess.run(["ps", "-eo", "pid=,pgid=,stat="], capture_output=True, text=True).stdout.split("\n")
+        return [int(p) for p, g, stat in (line.split() for line in found if line.strip())
+                if int(g) == pgid and not stat.startswith("Z")]
+
+    def stop(self) -> list[int]:
+        """SIGINT to the group, 90 s to end; returns the pids that outlived it (then killed)."""
+        if self.proc is None:
+            return []
+        try:
+            os.killpg(self.proc.pid, signal.SIGINT)
+        except ProcessLookupError:
+            pass
+        deadline = time.monotonic() + 90
+        while self.group() and time.monotonic() < deadline:
+            time.sleep(1)
+        left = self.group()
+        if left:
+            os.killpg(self.proc.pid, signal.SIGKILL)
+        self.proc.wait(timeout=60)
+        self.proc = None
+        return left
+
+    def loaded(self, nodes: list[str]) -> bool:
+        text = self.text()
+        return all(f"Loaded node '{n}'" in text for n in nodes)
+
+    def start_loaded(self, nodes: list[str], timeout: float = 240) -> None:
+        """Starts the launch and waits until every composable node is loaded. launch_ros sometimes
+        loses a LoadNode request (ros2/launch_ros#572): the node never loads though its container
+        runs. Then the launch is stopped and started once more, and the retry is reported."""
+        self.start()
+        if self.wait_for(lambda _: self.loaded(nodes), timeout):
+            return
+        missing = [n for n in nodes if f"Loaded node '{n}'" not in self.text()]
+        left = self.stop()
+        assert not left, f"processes outlived the first launch: {left}"
+        note = f"{self.pkg}: {missing} not loaded in {timeout:.0f} s; launch retried once (ros2/launch_ros#572)"
+        self.notes.append(note)
+        warnings.warn(note)
+        with self.log.open("a") as out:
+            out.write(f"\n--- {note}\n")
+        self.start()
+        assert self.wait_for(lambda _: self.loaded(nodes), timeout), self.text()[-5000:]
+
+
+def _launch_files(ws: Workspace, pkg: str) -> list[Path]:
+    return sorted((ws.root / "install" / pkg / "share" / pkg / "launch").glob("*.launch.xml"))
+
+
+def _composable_nodes(ws: Workspace, pkg: str) -> list[str]:
+    return sorted({"/" + n.get("name") for f in _launch_files(ws, pkg) for n in ET.parse(f).iter("composable_node")})
+
+
+def _connection_topics(ws: Workspace, pkg: str) -> list[str]:
+    return sorted({"/" + r.get("to") for f in _launch_files(ws, pkg) for r in ET.parse(f).iter("remap")
+                   if r.get("to", "").endswith("Conn")})
+
+
+MANAGED_NODES = ["/arm", "/controller", "/vision"]
+
+
+@pytest.fixture(scope="module")
+def managed(workspace: Workspace):
+    pkg = workspace.packages["managed"]
+    assert (workspace.root / "install" / pkg).is_dir(), "the managed package did not build"
+    launch = Launch(workspace, pkg, "managed.launch.xml", workspace.root / "managed.launch.log")
+    try:
+        launch.start_loaded(_composable_nodes(workspace, pkg))
+        yield launch
+    finally:
+        launch.stop()
+
+
+def _lifecycle_get(ws: Workspace, node: str) -> str:
+    run = ws.run(f"ros2 lifecycle get --no-daemon {node}")
+    return (run.stdout + run.stderr).strip()
+
+
+@needs_launch
+def test_managed_launch_loads_every_composable_node(managed: Launch) -> None:
+    nodes = _composable_nodes(managed.ws, managed.pkg)
+    assert set(MANAGED_NODES) <= set(nodes) and len(nodes) == 5, nodes
+    assert managed.loaded(nodes), managed.text()[-5000:]
+    assert "Failed to load" not in managed.text(), managed.text()[-5000:]
+
+
+@needs_launch
+def test_managed_lifecycle_managers_exit_0(managed: Launch) -> None:
+    managers = lambda text: set(re.findall(r"\[INFO\] \[(lifecycle_manager-\d+)\]: process started", text))
+    cleanly = lambda text: set(re.findall(r"\[INFO\] \[(lifecycle_manager-\d+)\]: process has finished cleanly", text))
+    assert managed.wait_for(lambda t: len(managers(t)) == 2 and cleanly(t) >= managers(t)), managed.text()[-5000:]
+    assert not re.search(r"\[(lifecycle_manager-\d+)\]: process has died", managed.text()), managed.text()[-5000:]
+
+
+@needs_launch
+def test_managed_nodes_are_active(managed: Launch) -> None:
+    deadline = time.monotonic() + 240
+    states = {}
+    for node in MANAGED_NODES:
+        while True:
+            states[node] = _lifecycle_get(managed.ws, node)
+            if states[node].startswith("active") or time.monotonic() > deadline:
+                break
+            time.sleep(2)
+    assert all(s.startswith("active [3]") for s in states.values()), states
+
+
+@needs_launch
+def test_managed_connection_topics_flow(managed: Launch) -> None:
+    topics = _connection_topics(managed.ws, managed.pkg)
+    assert len(topics) == 6 and "/armCommandConn" in topics, topics
+    counts = _count(managed.ws, topics, 3.0)
+    assert all(c > 0 for c in counts.values()), counts
+
+
+@needs_launch
+def test_managed_deactivate_stops_and_activate_restarts_the_controller(managed: Launch) -> None:
+    ws = managed.ws
+    assert _count(ws, ["/armCommandConn"])["/armCommandConn"] > 0
+    try:
+        run = ws.run("ros2 lifecycle set --no-daemon /controller deactivate")
+        assert "Transitioning successful" in run.stdout, run.stdout + run.stderr
+        assert _lifecycle_get(ws, "/controller").startswith("inactive [2]")
+        assert _count(ws, ["/armCommandConn"])["/armCommandConn"] == 0  # the publisher stays, silent
+    finally:
+        run = ws.run("ros2 lifecycle set --no-daemon /controller activate")
+    assert "Transitioning successful" in run.stdout, run.stdout + run.stderr
+    assert _lifecycle_get(ws, "/controller").startswith("active [3]")
+    assert _count(ws, ["/armCommandConn"])["/armCommandConn"] > 0
+
+
+@needs_launch
+def test_managed_launch_stops_on_sigint_and_leaves_nothing(managed: Launch) -> None:
+    assert managed.proc is not None and managed.proc.poll() is None, managed.text()[-5000:]  # still up
+    left = managed.stop()
+    assert not left, f"outlived SIGINT by 90 s (killed): {left}"
+    assert "process has died" not in managed.text(), managed.text()[-5000:]
+
+
+@needs_launch
+def test_pid_launch_runs_its_three_nodes_and_topics(workspace: Workspace) -> None:
+    pkg = workspace.packages["pid"]
+    assert (workspace.root / "install" / pkg).is_dir(), "the pid package did not build"
+    nodes = _composable_nodes(workspace, pkg)
+    topics = _connection_topics(workspace, pkg)
+    assert nodes == ["/PIDController", "/RobotInterface", "/TrajectoryGenerator"], nodes
+    assert topics == ["/IDesiredPositionConn", "/IMeasuredPositionConn", "/IReferenceTorqueConn"], topics
+    launch = Launch(workspace, pkg, "pid.launch.xml", workspace.root / "pid.launch.log")
+    try:
+        launch.start_loaded(nodes)
+        listed = workspace.run("ros2 node list --no-daemon").stdout.split()
+        assert set(nodes) <= set(listed), listed
+        counts = _count(workspace, topics, 3.0)
+        assert all(c > 0 for c in counts.values()), counts
+    finally:
+        left = launch.stop()
+    assert not left, f"outlived SIGINT by 90 s (killed): {left}"
