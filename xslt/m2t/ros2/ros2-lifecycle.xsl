@@ -199,6 +199,33 @@
         '#include &lt;lifecycle_msgs/srv/change_state.hpp&gt;',
         '#include &lt;rclcpp/rclcpp.hpp&gt;',
         '',
+        fp:ros2-change-state(),
+        '',
+        'int main(int argc, char** argv)',
+        '{',
+        '  rclcpp::init(argc, argv);',
+        '  auto node = std::make_shared&lt;rclcpp::Node&gt;(&quot;lifecycle_manager&quot;);',
+        '  const auto names = node-&gt;declare_parameter&lt;std::vector&lt;std::string&gt;&gt;(&quot;node_names&quot;, std::vector&lt;std::string&gt;{});',
+        '  const std::chrono::seconds timeout(node-&gt;declare_parameter&lt;std::int64_t&gt;(&quot;timeout&quot;, 30));',
+        '  bool ok = true;',
+        '  for (const auto&amp; name : names) {',
+        '    ok = ok &amp;&amp; change_state(node, name, Transition::TRANSITION_CONFIGURE, &quot;configure&quot;, timeout);',
+        '  }',
+        '  for (const auto&amp; name : names) {',
+        '    ok = ok &amp;&amp; change_state(node, name, Transition::TRANSITION_ACTIVATE, &quot;activate&quot;, timeout);',
+        '  }',
+        '  if (ok) {',
+        '    RCLCPP_INFO(node-&gt;get_logger(), &quot;%zu managed nodes active&quot;, names.size());',
+        '  }',
+        '  rclcpp::shutdown();',
+        '  return ok ? 0 : 1;',
+        '}'))"/>
+  </xsl:function>
+
+  <!-- the manager's change_state(): one transition of one node, through its
+       change_state service, waited for -->
+  <xsl:function name="fp:ros2-change-state" as="xs:string+">
+    <xsl:sequence select="
         'namespace',
         '{',
         'using lifecycle_msgs::msg::Transition;',
@@ -228,26 +255,7 @@
         '  RCLCPP_INFO(node-&gt;get_logger(), &quot;%s: %s&quot;, target.c_str(), label);',
         '  return true;',
         '}',
-        '}  // namespace',
-        '',
-        'int main(int argc, char** argv)',
-        '{',
-        '  rclcpp::init(argc, argv);',
-        '  auto node = std::make_shared&lt;rclcpp::Node&gt;(&quot;lifecycle_manager&quot;);',
-        '  const auto names = node-&gt;declare_parameter&lt;std::vector&lt;std::string&gt;&gt;(&quot;node_names&quot;, std::vector&lt;std::string&gt;{});',
-        '  const std::chrono::seconds timeout(node-&gt;declare_parameter&lt;std::int64_t&gt;(&quot;timeout&quot;, 30));',
-        '  bool ok = true;',
-        '  for (const auto&amp; name : names) {',
-        '    ok = ok &amp;&amp; change_state(node, name, Transition::TRANSITION_CONFIGURE, &quot;configure&quot;, timeout);',
-        '  }',
-        '  for (const auto&amp; name : names) {',
-        '    ok = ok &amp;&amp; change_state(node, name, Transition::TRANSITION_ACTIVATE, &quot;activate&quot;, timeout);',
-        '  }',
-        '  if (ok) {',
-        '    RCLCPP_INFO(node-&gt;get_logger(), &quot;%zu managed nodes active&quot;, names.size());',
-        '  }',
-        '  rclcpp::shutdown();',
-        '  return ok ? 0 : 1;',
-        '}'))"/>
+        '}  // namespace'
+  "/>
   </xsl:function>
 </xsl:stylesheet>
