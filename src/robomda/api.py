@@ -239,7 +239,7 @@ def check(model: Path | str, target: str | None = None, *, package_name: str = "
         shared = run_until_text("check")
         if shared is None:
             return Checked(diagnostics, ["model"], exit_code, rule_sets)
-        chosen = _targets_of(shared.output) or [default_target()]
+        chosen = _targets_of(shared) or [default_target()]
         diagnostics.clear()  # the targets' runs repeat the shared findings
     for name in chosen:
         run_until_text(name, shared)
@@ -266,10 +266,15 @@ def _rule_ids(rules: Path) -> frozenset[str]:
                                 namespaces={"sch": "http://purl.oclc.org/dsdl/schematron"}))
 
 
-def _targets_of(bound_pim: str) -> list[str]:
-    """The targets of the middlewares the instances of a bound PIM (its text) are deployed on, in target
-    order (read as a stream: no tree of the whole model for a few attributes)."""
-    deployed = {e.get("middleware") for e in stream(bound_pim) if e.tag == "{urn:robomda:pim:1}instance"}
+def _targets_of(bound: pipelines.RunResult) -> list[str]:
+    """The targets of the middlewares the instances of a bound PIM (the import chain's result) are
+    deployed on, in target order (looked up in the tree Saxon holds, else read from the text as a
+    stream: no lxml tree of the whole model for a few attributes)."""
+    if bound.handed is not None:
+        deployed = set(shared().strings(bound.handed, "distinct-values(//m:instance/@middleware)",
+                                        {"m": "urn:robomda:pim:1"}))
+    else:
+        deployed = {e.get("middleware") for e in stream(bound.output) if e.tag == "{urn:robomda:pim:1}instance"}
     served = target_of_middleware()
     return [t for t in available_targets() if any(served.get(m) == t for m in deployed)]
 
@@ -285,7 +290,7 @@ def _default_targets(model: Path, context: dict[str, str]) -> tuple[list[str], p
     """:func:`default_targets` of a readable ``model``, and the import run that found them (a
     target's chain resumes from it)."""
     bound = _run(pipelines.load(pipeline_path("import")), model, context)
-    return _targets_of(bound.output) or [default_target()], bound
+    return _targets_of(bound) or [default_target()], bound
 
 
 def _add(into: list[Diagnostic], found: list[Diagnostic]) -> None:

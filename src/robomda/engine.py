@@ -166,6 +166,16 @@ class Engine:
             raise TransformError(stylesheet, str(failure or "no result").strip(), "".join(err))
         return text, tree
 
+    def strings(self, tree: Tree, expression: str, namespaces: dict[str, str]) -> list[str]:
+        """The string values of the XPath ``expression`` on ``tree`` (a look-up in a kept tree, with
+        no lxml tree of the model)."""
+        xpath = self._proc.new_xpath_processor()
+        for prefix, uri in namespaces.items():
+            xpath.declare_namespace(prefix, uri)
+        xpath.set_context(xdm_item=tree.node)
+        found = xpath.evaluate(expression)
+        return [] if found is None else [str(found.item_at(i).string_value) for i in range(found.size)]
+
     def _serialize(self, tree: Tree) -> str:
         if self._serializer is None:
             self._serializer = self._xslt.compile_stylesheet(stylesheet_text=_SERIALIZER)

@@ -88,6 +88,10 @@ class RunResult:
     # warnings once it was done and the rules checked on it: what a later
     # run may resume from
     done: list[tuple[tuple, int, tuple[Check, ...]]] = field(default_factory=list)
+    # the last step's result as Saxon holds it, when the chain yields a model:
+    # a run that resumes from this one reads it as it is (parsing its text
+    # again cost 1.8 s of 41 at 10,000 components)
+    handed: Tree | None = None
 
     @property
     def output(self) -> str:
@@ -171,7 +175,9 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
             text = result.stages[step.name] = previous = resume.stages[step.name]
             result.tree = parse(text) if _writes_files(pipeline, index) else None
             result.warnings = list(resume.warnings[:warned])
-            if pending:  # its tree in Saxon: a large model's rules run on it, and the next step reads it
+            if index == len(resume.done) - 1 and resume.handed is not None:
+                previous = result.handed = resume.handed
+            elif pending:  # its tree in Saxon: a large model's rules run on it, and the next step reads it
                 previous = engine.parse(text)
             checking = time.perf_counter()
             if pending:
@@ -182,10 +188,12 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
             continue
         started = time.perf_counter()
         try:
-            # every stage but the last keeps its tree for the next one, and
-            # every stage with rules for them
+            # every stage but the last keeps its tree for the next one, every
+            # stage with rules for them, and the last one of a chain that
+            # yields a model for the runs that resume from it
             text, handed = engine.run(step.stylesheet, params, previous,
-                                      keep_tree=index < len(chain) - 1 or bool(step.checks))
+                                      keep_tree=index < len(chain) - 1 or bool(step.checks)
+                                      or pipeline.yields == "model")
         except TransformError as exc:
             failure = _transform_failure(exc, step, locator)
             found, errors = _messages(engine.messages, step, locator)
@@ -219,6 +227,7 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
         result.stages[step.name] = text
         result.done.append((key, len(result.warnings), step.checks))
         previous = handed if handed is not None else text
+        result.handed = handed if pipeline.yields == "model" else None
     return result
 
 
