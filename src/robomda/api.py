@@ -73,8 +73,8 @@ def _check_well_formed(model: Path) -> None:
                            EXIT_INPUT) from None
 
 
-def _run(chain: pipelines.Pipeline, model: Path, context: dict[str, str], *,
-         steps: int | None = None, resume: pipelines.RunResult | None = None) -> pipelines.RunResult:
+def _run(chain: pipelines.Pipeline, model: Path, context: dict[str, str], *, steps: int | None = None,
+         resume: pipelines.RunResult | None = None, settle: bool = True) -> pipelines.RunResult:
     """Run ``chain`` on ``model``; a model Saxon cannot parse fails as XML001, located by lxml.
 
     Well-formedness is checked only after a failure: a good model is parsed
@@ -84,7 +84,7 @@ def _run(chain: pipelines.Pipeline, model: Path, context: dict[str, str], *,
     if resume is not None and unread:  # the earlier run's warnings start with them: _run put them there
         resume = dataclasses.replace(resume, warnings=resume.warnings[len(unread):])
     try:
-        result = pipelines.run(chain, shared(), model, context, steps=steps, resume=resume)
+        result = pipelines.run(chain, shared(), model, context, steps=steps, resume=resume, settle=settle)
     except RobomdaError as exc:
         if exc.exit_code == EXIT_INTERNAL:
             _check_well_formed(model)
@@ -286,10 +286,12 @@ def default_targets(model: Path | str, model_path: Sequence[Path | str] = ()) ->
     return _default_targets(model, _context(model, None, "", model_path=_model_path(model_path)))[0]
 
 
-def _default_targets(model: Path, context: dict[str, str]) -> tuple[list[str], pipelines.RunResult]:
+def _default_targets(model: Path, context: dict[str, str], *,
+                     settle: bool = True) -> tuple[list[str], pipelines.RunResult]:
     """:func:`default_targets` of a readable ``model``, and the import run that found them (a
-    target's chain resumes from it)."""
-    bound = _run(pipelines.load(pipeline_path("import")), model, context)
+    target's chain resumes from it; with ``settle=False``, the checks of its last stage may still be
+    running: see pipelines.run)."""
+    bound = _run(pipelines.load(pipeline_path("import")), model, context, settle=settle)
     return _targets_of(bound) or [default_target()], bound
 
 
@@ -334,8 +336,9 @@ def generate(model: Path | str, out: Path | str | None, target: str | None = Non
     context = _context(model, out_path, package_name, _type_map(type_map), package, _model_path(model_path))
     bound = None
     if target is None:
-        found, bound = _default_targets(model, context)
+        found, bound = _default_targets(model, context, settle=False)
         if len(found) > 1:
+            pipelines.settle(bound)  # an error of the model comes first
             raise RobomdaError([Diagnostic(
                 "error", "USAGE", f"the model deploys on several middlewares ({', '.join(found)}): "
                 "name the one to generate with --target", file=str(model))], EXIT_INPUT)

@@ -29,6 +29,7 @@ from robomda.diagnostics import (
     parse_stylesheet_error,
     parse_stylesheet_message,
 )
+from robomda import checker as checking
 from robomda.engine import Engine, TransformError, Tree
 from robomda.resources import resource_root
 from robomda.rules import SAXON_FROM, run_rules
@@ -92,10 +93,28 @@ class RunResult:
     # a run that resumes from this one reads it as it is (parsing its text
     # again cost 1.8 s of 41 at 10,000 components)
     handed: Tree | None = None
+    # large stages still being validated in the checker process (see
+    # robomda.checker), oldest first, each with its rules' findings: a run
+    # settles them before anything of a later step counts, and before it ends
+    # (or a run resuming from it does)
+    pending: list[_Pending] = field(default_factory=list)
 
     @property
     def output(self) -> str:
         return list(self.stages.values())[-1]
+
+
+@dataclass
+class _Pending:
+    """A stage being validated in the checker process, and the findings of its rules, which count
+    once it is known valid."""
+
+    step: Step
+    text: str
+    job: checking.Job
+    index: int  # the step's place in timings and done
+    locator: XmiLocator
+    found: list[list[Diagnostic]] = field(default_factory=list)  # per rule set
 
 
 @functools.lru_cache(maxsize=None)
@@ -141,7 +160,7 @@ def _step_key(step: Step, params: dict[str, str]) -> tuple:
 
 
 def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str], *,
-        steps: int | None = None, resume: RunResult | None = None) -> RunResult:
+        steps: int | None = None, resume: RunResult | None = None, settle: bool = True) -> RunResult:
     """Run every step (or the first ``steps``) on ``model``; raise :class:`RobomdaError` on failure.
 
     ``context`` supplies the values of parameters declared with ``from``.
@@ -157,6 +176,13 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
     found the model's targets). The leading steps that it ran with the same
     stylesheet, parameters, schema and rules are taken from it, with their
     warnings, instead of being run again.
+
+    A stage of :data:`~robomda.rules.SAXON_FROM` characters or more (but the
+    file set) is validated in the checker process while its rules and the
+    next step run here (robomda.checker); its rules' findings count once it
+    is known valid, before anything of the next step. ``settle=False`` leaves
+    the last one unsettled in ``pending``, for a run that resumes from this
+    one (or :func:`settle`).
     """
     locator = XmiLocator(model, tuple(Path(unquote(urlparse(u).path)) for u in context.get("model-path", "").split()))
     result = RunResult()
@@ -177,14 +203,22 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
             result.warnings = list(resume.warnings[:warned])
             if index == len(resume.done) - 1 and resume.handed is not None:
                 previous = result.handed = resume.handed
-            elif pending:  # its tree in Saxon: a large model's rules run on it, and the next step reads it
+            elif pending and len(text) < SAXON_FROM:  # its tree in Saxon: the next step reads it
                 previous = engine.parse(text)
-            checking = time.perf_counter()
-            if pending:
-                _checks(pending, result, step, locator, result.tree, previous, text, engine)
-            name, xslt, xsd, rules = resume.timings[index]
-            result.timings.append((name, xslt, xsd, rules + time.perf_counter() - checking))
+            result.pending.extend(p for p in resume.pending if p.index == index)
+            started = time.perf_counter()
+            result.timings.append(resume.timings[index])
             result.done.append((key, len(result.warnings), step.checks))
+            if pending:
+                found = _findings(pending, step, locator, result.tree,
+                                  previous if isinstance(previous, Tree) else None, text, engine)
+                if result.pending:  # counted once the stage is known valid
+                    result.pending[-1].found += found
+                else:
+                    _add(found, result)
+            name, xslt, xsd, rules = result.timings[index]
+            result.timings[index] = (name, xslt, xsd, rules + time.perf_counter() - started)
+            result.done[index] = (key, len(result.warnings), step.checks)
             continue
         started = time.perf_counter()
         try:
@@ -195,6 +229,7 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
                                       keep_tree=index < len(chain) - 1 or bool(step.checks)
                                       or pipeline.yields == "model")
         except TransformError as exc:
+            _settle(result)  # an earlier stage's error comes first
             failure = _transform_failure(exc, step, locator)
             found, errors = _messages(engine.messages, step, locator)
             # the error that stopped the stage first, then the others it
@@ -203,32 +238,85 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
                 failure.diagnostics.extend(errors)
             failure.diagnostics[:0] = result.warnings + found
             raise failure from None
-        found, errors = _messages(engine.messages, step, locator)
+        messages = engine.messages
+        _settle(result)  # the earlier stages' findings before this one's
+        found, errors = _messages(messages, step, locator)
         result.warnings.extend(found)
         if errors:  # reported without stopping: an error all the same
             raise RobomdaError(result.warnings + errors, EXIT_FINDINGS)
         transformed = time.perf_counter()
-        # an lxml tree for the writer, and for a small stage's rules (libxslt);
-        # a large stage's rules run on Saxon's tree, and a valid large stage
-        # is validated as it is parsed
         writes = _writes_files(pipeline, index)
-        tree, violations = validate(text, step.schema,
-                                    keep_tree=writes or bool(step.checks) and len(text) < SAXON_FROM)
+        result.stages[step.name] = text
+        result.timings.append((step.name, transformed - started, 0.0, 0.0))
+        result.done.append((key, len(result.warnings), step.checks))
+        waiting = None if writes else _hand_over(step, text, index, result, locator)
+        tree = _validate(step, text, writes, locator) if waiting is None else None
         result.tree = tree if writes else None
         validated = time.perf_counter()
-        if violations:
-            raise RobomdaError([
-                locator.diagnostic("SCHEMA", f"the {step.name} step wrote a model that breaks "
-                                   f"{step.schema.name}: {v.reason} at {v.path}", v.element_id, step=step.name)
-                for v in violations], EXIT_INTERNAL)
-        _checks(step.checks, result, step, locator, tree, handed, text, engine)
-        result.timings.append((step.name, transformed - started, validated - transformed,
-                               time.perf_counter() - validated))
-        result.stages[step.name] = text
-        result.done.append((key, len(result.warnings), step.checks))
+        try:
+            found = _findings(step.checks, step, locator, tree, handed, text, engine)
+        except Exception:
+            if waiting is not None:  # rules failing on a model that breaks its schema: that first
+                _settle(result)
+            raise
+        if waiting is not None:  # counted once the stage is known valid
+            waiting.found = found
+        else:
+            _add(found, result)
+        result.timings[index] = (step.name, transformed - started, validated - transformed,
+                                 time.perf_counter() - validated)
+        result.done[index] = (key, len(result.warnings), step.checks)
         previous = handed if handed is not None else text
         result.handed = handed if pipeline.yields == "model" else None
+    if settle:
+        _settle(result)
     return result
+
+
+def _validate(step: Step, text: str, writes: bool, locator: XmiLocator) -> etree._Element | None:
+    """Validate a stage against its step's schema (SCHEMA errors when it breaks it); its lxml tree when
+    kept: for the writer, and for a small stage's rules (libxslt). A large stage's rules run on Saxon's
+    tree, and a valid large stage is validated as it is parsed."""
+    tree, violations = validate(text, step.schema, keep_tree=writes or bool(step.checks) and len(text) < SAXON_FROM)
+    if violations:
+        raise RobomdaError([
+            locator.diagnostic("SCHEMA", f"the {step.name} step wrote a model that breaks "
+                               f"{step.schema.name}: {v.reason} at {v.path}", v.element_id, step=step.name)
+            for v in violations], EXIT_INTERNAL)
+    return tree
+
+
+def _hand_over(step: Step, text: str, index: int, result: RunResult, locator: XmiLocator) -> _Pending | None:
+    """Hand a large stage to the checker process to validate (see robomda.checker); None when it is
+    small, or no checker can take it: the caller validates it."""
+    if len(text) < SAXON_FROM or not checking.ENABLED:
+        return None
+    job = checking.checker().submit(text, step.schema)
+    if job is None:
+        return None
+    result.pending.append(_Pending(step, text, job, index, locator))
+    return result.pending[-1]
+
+
+def settle(result: RunResult) -> None:
+    """Wait for the stages of ``result`` still being validated in the checker process: a SCHEMA error,
+    else their rules' findings (warnings join ``result``, an error is raised), as the run would have
+    had them."""
+    _settle(result)
+
+
+def _settle(result: RunResult) -> None:
+    while result.pending:
+        waiting = result.pending.pop(0)
+        started = time.perf_counter()
+        if not checking.checker().valid(waiting.job):
+            # validated here: the checker could not tell, or the model breaks its schema (explained here)
+            _validate(waiting.step, waiting.text, False, waiting.locator)
+        _add(waiting.found, result)
+        name, xslt, xsd, rules = result.timings[waiting.index]
+        result.timings[waiting.index] = (name, xslt, xsd + time.perf_counter() - started, rules)
+        key, _, checks = result.done[waiting.index]
+        result.done[waiting.index] = (key, len(result.warnings), checks)
 
 
 def _writes_files(pipeline: Pipeline, index: int) -> bool:
@@ -236,18 +324,24 @@ def _writes_files(pipeline: Pipeline, index: int) -> bool:
     return pipeline.yields == "files" and index == len(pipeline.steps) - 1
 
 
-def _checks(checks: tuple[Check, ...], result: RunResult, step: Step, locator: XmiLocator,
-            tree: etree._Element | None, source: Tree | None, text: str, engine: Engine) -> None:
-    """Run ``checks`` on the step's model (``tree``: its lxml tree, if parsed; ``source``: its tree in
-    Saxon; ``text``: the same, parsed by lxml when a small model's rules or a finding's location need
-    it); their warnings join ``result``; an error stops the run."""
+def _findings(checks: tuple[Check, ...], step: Step, locator: XmiLocator, tree: etree._Element | None,
+              source: Tree | None, text: str, engine: Engine) -> list[list[Diagnostic]]:
+    """The findings of ``checks`` on the step's model, per rule set (``tree``: its lxml tree, if
+    parsed; ``source``: its tree in Saxon; ``text``: the same, parsed by lxml when a small model's rules
+    or a finding's location need it)."""
     lxml_tree = tree if tree is not None else functools.cache(lambda: parse(text))
     on_saxon = source if len(text) >= SAXON_FROM else None  # see robomda.rules
-    for check in checks:
-        found = run_rules(check.rules, check.phase, lxml_tree, locator, step.name, source=on_saxon, engine=engine)
-        if any(d.severity == "error" for d in found):
-            raise RobomdaError(result.warnings + found, EXIT_FINDINGS)
-        result.warnings.extend(found)
+    return [run_rules(check.rules, check.phase, lxml_tree, locator, step.name, source=on_saxon, engine=engine)
+            for check in checks]
+
+
+def _add(found: list[list[Diagnostic]], result: RunResult) -> None:
+    """The findings of each rule set in turn join the run's warnings; one with an error stops the run
+    (with every finding so far)."""
+    for diags in found:
+        if any(d.severity == "error" for d in diags):
+            raise RobomdaError(result.warnings + diags, EXIT_FINDINGS)
+        result.warnings.extend(diags)
 
 
 def _messages(messages: list[str], step: Step, locator: XmiLocator) -> tuple[list[Diagnostic], list[Diagnostic]]:

@@ -27,7 +27,7 @@ from robomda.diagnostics import model_element_id
 if TYPE_CHECKING:  # imported where a failure is explained: 0.13 s a run saved on success
     import xmlschema
 
-__all__ = ["Violation", "validate", "parse", "schema_of", "stream"]
+__all__ = ["Violation", "validate", "parse", "parse_file", "schema_of", "stream", "streams_valid"]
 
 _FAST: dict[Path, etree.XMLSchema] = {}
 _EXPLAIN: dict[Path, xmlschema.XMLSchema] = {}
@@ -48,6 +48,11 @@ def parse(text: str) -> etree._Element:
     return etree.fromstring(text.encode("utf-8"), _PARSER)
 
 
+def parse_file(path: Path) -> etree._Element:
+    """Parse a stage written to ``path`` (as :func:`parse`, with no copy of its text in memory)."""
+    return etree.parse(str(path), _PARSER).getroot()
+
+
 def schema_of(path: Path) -> etree.XMLSchema:
     """The libxml2 validator of the XSD at ``path``, compiled once per process."""
     return _fast(path.resolve())
@@ -60,11 +65,12 @@ def _fast(path: Path) -> etree.XMLSchema:
     return schema
 
 
-def stream(text: str, schema: etree.XMLSchema | None = None) -> Iterator[etree._Element]:
-    """Each element of ``text`` once read (its end tag), then forgotten: a model read, and validated
-    against ``schema`` when given (XMLSyntaxError when not valid), without a tree of it all (at 10,000
-    components a stage's tree is 0.3 to 0.6 GiB), as fast as parsing one."""
-    for _, element in etree.iterparse(io.BytesIO(text.encode("utf-8")), events=("end",), schema=schema,
+def stream(text: str | Path, schema: etree.XMLSchema | None = None) -> Iterator[etree._Element]:
+    """Each element of ``text`` (or of the file it names) once read (its end tag), then forgotten: a
+    model read, and validated against ``schema`` when given (XMLSyntaxError when not valid), without a
+    tree of it all (at 10,000 components a stage's tree is 0.3 to 0.6 GiB), as fast as parsing one."""
+    source = str(text) if isinstance(text, Path) else io.BytesIO(text.encode("utf-8"))
+    for _, element in etree.iterparse(source, events=("end",), schema=schema,
                                       huge_tree=True, resolve_entities=False, no_network=True):
         yield element
         element.clear(keep_tail=True)
@@ -72,7 +78,8 @@ def stream(text: str, schema: etree.XMLSchema | None = None) -> Iterator[etree._
             del element.getparent()[0]
 
 
-def _streams_valid(text: str, schema: etree.XMLSchema) -> bool:
+def streams_valid(text: str | Path, schema: etree.XMLSchema) -> bool:
+    """Whether ``text`` (or the file it names) is valid against ``schema``, read as a stream."""
     try:
         for _ in stream(text, schema):
             pass
@@ -100,7 +107,7 @@ def validate(text: str, schema_path: Path, *, limit: int = 20,
     """
     schema_path = schema_path.resolve()
     fast = _fast(schema_path)
-    if not keep_tree and _streams_valid(text, fast):
+    if not keep_tree and streams_valid(text, fast):
         return None, []
     root = parse(text)
     if fast.validate(root):
