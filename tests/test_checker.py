@@ -154,3 +154,20 @@ def test_a_large_model_generates_the_same_with_its_stages_validated_aside(
     assert aside.stages == here.stages
     assert [d.format() for d in aside.warnings] == [d.format() for d in here.warnings]
     assert aside.report.written == here.report.written
+
+
+def test_a_process_forked_from_the_driver_gets_a_checker_of_its_own() -> None:
+    ours = checking.checker()
+    assert ours.valid(ours.submit(VALID, FILESET)) is True
+    read, write = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # the child: a checker of its own, which answers it
+        mine = checking.checker()
+        ok = mine is not ours and mine.valid(mine.submit(VALID, FILESET)) is True
+        os.write(write, b"1" if ok else b"0")
+        os._exit(0)
+    os.close(write)
+    assert os.read(read, 1) == b"1"
+    os.waitpid(pid, 0)
+    os.close(read)
+    assert ours.valid(ours.submit(INVALID, FILESET)) is False

@@ -14,7 +14,8 @@ stage itself when the process cannot answer (it died, or raised).
 
 The protocol, one JSON object a line each way, in order: a request
 ``{"job": N, "file": PATH, "schema": XSD}``; the answer ``{"job": N,
-"valid": BOOL, "seconds": S}`` or ``{"job": N, "error": TEXT}``. The
+"valid": BOOL, "seconds": S, "peak": BYTES}`` (its peak resident memory so
+far) or ``{"job": N, "error": TEXT}``. The
 process removes each file once read, and its folder when its input ends
 (the driver exited, or was killed).
 """
@@ -55,6 +56,9 @@ class Checker:
         self._folder: Path | None = None
         self._next = 0
         self._answers: dict[int, dict] = {}
+        # the highest peak resident memory a checker process reported (bench/run.py adds it to the
+        # driver's own)
+        self.peak_bytes = 0
 
     def submit(self, text: str, schema: Path) -> Job | None:
         """Hand ``text`` (a stage) to the checker, to validate against ``schema``. None when no checker
@@ -82,6 +86,7 @@ class Checker:
                 return None
             reply = json.loads(line)
             self._answers[reply["job"]] = reply
+            self.peak_bytes = max(self.peak_bytes, reply.get("peak", 0))
         return self._answers.pop(job.number).get("valid")
 
     def _process(self) -> subprocess.Popen:
@@ -114,13 +119,15 @@ class Checker:
 
 
 _CHECKER: Checker | None = None
+_OWNER = 0
 
 
 def checker() -> Checker:
-    """The driver process's one checker."""
-    global _CHECKER
-    if _CHECKER is None:
-        _CHECKER = Checker()
+    """The driver process's one checker (a process forked from the driver makes its own: the pipes
+    of the driver's are not its to use)."""
+    global _CHECKER, _OWNER
+    if _CHECKER is None or _OWNER != os.getpid():
+        _CHECKER, _OWNER = Checker(), os.getpid()
         atexit.register(_CHECKER.close)
     return _CHECKER
 
@@ -136,7 +143,22 @@ def _check(request: dict) -> dict:
         valid = streams_valid(path, schema_of(Path(request["schema"])))
     finally:
         path.unlink(missing_ok=True)
-    return {"valid": valid, "seconds": time.perf_counter() - started}
+    return {"valid": valid, "seconds": time.perf_counter() - started, "peak": _peak()}
+
+
+def _peak() -> int:
+    """This process's peak resident memory: VmHWM, which starts again at exec (getrusage's maxrss
+    keeps the forked driver's)."""
+    try:
+        with open("/proc/self/status", encoding="ascii") as status:
+            for line in status:
+                if line.startswith("VmHWM:"):
+                    return int(line.split()[1]) * 1024
+    except OSError:
+        pass
+    import resource
+
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
 
 
 def main(folder: str) -> int:
