@@ -18,6 +18,7 @@ from urllib.parse import unquote, urlparse
 
 from lxml import etree
 
+from robomda import checker as checking
 from robomda.diagnostics import (
     EXIT_FINDINGS,
     EXIT_INPUT,
@@ -29,13 +30,12 @@ from robomda.diagnostics import (
     parse_stylesheet_error,
     parse_stylesheet_message,
 )
-from robomda import checker as checking
 from robomda.engine import Engine, TransformError, Tree
 from robomda.resources import resource_root
 from robomda.rules import SAXON_FROM, run_rules
 from robomda.validate import parse, schema_of, validate
 
-__all__ = ["Param", "Check", "Step", "Pipeline", "RunResult", "load", "run"]
+__all__ = ["Param", "Check", "Step", "Pipeline", "RunResult", "load", "run", "settle"]
 
 _NS = {"p": "urn:robomda:pipeline:1"}
 
@@ -212,9 +212,10 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
             if pending:
                 found = _findings(pending, step, locator, result.tree,
                                   previous if isinstance(previous, Tree) else None, text, engine)
-                if result.pending:  # counted once the stage is known valid
+                if result.pending and result.pending[-1].index == index:  # counted once it is known valid
                     result.pending[-1].found += found
                 else:
+                    _settle(result)  # an earlier stage's findings first
                     _add(found, result)
             name, xslt, xsd, rules = result.timings[index]
             result.timings[index] = (name, xslt, xsd, rules + time.perf_counter() - started)
