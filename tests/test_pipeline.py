@@ -82,8 +82,20 @@ def test_a_target_chain_resumes_from_the_import_run_that_found_its_target(monkey
     # the stages' stylesheets (the rules, compiled to XSLT, run on the engine too)
     monkeypatch.setattr(engine, "run", lambda stylesheet, *a, **k: (
         ran.extend([stylesheet.name] if ".sch." not in stylesheet.name else []), real_run(stylesheet, *a, **k))[1])
+    tree = bound.handed
+    assert tree is not None
+    monkeypatch.setattr(engine, "parse", lambda text: pytest.fail("the bound PIM was parsed again"))
     resumed = pipeline.run(chain, engine, model, context, resume=bound)
     assert ran == ["psm.xsl", "main.xsl"]  # import.xsl and bind.xsl were not run again
+    # the bound PIM's tree was handed over, and taken: the earlier result no longer holds it
+    assert bound.handed is None and resumed.handed is None
+    monkeypatch.undo()
+    monkeypatch.setattr(engine, "run", lambda stylesheet, *a, **k: (
+        ran.extend([stylesheet.name] if ".sch." not in stylesheet.name else []), real_run(stylesheet, *a, **k))[1])
+    ran.clear()
+    # a second run resuming from it reads the text
+    assert pipeline.run(chain, engine, model, context, resume=bound).stages == resumed.stages
+    assert ran == ["psm.xsl", "main.xsl"]
     fresh = pipeline.run(chain, Engine(), model, context)
     assert resumed.stages == fresh.stages
     assert [(d.code, d.line, d.message) for d in resumed.warnings] == [(d.code, d.line, d.message) for d in fresh.warnings]

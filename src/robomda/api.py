@@ -82,7 +82,8 @@ def _run(chain: pipelines.Pipeline, model: Path, context: dict[str, str], *, ste
     """
     unread = _external_entities(model)
     if resume is not None and unread:  # the earlier run's warnings start with them: _run put them there
-        resume = dataclasses.replace(resume, warnings=resume.warnings[len(unread):])
+        original, resume = resume, dataclasses.replace(resume, warnings=resume.warnings[len(unread):])
+        original.handed = None  # the copy takes the tree (see RunResult.handed)
     try:
         result = pipelines.run(chain, shared(), model, context, steps=steps, resume=resume, settle=settle)
     except RobomdaError as exc:
