@@ -171,3 +171,11 @@ def test_a_process_forked_from_the_driver_gets_a_checker_of_its_own() -> None:
     os.waitpid(pid, 0)
     os.close(read)
     assert ours.valid(ours.submit(INVALID, FILESET)) is False
+
+
+def test_a_checker_that_answers_nonsense_leaves_the_validation_to_the_driver(fresh: Checker) -> None:
+    job = fresh.submit(VALID, FILESET)
+    fresh._proc.stdout.close()
+    fresh._proc.stdout = __import__("io").StringIO("Traceback (most recent call last):\n")
+    assert fresh.valid(job) is None
+    assert fresh.valid(fresh.submit(VALID, FILESET)) is True

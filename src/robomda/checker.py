@@ -15,9 +15,10 @@ stage itself when the process cannot answer (it died, or raised).
 The protocol, one JSON object a line each way, in order: a request
 ``{"job": N, "file": PATH, "schema": XSD}``; the answer ``{"job": N,
 "valid": BOOL, "seconds": S, "peak": BYTES}`` (its peak resident memory so
-far) or ``{"job": N, "error": TEXT}``. The
-process removes each file once read, and its folder when its input ends
-(the driver exited, or was killed).
+far) or ``{"job": N, "error": TEXT}``. The process removes each file once
+read, and its folder when its input ends (the driver exited, or was
+killed). Its standard error goes nowhere: whatever befalls it, the driver
+validates the stage itself, and the user sees no traceback of it.
 """
 
 from __future__ import annotations
@@ -40,7 +41,7 @@ ENABLED = os.environ.get("ROBOMDA_CHECKER", "1") != "0"
 
 
 class Job:
-    """A stage handed to the checker; :meth:`Checker.answer` waits for it."""
+    """A stage handed to the checker; :meth:`Checker.valid` waits for its answer."""
 
     __slots__ = ("number",)
 
@@ -84,8 +85,12 @@ class Checker:
             if not line:  # the process died: every job still out is the driver's again
                 self.close()
                 return None
-            reply = json.loads(line)
-            self._answers[reply["job"]] = reply
+            try:
+                reply = json.loads(line)
+                self._answers[reply["job"]] = reply
+            except (ValueError, KeyError, TypeError):  # not the checker's answer: it is no longer trusted
+                self.close()
+                return None
             self.peak_bytes = max(self.peak_bytes, reply.get("peak", 0))
         return self._answers.pop(job.number).get("valid")
 
@@ -96,7 +101,8 @@ class Checker:
             env = dict(os.environ, PYTHONPATH=os.pathsep.join(
                 [str(Path(__file__).resolve().parent.parent), *filter(None, [os.environ.get("PYTHONPATH")])]))
             self._proc = subprocess.Popen([sys.executable, "-m", "robomda.checker", str(self._folder)],
-                                          stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True, env=env)
+                                          stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                          stderr=subprocess.DEVNULL, text=True, env=env)
             self._answers = {}
         return self._proc
 
