@@ -70,7 +70,7 @@ def _one(size: int, workdir: Path) -> dict[str, object]:
     done = generate(model, workdir / f"out-{size}")
     wall, cpu = time.perf_counter() - started, time.process_time() - cpu
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024  # generate's, not the floors' below
-    # the checker process checking large stages meanwhile (robomda.checker): its peak counted as
+    # the checker process validating large stages meanwhile (robomda.checker): its peak counted as
     # if it came at the driver's (an upper bound of the two together)
     checker_peak = checker().peak_bytes / 2**20
 
@@ -324,9 +324,9 @@ def main() -> int:
               f"{r['cpu_s'] / r['identity_cpu_s']:>9.1f} {r['peak_rss_mib']:>9.0f} {r['checker_peak_mib']:>7.0f} "
               f"{r['files']:>6}")
     print("(CPU ratio: the driver's CPU seconds over the identity's, steadier than wall time on a busy machine;")
-    print(" it leaves out the checker process's, which checks large stages on the other core meanwhile.")
-    print(" XSD s of a large stage: the time the run waited for the checker's validation and rules. peak MiB:")
-    print(" the driver's peak plus the checker's, an upper bound of the two together.)")
+    print(" it leaves out the checker process's, which validates large stages on the other core meanwhile.")
+    print(" XSD s of a large stage: the time the run waited for the checker. peak MiB: the driver's peak plus")
+    print(" the checker's, an upper bound of the two together.)")
     print("\nper step (XSLT s / XSD s / rules s):")
     for r in rows:
         print(f"  {r['size']:>6}: " + ", ".join(f"{n} {t:.2f}/{v:.2f}/{c:.2f}" for n, t, v, c in r["steps"]))

@@ -1,11 +1,11 @@
-"""Large stages are checked in the checker process (robomda.checker) with the same outcome.
+"""Large stages are validated in the checker process (robomda.checker) with the same outcome.
 
 A stage of rules.SAXON_FROM characters or more is handed to the checker,
-validated and checked by its rules there while the next step runs in the
-driver; its findings count before anything of the next step. The outcome
-must not change: the same diagnostics, in the same order, with the same
-exit code, a schema break reported before anything the next step did, and a
-checker that died leaves the checks to the driver.
+validated there while its rules and the next step run in the driver; its
+rules' findings count once it is known valid. The outcome must not change:
+the same diagnostics, in the same order, with the same exit code, a schema
+break reported before anything the next step did, and a checker that died
+leaves the validation to the driver.
 """
 
 from __future__ import annotations
@@ -31,19 +31,13 @@ VALID = '<fs:files xmlns:fs="urn:robomda:fileset:1" target="t"><fs:file path="a"
 INVALID = VALID.replace('path="a"', 'path="../escape"')
 
 
-def _valid(checker: Checker, job) -> bool | None:
-    """Whether the checker found the stage valid (None: it could not tell)."""
-    answer = checker.answer(job)
-    return None if answer is None else answer.valid
-
-
 @pytest.fixture
 def submitted(monkeypatch: pytest.MonkeyPatch) -> list[int]:
     """The length of each stage handed to a checker."""
     lengths: list[int] = []
     submit = Checker.submit
-    monkeypatch.setattr(Checker, "submit", lambda self, text, *args: lengths.append(len(text))
-                        or submit(self, text, *args))
+    monkeypatch.setattr(Checker, "submit", lambda self, text, schema: lengths.append(len(text))
+                        or submit(self, text, schema))
     return lengths
 
 
@@ -56,7 +50,7 @@ def fresh() -> Checker:
 
 def test_the_checker_says_whether_a_stage_is_valid_and_leaves_no_file(fresh: Checker) -> None:
     jobs = [fresh.submit(text, FILESET) for text in (VALID, INVALID, VALID)]
-    assert [_valid(fresh, job) for job in jobs] == [True, False, True]
+    assert [fresh.valid(job) for job in jobs] == [True, False, True]
     folder = fresh._folder
     assert folder is not None and not list(folder.iterdir())
     fresh.close()
@@ -65,12 +59,12 @@ def test_the_checker_says_whether_a_stage_is_valid_and_leaves_no_file(fresh: Che
 
 def test_a_checker_that_died_leaves_the_validation_to_the_driver(fresh: Checker) -> None:
     job = fresh.submit(VALID, FILESET)
-    assert _valid(fresh, job) is True
+    assert fresh.valid(job) is True
     job = fresh.submit(VALID, FILESET)
     os.kill(fresh._proc.pid, signal.SIGKILL)
-    assert _valid(fresh, job) is None
+    assert fresh.valid(job) is None
     # and the next stage gets a new checker
-    assert _valid(fresh, fresh.submit(VALID, FILESET)) is True
+    assert fresh.valid(fresh.submit(VALID, FILESET)) is True
 
 
 _STEP = """<xsl:stylesheet version="3.0" xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -134,9 +128,8 @@ def test_a_valid_stage_checked_aside_keeps_the_order_of_warnings(tmp_path: Path,
 @pytest.mark.parametrize("case", CORPUS)
 def test_the_broken_corpus_checks_the_same_with_every_stage_validated_aside(
         case: str, monkeypatch: pytest.MonkeyPatch) -> None:
-    """Every stage of every broken model through the checker (its rules in the checker's SaxonC, and
-    in the driver's when it checks the stage itself, as for a large model): the same diagnostics, order
-    and exit code."""
+    """Every stage of every broken model through the checker (and its rules on Saxon, as for a large
+    model): the same diagnostics, order and exit code as validated in the driver."""
     monkeypatch.chdir(ROOT)
     monkeypatch.setattr(pipeline, "SAXON_FROM", 0)
     monkeypatch.setattr(checking, "ENABLED", False)
@@ -155,9 +148,7 @@ def test_a_large_model_generates_the_same_with_its_stages_validated_aside(
 
     model = write_model(600, tmp_path / "model.xmi")
     aside = generate(model, tmp_path / "aside")
-    # import; bind, validated in the import run that found the target; bind again for the rules the
-    # target's chain adds (the PIM rules); psm
-    assert len(submitted) == 4 and min(submitted) >= pipeline.SAXON_FROM
+    assert len(submitted) == 3 and min(submitted) >= pipeline.SAXON_FROM  # import, bind, psm
     monkeypatch.setattr(checking, "ENABLED", False)
     here = generate(model, tmp_path / "here")
     assert aside.stages == here.stages
@@ -167,38 +158,24 @@ def test_a_large_model_generates_the_same_with_its_stages_validated_aside(
 
 def test_a_process_forked_from_the_driver_gets_a_checker_of_its_own() -> None:
     ours = checking.checker()
-    assert _valid(ours, ours.submit(VALID, FILESET)) is True
+    assert ours.valid(ours.submit(VALID, FILESET)) is True
     read, write = os.pipe()
     pid = os.fork()
     if pid == 0:  # the child: a checker of its own, which answers it
         mine = checking.checker()
-        ok = mine is not ours and _valid(mine, mine.submit(VALID, FILESET)) is True
+        ok = mine is not ours and mine.valid(mine.submit(VALID, FILESET)) is True
         os.write(write, b"1" if ok else b"0")
         os._exit(0)
     os.close(write)
     assert os.read(read, 1) == b"1"
     os.waitpid(pid, 0)
     os.close(read)
-    assert _valid(ours, ours.submit(INVALID, FILESET)) is False
+    assert ours.valid(ours.submit(INVALID, FILESET)) is False
 
 
 def test_a_checker_that_answers_nonsense_leaves_the_validation_to_the_driver(fresh: Checker) -> None:
     job = fresh.submit(VALID, FILESET)
     fresh._proc.stdout.close()
     fresh._proc.stdout = __import__("io").StringIO("Traceback (most recent call last):\n")
-    assert _valid(fresh, job) is None
-    assert _valid(fresh, fresh.submit(VALID, FILESET)) is True
-
-
-@pytest.mark.parametrize("case", CORPUS)
-def test_the_broken_corpus_checks_the_same_when_the_checker_never_answers(
-        case: str, monkeypatch: pytest.MonkeyPatch) -> None:
-    """Every stage handed over and never answered for (the checker died each time): the driver checks
-    each one itself, with the same outcome."""
-    monkeypatch.chdir(ROOT)
-    monkeypatch.setattr(pipeline, "SAXON_FROM", 0)
-    monkeypatch.setattr(checking, "ENABLED", False)
-    in_driver = _diagnostics(case)
-    monkeypatch.setattr(checking, "ENABLED", True)
-    monkeypatch.setattr(Checker, "answer", lambda self, job: None)
-    assert _diagnostics(case) == in_driver
+    assert fresh.valid(job) is None
+    assert fresh.valid(fresh.submit(VALID, FILESET)) is True

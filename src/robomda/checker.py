@@ -1,26 +1,21 @@
-"""The checks of a large stage, in another process, while the driver goes on.
+"""The XSD validation of a large stage, in another process, while the driver goes on.
 
-Every intermediate model is validated against its XSD and checked by its
-rules before its result counts. SaxonC holds Python's GIL through a whole
-transform, so a thread cannot check stage N while the driver runs stage
-N+1; another process can, on the second core. :class:`Checker` keeps one
-such process (``python -m robomda.checker``) for the life of the driver's
-process and hands it a stage as a file. It validates the file with libxml2
-as it reads it (no lxml tree: at 10,000 components a stage's is 0.6 GiB),
-then, when the stage has rules, reads it into its own SaxonC and runs them
-there as the driver runs a large stage's rules (robomda.rules), locating
-each finding by the xmi:id it stands for in that tree. It answers whether
-the model is valid and, per rule set, its findings; the driver locates them
-in the XMI and counts them as if it had checked the stage itself. It
-explains an invalid model itself (the rare path: xmlschema), and checks a
+Every intermediate model is validated against its XSD before its result
+counts. SaxonC holds Python's GIL through a whole transform or rule run, so
+a thread cannot validate stage N while the driver checks its rules and runs
+stage N+1; another process can, on the second core. :class:`Checker` keeps
+one such process (``python -m robomda.checker``) for the life of the
+driver's process and hands it a stage as a file, which it validates with
+libxml2 as it reads it (no tree of it: at 10,000 components a stage's lxml
+tree is 0.6 GiB, and the rules need none here: they run in the driver, on
+the tree Saxon holds). It answers whether the model is valid; the driver
+explains an invalid one itself (the rare path: xmlschema), and validates a
 stage itself when the process cannot answer (it died, or raised).
 
 The protocol, one JSON object a line each way, in order: a request
-``{"job": N, "file": PATH, "schema": XSD or null (known valid), "checks":
-[[SCH, PHASE], ...]}``; the answer ``{"job": N, "valid": BOOL, "findings":
-[[[CODE, SEVERITY, MESSAGE, XMI_ID], ...], ...], "seconds": S, "peak":
-BYTES}`` (its peak resident memory so far) or ``{"job": N, "error":
-TEXT}``. The process removes each file once
+``{"job": N, "file": PATH, "schema": XSD}``; the answer ``{"job": N,
+"valid": BOOL, "seconds": S, "peak": BYTES}`` (its peak resident memory so
+far) or ``{"job": N, "error": TEXT}``. The process removes each file once
 read, and its folder when its input ends (the driver exited, or was
 killed). Its standard error goes nowhere: whatever befalls it, the driver
 validates the stage itself, and the user sees no traceback of it.
@@ -36,28 +31,17 @@ import subprocess
 import sys
 import tempfile
 import time
-from dataclasses import dataclass
 from pathlib import Path
 
-from robomda.rules import Finding
+__all__ = ["Checker", "Job", "checker", "ENABLED"]
 
-__all__ = ["Checker", "Job", "Answer", "checker", "ENABLED"]
-
-# ROBOMDA_CHECKER=0 checks every stage in the driver's own process (tests
+# ROBOMDA_CHECKER=0 validates every stage in the driver's own process (tests
 # compare both ways)
 ENABLED = os.environ.get("ROBOMDA_CHECKER", "1") != "0"
 
 
-@dataclass(frozen=True)
-class Answer:
-    """Whether a stage is valid and, when it is, per rule set asked for, its findings."""
-
-    valid: bool
-    findings: tuple[tuple[Finding, ...], ...]
-
-
 class Job:
-    """A stage handed to the checker; :meth:`Checker.answer` waits for its answer."""
+    """A stage handed to the checker; :meth:`Checker.valid` waits for its answer."""
 
     __slots__ = ("number",)
 
@@ -77,17 +61,15 @@ class Checker:
         # driver's own)
         self.peak_bytes = 0
 
-    def submit(self, text: str, schema: Path | None, checks: list[tuple[Path, str | None]] = ()) -> Job | None:
-        """Hand ``text`` (a stage) to the checker, to validate against ``schema`` (None: known valid),
-        then to check by ``checks`` (rule sets and phases). None when no checker process can be had (the
-        caller checks it)."""
+    def submit(self, text: str, schema: Path) -> Job | None:
+        """Hand ``text`` (a stage) to the checker, to validate against ``schema``. None when no checker
+        process can be had (the caller validates it)."""
         try:
             proc = self._process()
             self._next += 1
             path = self._folder / f"{self._next}.xml"
             path.write_bytes(text.encode("utf-8"))
-            request = {"job": self._next, "file": str(path), "schema": schema and str(schema),
-                       "checks": [[str(rules), phase] for rules, phase in checks]}
+            request = {"job": self._next, "file": str(path), "schema": str(schema)}
             proc.stdin.write(json.dumps(request) + "\n")
             proc.stdin.flush()
         except OSError:
@@ -95,9 +77,9 @@ class Checker:
             return None
         return Job(self._next)
 
-    def answer(self, job: Job) -> Answer | None:
-        """What the checker found in the stage of ``job``; None when it could not tell (the caller checks
-        the stage itself)."""
+    def valid(self, job: Job) -> bool | None:
+        """Whether the stage of ``job`` is valid; None when the checker could not tell (the caller
+        validates it)."""
         while job.number not in self._answers:
             line = self._proc.stdout.readline() if self._proc is not None else ""
             if not line:  # the process died: every job still out is the driver's again
@@ -110,10 +92,7 @@ class Checker:
                 self.close()
                 return None
             self.peak_bytes = max(self.peak_bytes, reply.get("peak", 0))
-        reply = self._answers.pop(job.number)
-        if "error" in reply:
-            return None
-        return Answer(reply["valid"], tuple(tuple(Finding(*f) for f in found) for found in reply["findings"]))
+        return self._answers.pop(job.number).get("valid")
 
     def _process(self) -> subprocess.Popen:
         if self._proc is None or self._proc.poll() is not None:
@@ -161,31 +140,16 @@ def checker() -> Checker:
 
 # --------------------------------------------------------------- the process
 
-_ENGINE = None
-
-
 def _check(request: dict) -> dict:
-    from robomda.rules import findings
     from robomda.validate import schema_of, streams_valid
 
-    global _ENGINE
     started = time.perf_counter()
     path = Path(request["file"])
-    found: list[list[list[str | None]]] = []
     try:
-        valid = not request["schema"] or streams_valid(path, schema_of(Path(request["schema"])))
-        if valid and request["checks"]:
-            if _ENGINE is None:
-                from robomda.engine import Engine
-
-                _ENGINE = Engine()
-            source = _ENGINE.parse(path)
-            found = [[[f.code, f.severity, f.message, f.xmi_id]
-                      for f in findings(Path(rules), phase, None, source=source, engine=_ENGINE, in_saxon=True)]
-                     for rules, phase in request["checks"]]
+        valid = streams_valid(path, schema_of(Path(request["schema"])))
     finally:
         path.unlink(missing_ok=True)
-    return {"valid": valid, "findings": found, "seconds": time.perf_counter() - started, "peak": _peak()}
+    return {"valid": valid, "seconds": time.perf_counter() - started, "peak": _peak()}
 
 
 def _peak() -> int:

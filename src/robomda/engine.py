@@ -107,11 +107,8 @@ class Engine:
             self._compiled[stylesheet] = executable
         return executable
 
-    def parse(self, text: str | Path) -> Tree:
-        """A tree of ``text`` (robomda's own XML: an earlier stage's result), or of the file it names, to
-        run stylesheets on."""
-        if isinstance(text, Path):
-            return Tree(self._proc.parse_xml(xml_file_name=str(text)))
+    def parse(self, text: str) -> Tree:
+        """A tree of ``text`` (robomda's own XML: an earlier stage's result) to run stylesheets on."""
         return Tree(self._proc.parse_xml(xml_text=text))
 
     def transform(self, stylesheet: Path, params: dict[str, str], *,

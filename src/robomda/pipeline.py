@@ -32,7 +32,7 @@ from robomda.diagnostics import (
 )
 from robomda.engine import Engine, TransformError, Tree
 from robomda.resources import resource_root
-from robomda.rules import SAXON_FROM, located, run_rules
+from robomda.rules import SAXON_FROM, run_rules
 from robomda.validate import parse, schema_of, validate
 
 __all__ = ["Param", "Check", "Step", "Pipeline", "RunResult", "load", "run", "settle"]
@@ -94,9 +94,10 @@ class RunResult:
     # (parsing its text again cost 1.8 s of 41 at 10,000 components); a later
     # one parses the text
     handed: Tree | None = None
-    # large stages still being checked in the checker process (see
-    # robomda.checker), oldest first: a run settles them before anything of a
-    # later step counts, and before it ends (or a run resuming from it does)
+    # large stages still being validated in the checker process (see
+    # robomda.checker), oldest first, each with its rules' findings: a run
+    # settles them before anything of a later step counts, and before it ends
+    # (or a run resuming from it does)
     pending: list[_Pending] = field(default_factory=list)
 
     @property
@@ -104,18 +105,17 @@ class RunResult:
         return list(self.stages.values())[-1]
 
 
-@dataclass(frozen=True)
+@dataclass
 class _Pending:
-    """A stage being checked in the checker process."""
+    """A stage being validated in the checker process, and the findings of its rules, which count
+    once it is known valid."""
 
     step: Step
-    checks: tuple[Check, ...]
-    validating: bool  # against its XSD too (not a resumed stage's added rules: known valid)
     text: str
     job: checking.Job
     index: int  # the step's place in timings and done
     locator: XmiLocator
-    engine: Engine  # the driver's: it checks the stage itself if the checker cannot
+    found: list[list[Diagnostic]] = field(default_factory=list)  # per rule set
 
 
 @functools.lru_cache(maxsize=None)
@@ -179,11 +179,11 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
     warnings, instead of being run again.
 
     A stage of :data:`~robomda.rules.SAXON_FROM` characters or more (but the
-    file set) is validated and checked by its rules in the checker process
-    while the next step runs here (robomda.checker); its findings count
-    before anything of the next step. ``settle=False`` leaves the last one
-    unsettled in ``pending``, for a run that resumes from this one (or
-    :func:`settle`).
+    file set) is validated in the checker process while its rules and the
+    next step run here (robomda.checker); its rules' findings count once it
+    is known valid, before anything of the next step. ``settle=False`` leaves
+    the last one unsettled in ``pending``, for a run that resumes from this
+    one (or :func:`settle`).
     """
     locator = XmiLocator(model, tuple(Path(unquote(urlparse(u).path)) for u in context.get("model-path", "").split()))
     result = RunResult()
@@ -213,10 +213,14 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
             started = time.perf_counter()
             result.timings.append(resume.timings[index])
             result.done.append((key, len(result.warnings), step.checks))
-            if pending and not _hand_over(step, pending, False, text, index, result, locator, engine):
-                _settle(result)  # an earlier stage's findings first
-                _add(_findings(pending, step, locator, result.tree,
-                               previous if isinstance(previous, Tree) else None, text, engine), result)
+            if pending:
+                found = _findings(pending, step, locator, result.tree,
+                                  previous if isinstance(previous, Tree) else None, text, engine)
+                if result.pending and result.pending[-1].index == index:  # counted once it is known valid
+                    result.pending[-1].found += found
+                else:
+                    _settle(result)  # an earlier stage's findings first
+                    _add(found, result)
             name, xslt, xsd, rules = result.timings[index]
             result.timings[index] = (name, xslt, xsd, rules + time.perf_counter() - started)
             result.done[index] = (key, len(result.warnings), step.checks)
@@ -230,17 +234,16 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
                                       keep_tree=index < len(chain) - 1 or bool(step.checks)
                                       or pipeline.yields == "model")
         except TransformError as exc:
-            messages = engine.messages  # before an earlier stage's checks, which may run on the engine
             _settle(result)  # an earlier stage's error comes first
             failure = _transform_failure(exc, step, locator)
-            found, errors = _messages(messages, step, locator)
+            found, errors = _messages(engine.messages, step, locator)
             # the error that stopped the stage first, then the others it
             # reported before stopping (f:fail-all: in the stage's order)
             if failure.exit_code != EXIT_INTERNAL:
                 failure.diagnostics.extend(errors)
             failure.diagnostics[:0] = result.warnings + found
             raise failure from None
-        messages = engine.messages  # before an earlier stage's checks, which may run on the engine
+        messages = engine.messages
         _settle(result)  # the earlier stages' findings before this one's
         found, errors = _messages(messages, step, locator)
         result.warnings.extend(found)
@@ -251,14 +254,23 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
         result.stages[step.name] = text
         result.timings.append((step.name, transformed - started, 0.0, 0.0))
         result.done.append((key, len(result.warnings), step.checks))
-        if writes or not _hand_over(step, step.checks, True, text, index, result, locator, engine):
-            tree = _validate(step, text, writes, locator)
-            result.tree = tree if writes else None
-            validated = time.perf_counter()
-            _add(_findings(step.checks, step, locator, tree, handed, text, engine), result)
-            result.timings[index] = (step.name, transformed - started, validated - transformed,
-                                     time.perf_counter() - validated)
-            result.done[index] = (key, len(result.warnings), step.checks)
+        waiting = None if writes else _hand_over(step, text, index, result, locator)
+        tree = _validate(step, text, writes, locator) if waiting is None else None
+        result.tree = tree if writes else None
+        validated = time.perf_counter()
+        try:
+            found = _findings(step.checks, step, locator, tree, handed, text, engine)
+        except Exception:
+            if waiting is not None:  # rules failing on a model that breaks its schema: that first
+                _settle(result)
+            raise
+        if waiting is not None:  # counted once the stage is known valid
+            waiting.found = found
+        else:
+            _add(found, result)
+        result.timings[index] = (step.name, transformed - started, validated - transformed,
+                                 time.perf_counter() - validated)
+        result.done[index] = (key, len(result.warnings), step.checks)
         previous = handed if handed is not None else text
         result.handed = handed if pipeline.yields == "model" else None
     if settle:
@@ -279,22 +291,20 @@ def _validate(step: Step, text: str, writes: bool, locator: XmiLocator) -> etree
     return tree
 
 
-def _hand_over(step: Step, checks: tuple[Check, ...], validating: bool, text: str, index: int,
-               result: RunResult, locator: XmiLocator, engine: Engine) -> bool:
-    """Hand a large stage to the checker process (see robomda.checker): to validate against its schema
-    (unless ``validating`` is false) and check by ``checks``. False when it is small, or no checker can
-    take it: the caller checks it."""
+def _hand_over(step: Step, text: str, index: int, result: RunResult, locator: XmiLocator) -> _Pending | None:
+    """Hand a large stage to the checker process to validate (see robomda.checker); None when it is
+    small, or no checker can take it: the caller validates it."""
     if len(text) < SAXON_FROM or not checking.ENABLED:
-        return False
-    job = checking.checker().submit(text, step.schema if validating else None, [(c.rules, c.phase) for c in checks])
+        return None
+    job = checking.checker().submit(text, step.schema)
     if job is None:
-        return False
-    result.pending.append(_Pending(step, checks, validating, text, job, index, locator, engine))
-    return True
+        return None
+    result.pending.append(_Pending(step, text, job, index, locator))
+    return result.pending[-1]
 
 
 def settle(result: RunResult) -> None:
-    """Wait for the stages of ``result`` still being checked in the checker process: a SCHEMA error,
+    """Wait for the stages of ``result`` still being validated in the checker process: a SCHEMA error,
     else their rules' findings (warnings join ``result``, an error is raised), as the run would have
     had them."""
     _settle(result)
@@ -303,19 +313,11 @@ def settle(result: RunResult) -> None:
 def _settle(result: RunResult) -> None:
     while result.pending:
         waiting = result.pending.pop(0)
-        step, locator = waiting.step, waiting.locator
         started = time.perf_counter()
-        answer = checking.checker().answer(waiting.job)
-        if answer is None or not answer.valid:
-            # checked here: the checker could not tell, or the model breaks its schema (explained here)
-            if waiting.validating:
-                _validate(step, waiting.text, False, locator)
-            found = _findings(waiting.checks, step, locator, None, waiting.engine.parse(waiting.text),
-                              waiting.text, waiting.engine)
-        else:
-            found = [located(rule_set, locator, step.name) for rule_set in answer.findings]
-        _add(found, result)
-        # the time the run waited for the checker, as the stage's validation
+        if not checking.checker().valid(waiting.job):
+            # validated here: the checker could not tell, or the model breaks its schema (explained here)
+            _validate(waiting.step, waiting.text, False, waiting.locator)
+        _add(waiting.found, result)
         name, xslt, xsd, rules = result.timings[waiting.index]
         result.timings[waiting.index] = (name, xslt, xsd + time.perf_counter() - started, rules)
         key, _, checks = result.done[waiting.index]

@@ -20,7 +20,7 @@ xmi:id the failing model element (or its nearest ancestor) carries.
 from __future__ import annotations
 
 import functools
-from collections.abc import Callable, Iterable
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -29,7 +29,7 @@ from lxml import etree, isoschematron
 from robomda.diagnostics import Diagnostic, XmiLocator, model_element_id
 from robomda.engine import Engine, Tree, shared
 
-__all__ = ["Finding", "findings", "located", "run_rules", "SEVERITIES", "SAXON_FROM"]
+__all__ = ["Finding", "findings", "run_rules", "SEVERITIES", "SAXON_FROM"]
 
 SEVERITIES = ("error", "warning", "info")
 _SVRL = "http://purl.oclc.org/dsdl/svrl"
@@ -74,52 +74,34 @@ def _report(rules: Path, phase: str | None, tree: etree._Element | Callable[[], 
     return etree.fromstring(engine.run(name, {}, source, keep_tree=False)[0].encode("utf-8"))
 
 
-def findings(rules: Path, phase: str | None, tree: etree._Element | Callable[[], etree._Element] | None, *,
-             source: Tree | None = None, engine: Engine | None = None, in_saxon: bool = False) -> list[Finding]:
+def findings(rules: Path, phase: str | None, tree: etree._Element | Callable[[], etree._Element], *,
+             source: Tree | None = None, engine: Engine | None = None) -> list[Finding]:
     """Every failed assert and successful report of ``rules`` on a model, in report order.
 
     The rules run in SaxonC on ``source``, the model's tree there, when
     given, else on libxslt on ``tree``, its lxml tree; ``tree`` (or a
     function that makes it) also locates the findings, and is asked for
-    only when there are some. With ``in_saxon`` they are located in
-    ``source`` (no lxml tree: the checker process, robomda.checker).
+    only when there are some.
     """
     found = list(_report(rules, phase, tree, source, engine).iter(f"{{{_SVRL}}}failed-assert",
                                                                   f"{{{_SVRL}}}successful-report"))
     if not found:
         return []
-    element_id = (functools.partial(_saxon_element_id, engine or shared(), source) if in_saxon
-                  else functools.partial(_lxml_element_id, _tree(tree).getroottree()))
+    doc = _tree(tree).getroottree()
     result: list[Finding] = []
     for item in found:
         severity = (item.get("role") or "error").lower()
         if severity not in SEVERITIES:
             severity = "error"
         message = " ".join("".join(item.findtext(f"{{{_SVRL}}}text") or "").split())
+        located = doc.xpath(item.get("location", "/")) if item.get("location") else []
+        node = located[0] if located and isinstance(located[0], etree._Element) else None
         # a "-holder" diagnostic names the element that holds the bad value
         holders = [" ".join("".join(d.itertext()).split()) for d in item.iter(f"{{{_SVRL}}}diagnostic-reference")
                    if (d.get("diagnostic") or "").endswith("-holder")]
         holder = next((h for h in holders if h), None)
-        result.append(Finding(item.get("id") or "RULE", severity, message,
-                              holder or (element_id(item.get("location")) if item.get("location") else None)))
+        result.append(Finding(item.get("id") or "RULE", severity, message, holder or model_element_id(node)))
     return result
-
-
-def _lxml_element_id(doc: etree._ElementTree, location: str) -> str | None:
-    """The xmi:id the element at ``location`` (the SVRL's XPath) stands for (model_element_id)."""
-    located = doc.xpath(location)
-    return model_element_id(located[0] if located and isinstance(located[0], etree._Element) else None)
-
-
-# model_element_id in XPath: the element at the location, else none; its
-# nearest ancestor-or-self with one of the id attributes, the first of them
-_ELEMENT_ID = ("({location})[1][self::*]/ancestor-or-self::*[@xmi-id != '' or @id != '' or @component != ''"
-               " or @port != ''][1]/(@xmi-id[. != ''], @id[. != ''], @component[. != ''], @port[. != ''])[1]")
-
-
-def _saxon_element_id(engine: Engine, source: Tree, location: str) -> str | None:
-    """As _lxml_element_id, located in Saxon's tree."""
-    return next(iter(engine.strings(source, _ELEMENT_ID.format(location=location), {})), None)
 
 
 def _tree(tree: etree._Element | Callable[[], etree._Element]) -> etree._Element:
@@ -131,10 +113,6 @@ def run_rules(rules: Path, phase: str | None, tree: etree._Element | Callable[[]
               engine: Engine | None = None) -> list[Diagnostic]:
     """The findings of ``rules`` on a model (see :func:`findings`) as located diagnostics, sorted by XMI
     position."""
-    return located(findings(rules, phase, tree, source=source, engine=engine), locator, step)
-
-
-def located(found: Iterable[Finding], locator: XmiLocator, step: str) -> list[Diagnostic]:
-    """Findings as diagnostics located in the XMI, sorted by their position there."""
-    diags = [locator.diagnostic(f.code, f.message, f.xmi_id, severity=f.severity, step=step) for f in found]
+    diags = [locator.diagnostic(f.code, f.message, f.xmi_id, severity=f.severity, step=step)
+             for f in findings(rules, phase, tree, source=source, engine=engine)]
     return sorted(diags, key=lambda d: (d.line or 0, d.column or 0, d.code))
