@@ -179,3 +179,17 @@ def test_a_checker_that_answers_nonsense_leaves_the_validation_to_the_driver(fre
     fresh._proc.stdout = __import__("io").StringIO("Traceback (most recent call last):\n")
     assert fresh.valid(job) is None
     assert fresh.valid(fresh.submit(VALID, FILESET)) is True
+
+
+@pytest.mark.parametrize("case", CORPUS)
+def test_the_broken_corpus_checks_the_same_when_the_checker_never_answers(
+        case: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Every stage handed over and never answered for (the checker died each time): the driver
+    validates each one itself, with the same outcome."""
+    monkeypatch.chdir(ROOT)
+    monkeypatch.setattr(pipeline, "SAXON_FROM", 0)
+    monkeypatch.setattr(checking, "ENABLED", False)
+    in_driver = _diagnostics(case)
+    monkeypatch.setattr(checking, "ENABLED", True)
+    monkeypatch.setattr(Checker, "valid", lambda self, job: None)
+    assert _diagnostics(case) == in_driver
