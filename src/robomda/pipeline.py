@@ -80,7 +80,9 @@ class RunResult:
     # the writer; no other stage is held as an lxml tree (0.3 to 0.6 GiB each
     # at 10,000 components)
     tree: etree._Element | None = None
-    # per step: (name, seconds in XSLT, in XSD validation, in Schematron rules)
+    # per step: (name, seconds in XSLT, in XSD validation, in Schematron rules);
+    # for a stage validated in the checker process, the seconds the run waited
+    # for it (robomda.checker)
     timings: list[tuple[str, float, float, float]] = field(default_factory=list)
     # warnings and infos: from the stylesheets (f:warn) and from the rules,
     # located in the XMI, in the order the steps found them
