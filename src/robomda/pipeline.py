@@ -198,34 +198,7 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
         # only a leading run of steps: a step after one that ran has new input
         resuming = resuming and index < len(resume.done) and resume.done[index][0] == key
         if resuming:
-            _, warned, checked = resume.done[index]
-            # the rules this chain checks on the step and the earlier run did not
-            pending = tuple(c for c in step.checks if c not in checked)
-            text = result.stages[step.name] = previous = resume.stages[step.name]
-            result.tree = parse(text) if _writes_files(pipeline, index) else None
-            result.warnings = list(resume.warnings[:warned])
-            if index == len(resume.done) - 1 and resume.handed is not None:
-                # taken, not shared: left in the earlier result, the tree stayed alive through
-                # the later stages and cost them 1.5 s of garbage collection at 10,000 components
-                previous = result.handed = resume.handed
-                resume.handed = None
-            elif pending and len(text) < SAXON_FROM:  # its tree in Saxon: the next step reads it
-                previous = engine.parse(text)
-            result.pending.extend(p for p in resume.pending if p.index == index)
-            started = time.perf_counter()
-            result.timings.append(resume.timings[index])
-            result.done.append((key, len(result.warnings), step.checks))
-            if pending:
-                found = _findings(pending, step, locator, result.tree,
-                                  previous if isinstance(previous, Tree) else None, text, engine)
-                if result.pending and result.pending[-1].index == index:  # counted once it is known valid
-                    result.pending[-1].found += found
-                else:
-                    _settle(result)  # an earlier stage's findings first
-                    _add(found, result)
-            name, xslt, xsd, rules = result.timings[index]
-            result.timings[index] = (name, xslt, xsd, rules + time.perf_counter() - started)
-            result.done[index] = (key, len(result.warnings), step.checks)
+            previous = _resumed(pipeline, index, key, resume, result, locator, engine)
             continue
         started = time.perf_counter()
         try:
@@ -278,6 +251,42 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
     if settle:
         _settle(result)
     return result
+
+
+def _resumed(pipeline: Pipeline, index: int, key: tuple, resume: RunResult, result: RunResult,
+             locator: XmiLocator, engine: Engine) -> str | Tree:
+    """Take step ``index`` from ``resume`` into ``result`` (output, warnings, checks still pending),
+    check it by the rules this chain adds, and return what the next step reads."""
+    step = pipeline.steps[index]
+    _, warned, checked = resume.done[index]
+    # the rules this chain checks on the step and the earlier run did not
+    pending = tuple(c for c in step.checks if c not in checked)
+    text = result.stages[step.name] = previous = resume.stages[step.name]
+    result.tree = parse(text) if _writes_files(pipeline, index) else None
+    result.warnings = list(resume.warnings[:warned])
+    if index == len(resume.done) - 1 and resume.handed is not None:
+        # taken, not shared: left in the earlier result, the tree stayed alive through
+        # the later stages and cost them 1.5 s of garbage collection at 10,000 components
+        previous = result.handed = resume.handed
+        resume.handed = None
+    elif pending:  # its tree in Saxon: a large model's rules run on it, and the next step reads it
+        previous = engine.parse(text)
+    result.pending.extend(p for p in resume.pending if p.index == index)
+    started = time.perf_counter()
+    result.timings.append(resume.timings[index])
+    result.done.append((key, len(result.warnings), step.checks))
+    if pending:
+        found = _findings(pending, step, locator, result.tree,
+                          previous if isinstance(previous, Tree) else None, text, engine)
+        if result.pending and result.pending[-1].index == index:  # counted once it is known valid
+            result.pending[-1].found += found
+        else:
+            _settle(result)  # an earlier stage's findings first
+            _add(found, result)
+    name, xslt, xsd, rules = result.timings[index]
+    result.timings[index] = (name, xslt, xsd, rules + time.perf_counter() - started)
+    result.done[index] = (key, len(result.warnings), step.checks)
+    return previous
 
 
 def _validate(step: Step, text: str, writes: bool, locator: XmiLocator) -> etree._Element | None:

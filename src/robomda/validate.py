@@ -27,7 +27,7 @@ from robomda.diagnostics import model_element_id
 if TYPE_CHECKING:  # imported where a failure is explained: 0.13 s a run saved on success
     import xmlschema
 
-__all__ = ["Violation", "validate", "parse", "parse_file", "schema_of", "stream", "streams_valid"]
+__all__ = ["Violation", "validate", "parse", "schema_of", "stream", "streams_valid"]
 
 _FAST: dict[Path, etree.XMLSchema] = {}
 _EXPLAIN: dict[Path, xmlschema.XMLSchema] = {}
@@ -46,11 +46,6 @@ class Violation:
 def parse(text: str) -> etree._Element:
     """Parse a stage's output (robomda's own XML: safe parser settings)."""
     return etree.fromstring(text.encode("utf-8"), _PARSER)
-
-
-def parse_file(path: Path) -> etree._Element:
-    """Parse a stage written to ``path`` (as :func:`parse`, with no copy of its text in memory)."""
-    return etree.parse(str(path), _PARSER).getroot()
 
 
 def schema_of(path: Path) -> etree.XMLSchema:
