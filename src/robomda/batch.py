@@ -53,7 +53,7 @@ from lxml import etree
 
 from robomda import __version__
 from robomda.diagnostics import EXIT_OK, as_error, linked_files
-from robomda.inputs import urdf_files
+from robomda.inputs import robot_files
 from robomda.output import STATE_FILE as OUTPUT_STATE
 from robomda.output import atomic_write
 from robomda.resources import resource_root
@@ -196,7 +196,7 @@ def _input_hash(model: Path, linked: list[Path]) -> str:
     digest = hashlib.sha256(model.read_bytes())
     for path in linked:
         digest.update(b"\0" + path.as_posix().encode() + b"\0" + path.read_bytes())
-    for path in [urdf for source in (model, *linked) for urdf in urdf_files(source)]:
+    for path in robot_files(model, linked):
         digest.update(b"\0urdf\0" + path.as_posix().encode() + b"\0"
                       + (path.read_bytes() if path.is_file() else b"(missing)"))
     return digest.hexdigest()

@@ -16,7 +16,7 @@ from lxml import etree
 
 from robomda.diagnostics import file_ref_path, linked_files
 
-__all__ = ["urdf_files", "model_files"]
+__all__ = ["urdf_files", "robot_files", "model_files"]
 
 _PROFILE_URI = "http://robomda.org/profile/robomda/1"
 
@@ -42,9 +42,14 @@ def urdf_files(model: Path) -> list[Path]:
     return found
 
 
+def robot_files(model: Path, linked: list[Path]) -> list[Path]:
+    """The URDF files ``model`` and the model files it references (``linked``) name (:func:`urdf_files`),
+    in that order."""
+    return [path for source in (model, *linked) for path in urdf_files(source)]
+
+
 def model_files(model: Path, search: tuple[Path, ...] = ()) -> list[Path]:
     """``model``, the model files it references (:func:`linked_files`, ``search`` being the model path)
     and the URDF files any of them names (there or not), each once, in that order."""
     linked = linked_files(model, search)
-    urdf = [path for source in (model, *linked) for path in urdf_files(source)]
-    return list(dict.fromkeys([model, *linked, *urdf]))
+    return list(dict.fromkeys([model, *linked, *robot_files(model, linked)]))
