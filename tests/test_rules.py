@@ -105,6 +105,9 @@ CASES_BY_RULE: dict[str, tuple[Path, str | None, Path, list[tuple[str, str]]]] =
                                           r'\1middleware="OROCOS"'),
                                          ('period-source="realizing-class"', 'period-source="default"')]),
     "PLT010": (ROS_LIMITS, None, PID_PIM, [('scheduler="OTHER"', 'scheduler="RT"')]),
+    # controller on ROS 2, after arm and vision, both left on Orocos
+    "PLT012": (ROS_LIMITS, "ros2", DIST_PIM, [(r'(<pim:instance name="controller" [^>]*?)middleware="OROCOS"',
+                                               r'\1middleware="ROS2"')]),
     "ORO101": (OROCOS_RULES, None, MEKA_PSM, [('priority="50" scheduler="ORO_SCHED_OTHER"',
                                               'priority="0" scheduler="ORO_SCHED_RT"')]),
     "ORO102": (OROCOS_RULES, None, MEKA_PSM, [('priority="50" scheduler="ORO_SCHED_OTHER"',
@@ -198,7 +201,7 @@ def test_each_rule_fires_on_the_model_that_breaks_it(rule: str, saxon: _SaxonSch
 
 def test_every_rule_in_the_schematron_files_has_a_case() -> None:
     ids = set()
-    for rules in (PIM_RULES, OROCOS_RULES, ROS_RULES):
+    for rules in (PIM_RULES, OROCOS_RULES, ROS_RULES, ROS_LIMITS):
         tree = etree.parse(str(rules))
         ids |= set(tree.xpath("//sch:assert/@id | //sch:report/@id",
                               namespaces={"sch": "http://purl.oclc.org/dsdl/schematron"}))
@@ -208,7 +211,46 @@ def test_every_rule_in_the_schematron_files_has_a_case() -> None:
 
 def test_every_rule_is_documented() -> None:
     documented = (ROOT / "docs" / "errors.md").read_text(encoding="utf-8")
-    for rules in (PIM_RULES, OROCOS_RULES, ROS_RULES):
+    for rules in (PIM_RULES, OROCOS_RULES, ROS_RULES, ROS_LIMITS):
         for rule_id in etree.parse(str(rules)).xpath("//sch:assert/@id | //sch:report/@id",
                                                      namespaces={"sch": "http://purl.oclc.org/dsdl/schematron"}):
             assert f"| {rule_id} |" in documented, rule_id
+
+
+# ROS 2 keeps a start order among the composable nodes of one container (one launch file) and among the
+# managed nodes of one host (its lifecycle manager); PLT012 (phase ros2) names each StartAfter pair it does not
+# keep; roslaunch keeps none (PLT011, phase ros1, once a model). The distributed fixture put wholly on ROS 2: controller starts after arm (same process rttControl, so
+# kept) and after vision (process rttVision on the other host).
+_ALL_ROS2 = (r'middleware="(OROCOS|ROS)"', 'middleware="ROS2"')
+_MANAGED = [(r'(name="rttControl" middleware="ROS2") managed="false"', r'\1 managed="true"'),
+            (r'(name="rttVision" middleware="ROS2") managed="false"', r'\1 managed="true"')]
+_VISION_ON_CONTROL_PC = [
+    (r'(name="rttVision" middleware="ROS2" managed="\w+") host="_dstVisnPCnodeF6g7H8i9J0"',
+     r'\1 host="_dstCtrlPCnodeA1b2C3d4E5"'),
+    (r'(<pim:instance name="vision" [^>]*?)host="_dstVisnPCnodeF6g7H8i9J0"', r'\1host="_dstCtrlPCnodeA1b2C3d4E5"')]
+ROS2_ORDER_CASES = {
+    # (edits, phase, the pairs PLT011 names: (later, earlier))
+    "other process": ([_ALL_ROS2], "ros2", [("controller", "vision")]),
+    "managed, other host": ([_ALL_ROS2, *_MANAGED], "ros2", [("controller", "vision")]),
+    "managed, one host": ([_ALL_ROS2, *_MANAGED, *_VISION_ON_CONTROL_PC], "ros2", []),
+    "one managed": ([_ALL_ROS2, _MANAGED[0], *_VISION_ON_CONTROL_PC], "ros2", [("controller", "vision")]),
+    "vision on Orocos": ([(r'(<pim:instance name="(?!vision")[^"]*" [^>]*?)middleware="(OROCOS|ROS)"',
+                           r'\1middleware="ROS2"')] * 4, "ros2", [("controller", "vision")]),
+    "ROS 1: once, no order kept": ([_ALL_ROS2], "ros1", [("", "")]),
+}
+
+
+@pytest.mark.parametrize("case", sorted(ROS2_ORDER_CASES))
+def test_start_orders_the_launch_files_do_not_keep(case: str, saxon: _SaxonSchematron) -> None:
+    edits, phase, pairs = ROS2_ORDER_CASES[case]
+    text = DIST_PIM.read_text(encoding="utf-8")
+    for pattern, replacement in edits:
+        text = re.sub(pattern, replacement, text, count=0 if pattern == _ALL_ROS2[0] else 1, flags=re.S)
+    found = [f for f in findings(ROS_LIMITS, phase, etree.fromstring(text.encode("utf-8")))
+             if f.code in ("PLT011", "PLT012")]
+    assert {f.code for f in found} <= {"PLT012" if phase == "ros2" else "PLT011"}
+    named = [tuple(re.findall(r"'(\w+)'", f.message)[:2]) if phase == "ros2" else ("", "") for f in found]
+    assert named == pairs, [f.message for f in found]
+    assert all(f.severity == "warning" for f in found)
+    code = "PLT012" if phase == "ros2" else "PLT011"
+    assert saxon.codes(ROS_LIMITS, phase, text)[(code, "warning")] == len(pairs)
