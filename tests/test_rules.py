@@ -254,3 +254,27 @@ def test_start_orders_the_launch_files_do_not_keep(case: str, saxon: _SaxonSchem
     assert all(f.severity == "warning" for f in found)
     code = "PLT012" if phase == "ros2" else "PLT011"
     assert saxon.codes(ROS_LIMITS, phase, text)[(code, "warning")] == len(pairs)
+
+
+def _outside_predicates(path: str) -> str:
+    depth, kept = 0, []
+    for char in path:
+        depth += char == "["
+        if depth == 0:
+            kept.append(char)
+        depth -= char == "]"
+    return "".join(kept)
+
+
+@pytest.mark.parametrize("rules", [PIM_RULES, OROCOS_RULES, ROS_RULES, ROS_LIMITS], ids=lambda p: p.name)
+def test_every_rule_context_is_an_element(rules: Path) -> None:
+    # robomda compiles the rules to walk elements only (rules.py: the skeleton's attributes and
+    # only-child-elements parameters); a context that could match an attribute, a text, a comment or a
+    # processing instruction would silently never fire
+    contexts = etree.parse(str(rules)).xpath("//sch:rule/@context",
+                                             namespaces={"sch": "http://purl.oclc.org/dsdl/schematron"})
+    assert contexts
+    for context in contexts:
+        steps = _outside_predicates(context)
+        for other in ("@", "attribute::", "node()", "text()", "comment()", "processing-instruction("):
+            assert other not in steps, context
