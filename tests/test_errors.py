@@ -113,7 +113,7 @@ def test_a_model_deployed_elsewhere_is_generated_with_a_located_warning(
                           "--maintainer", "A B <a@b.org>", "--license", "MIT")
     line, column = _line_of(model, 'name="ROS"')
     assert code == 0
-    assert err[0].startswith(f"{model}:{line}:{column}: warning: [ORO006] ") and "generating all 6" in err[0]
+    assert err[0].startswith(f"{model}:{line}:{column}: warning: [ORO006] ") and "all 6 are generated for Orocos" in err[0]
     # then the Orocos rules' warnings on the Meka activities and lifecycle
     assert {e.split(": warning: [")[1][:6] for e in err[1:]} == {"ORO102", "ORO103"}
     assert len(list((tmp_path / "out" / "src").glob("*.cpp"))) == 7

@@ -18,6 +18,8 @@
   Functions
     fp:package-name($requested, $model)  the package name ('' = from model)
     fp:on-target($instance, $middleware)  whether the target takes the instance
+    fp:check-targets($model, $instances, $middleware, $package, $codes)  nothing to generate,
+                                 instances taken though deployed elsewhere, each one left out
     fp:kept-connection($connection, $binding, $targets)  a connection with an end in the package
     fp:psm-host-resources($host)  real-time, cores, memory and buses of a host
     fp:check-class-names($components, $code)
@@ -86,6 +88,36 @@
     <xsl:param name="middleware" as="xs:string"/>
     <xsl:sequence select="$instance/@middleware eq $middleware
                           or empty(key('fp:instance-by-middleware', $middleware, root($instance)))"/>
+  </xsl:function>
+
+  <!-- the package's instances ($instances, fp:on-target) against the
+       model's, for the target of $middleware whose package $package names
+       ('Orocos', 'ROS 1'): $codes[1] (an error) when there is nothing to
+       generate, $codes[2] when the package takes instances deployed on
+       other middlewares (none is on $middleware), $codes[3] for each
+       instance it leaves to another middleware's target -->
+  <xsl:function name="fp:check-targets" as="empty-sequence()">
+    <xsl:param name="model" as="element(pim:model)"/>
+    <xsl:param name="instances" as="element(pim:instance)*"/>
+    <xsl:param name="middleware" as="xs:string"/>
+    <xsl:param name="package" as="xs:string"/>
+    <xsl:param name="codes" as="xs:string+"/>
+    <xsl:if test="empty($instances)">
+      <xsl:sequence select="f:fail($codes[1], $model/@id, 'nothing to generate: model ''' || $model/@name
+          || ''' has no component instance (a component with ports or a realizing class)')"/>
+    </xsl:if>
+    <xsl:variable name="other" as="element(pim:instance)*" select="$instances[@middleware ne $middleware]"/>
+    <xsl:if test="exists($other)">
+      <xsl:sequence select="f:warn($codes[2], $other[1]/@execution-environment, 'no instance is deployed on '
+          || $middleware || ': the platform model deploys ''' || string-join($other/@name, ''', ''') || ''' on '
+          || string-join(distinct-values($other/@middleware), ', ') || '; all ' || count($other)
+          || ' are generated for ' || $package || ' anyway')"/>
+    </xsl:if>
+    <xsl:for-each select="$model/pim:binding/pim:instance except $instances">
+      <xsl:sequence select="f:warn($codes[3], string(@xmi-id), 'instance ''' || @name || ''' is deployed on '
+          || @middleware || ', not ' || $middleware || ': it is not part of the ' || $package
+          || ' package (the ' || @middleware || ' target generates it)')"/>
+    </xsl:for-each>
   </xsl:function>
 
   <!-- a connection of $binding that a PSM keeps: one of its ends is an

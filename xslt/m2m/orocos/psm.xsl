@@ -139,7 +139,7 @@
     <xsl:variable name="binding" as="element(pim:binding)" select="pim:binding"/>
     <xsl:variable name="package" as="xs:string" select="fp:package-name($package-name, .)"/>
     <xsl:variable name="instances" as="element(pim:instance)*" select="$binding/pim:instance[fp:on-target(., 'OROCOS')]"/>
-    <xsl:sequence select="fp:oro-check-targets(., $instances)"/>
+    <xsl:sequence select="fp:check-targets(., $instances, 'OROCOS', 'Orocos', ('ORO005', 'ORO006', 'ORO007'))"/>
     <!-- the names and the component ids of $instances, as sets: whether an
          instance / component is in the package is one look-up -->
     <xsl:variable name="targets" as="map(xs:string, xs:boolean)"
@@ -195,28 +195,6 @@
       </xsl:call-template>
     </o:deployment>
   </xsl:template>
-
-  <!-- ORO005 when nothing is on the target, ORO006 when it takes every
-       instance, ORO007 for each instance it leaves out -->
-  <xsl:function name="fp:oro-check-targets" as="empty-sequence()">
-    <xsl:param name="model" as="element(pim:model)"/>
-    <xsl:param name="instances" as="element(pim:instance)*"/>
-    <xsl:variable name="binding" as="element(pim:binding)" select="$model/pim:binding"/>
-    <xsl:if test="empty($instances)">
-      <xsl:sequence select="f:fail('ORO005', $model/@id, 'nothing to generate: model ''' || $model/@name
-          || ''' has no component instance (a component with ports or a realizing class)')"/>
-    </xsl:if>
-    <xsl:if test="empty($binding/pim:instance[@middleware eq 'OROCOS'])">
-      <xsl:sequence select="f:warn('ORO006', ($instances/@execution-environment)[1],
-          'no component is deployed on OROCOS (the platform says '
-          || string-join(distinct-values($instances/@middleware), ', ')
-          || '): generating all ' || count($instances) || ' instances for Orocos')"/>
-    </xsl:if>
-    <xsl:for-each select="$binding/pim:instance except $instances">
-      <xsl:sequence select="f:warn('ORO007', string(@xmi-id), 'instance ''' || @name || ''' is deployed on '
-          || @middleware || ', not OROCOS: it is not part of the Orocos package')"/>
-    </xsl:for-each>
-  </xsl:function>
 
   <!-- a kept connection: its policy, its Orocos ends in their processes
        ($files: process id -> deployment file), their transports -->

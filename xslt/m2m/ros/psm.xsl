@@ -184,7 +184,8 @@
     <xsl:sequence select="fp:check-class-names($components, 'ROS004')"/>
     <xsl:sequence select="fp:check-services($components, 'ROS009'), fp:check-calls($binding/pim:call, $targets, 'ROS009'),
                           fp:warn-unbound-services($instances, 'ROS105')"/>
-    <xsl:sequence select="fp:ros-check-targets(., $instances)"/>
+    <xsl:sequence select="fp:check-targets(., $instances, $fp:target-middleware, 'ROS ' || $ros-version,
+                                           ('ROS008', 'ROS100', 'ROS110'))"/>
     <xsl:variable name="connections" as="element(pim:connection)*"
         select="$binding/pim:connection[fp:kept-connection(., $binding, $targets)]"/>
     <xsl:sequence select="f:fail-all(for $c in $connections, $end in fp:foreign-ends($c, $targets)[not(fp:reachable(@middleware))]
@@ -222,30 +223,6 @@
       </xsl:call-template>
     </r:package>
   </xsl:template>
-
-  <!-- ROS008 when there is nothing to generate, ROS100 when the package
-       takes every instance although none is deployed on its middleware,
-       ROS110 for each instance it leaves to another middleware's target -->
-  <xsl:function name="fp:ros-check-targets" as="empty-sequence()">
-    <xsl:param name="model" as="element(pim:model)"/>
-    <xsl:param name="instances" as="element(pim:instance)*"/>
-    <xsl:variable name="binding" as="element(pim:binding)" select="$model/pim:binding"/>
-    <xsl:if test="empty($instances)">
-      <xsl:sequence select="f:fail('ROS008', $model/@id, 'nothing to generate: model ''' || $model/@name
-          || ''' has no component instance (a component with ports or a realizing class)')"/>
-    </xsl:if>
-    <xsl:variable name="other" as="element(pim:instance)*" select="$instances[@middleware ne $fp:target-middleware]"/>
-    <xsl:if test="exists($other)">
-      <xsl:sequence select="f:warn('ROS100', $other[1]/@execution-environment, 'the platform model deploys instance(s) '''
-          || string-join($other/@name, ''', ''') || ''' on ' || string-join(distinct-values($other/@middleware), ', ')
-          || ', not ' || $fp:target-middleware || ': generated for ROS ' || $ros-version || ' anyway')"/>
-    </xsl:if>
-    <xsl:for-each select="$binding/pim:instance except $instances">
-      <xsl:sequence select="f:warn('ROS110', string(@xmi-id), 'instance ''' || @name || ''' is deployed on '
-          || @middleware || ', not ' || $fp:target-middleware || ': it is not part of the ROS ' || $ros-version
-          || ' package (the ' || @middleware || ' target generates it)')"/>
-    </xsl:for-each>
-  </xsl:function>
 
   <!-- instance $instance is a ROS 2 managed (lifecycle) node: its process
        asks for it (Middleware managed, N8) -->
