@@ -140,7 +140,7 @@ def test_check_runs_what_generate_runs_and_names_the_rule_sets(capsys: pytest.Ca
     # ORO005 comes from the PSM stylesheet: the PSM rules never ran, and the summary says so
     assert "checked for orocos; rules: pim.sch)" in out
     code, out, _ = run(capsys, "check", str(CASES / "pid" / "model.xmi"))
-    assert code == 0 and "checked for ros1; rules: pim.sch, ros-limits.sch, psm-ros.sch" in out
+    assert code == 0 and "checked for ros1; rules: pim.sch, ros-limits.sch (ros1), psm-ros.sch" in out
 
 
 def test_a_package_name_that_is_rewritten_says_so(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
