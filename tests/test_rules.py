@@ -219,8 +219,9 @@ def test_every_rule_is_documented() -> None:
 
 # ROS 2 keeps a start order among the composable nodes of one container (one launch file) and among the
 # managed nodes of one host (its lifecycle manager); PLT012 (phase ros2) names each StartAfter pair it does not
-# keep; roslaunch keeps none (PLT011, phase ros1, once a model). The distributed fixture put wholly on ROS 2: controller starts after arm (same process rttControl, so
-# kept) and after vision (process rttVision on the other host).
+# keep; roslaunch keeps none (PLT011, phase ros1, once a model). The distributed fixture put wholly on ROS 2:
+# controller starts after arm (same process rttControl, so kept) and after vision (process rttVision on the
+# other host).
 _ALL_ROS2 = (r'middleware="(OROCOS|ROS)"', 'middleware="ROS2"')
 _MANAGED = [(r'(name="rttControl" middleware="ROS2") managed="false"', r'\1 managed="true"'),
             (r'(name="rttVision" middleware="ROS2") managed="false"', r'\1 managed="true"')]
@@ -229,7 +230,7 @@ _VISION_ON_CONTROL_PC = [
      r'\1 host="_dstCtrlPCnodeA1b2C3d4E5"'),
     (r'(<pim:instance name="vision" [^>]*?)host="_dstVisnPCnodeF6g7H8i9J0"', r'\1host="_dstCtrlPCnodeA1b2C3d4E5"')]
 ROS2_ORDER_CASES = {
-    # (edits, phase, the pairs PLT011 names: (later, earlier))
+    # (edits, phase, the pairs PLT012 names: (later, earlier); PLT011 names none, ("", "") once)
     "other process": ([_ALL_ROS2], "ros2", [("controller", "vision")]),
     "managed, other host": ([_ALL_ROS2, *_MANAGED], "ros2", [("controller", "vision")]),
     "managed, one host": ([_ALL_ROS2, *_MANAGED, *_VISION_ON_CONTROL_PC], "ros2", []),
