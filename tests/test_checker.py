@@ -193,3 +193,23 @@ def test_the_broken_corpus_checks_the_same_when_the_checker_never_answers(
     monkeypatch.setattr(checking, "ENABLED", True)
     monkeypatch.setattr(Checker, "valid", lambda self, job: None)
     assert _diagnostics(case) == in_driver
+
+
+def test_two_runs_resuming_from_one_unsettled_run_each_settle_once(monkeypatch: pytest.MonkeyPatch,
+                                                                  submitted: list[int]) -> None:
+    """generate leaves the import run's last stage unsettled for the target's chain, which takes it; a
+    second run resuming from the same result must not wait for that answer again (it is read once)."""
+    from robomda.api import _context
+    from robomda.resources import pipeline_path
+
+    monkeypatch.setattr(pipeline, "SAXON_FROM", 0)
+    engine, model = Engine(), ROOT / "fixtures" / "cases" / "headlamp" / "model.xmi"
+    context = _context(model, None, "")
+    bound = pipeline.run(pipeline.load(pipeline_path("import")), engine, model, context, settle=False)
+    assert bound.pending and submitted
+    orocos = pipeline.load(pipeline_path("orocos"))
+    first = pipeline.run(orocos, engine, model, context, resume=bound)
+    assert not bound.pending and not first.pending
+    second = pipeline.run(orocos, engine, model, context, resume=bound)
+    assert [d.format() for d in second.warnings] == [d.format() for d in first.warnings]
+    assert second.stages == first.stages

@@ -271,7 +271,10 @@ def _resumed(pipeline: Pipeline, index: int, key: tuple, resume: RunResult, resu
         resume.handed = None
     elif pending:  # its tree in Saxon: a large model's rules run on it, and the next step reads it
         previous = engine.parse(text)
+    # the step's validation still out in the checker is taken too: a job's answer is read once, so a
+    # second run resuming from the same result must not wait for it again
     result.pending.extend(p for p in resume.pending if p.index == index)
+    resume.pending[:] = [p for p in resume.pending if p.index != index]
     started = time.perf_counter()
     result.timings.append(resume.timings[index])
     result.done.append((key, len(result.warnings), step.checks))
