@@ -18,8 +18,9 @@
              interface is to the component, else its conjugation),
              <<provided>> / <<required>> (operations), <<in/out>> (both);
            - assembly connectors as arrows from the writing (or calling)
-             port to the reading (or providing) one, delegations dashed from
-             the composite's own port to its part's; where the model connects
+             port to the reading (or providing) one, delegations dashed (grey)
+             between the composite's own port and its part's, in the way the
+             data or the calls flow; a legend; where the model connects
              by interfaces (binding connections-from="interfaces"), the
              binding's connections and calls between the instances' ports.
   Params:  none.
@@ -49,6 +50,12 @@
         if (empty($components)) then 'note as N_empty' || '&#10;  The model has no component.&#10;end note' else (),
         $tops ! fp:connector-edges(., (string(@id)), ()),
         if ($model/pim:binding/@connections-from = 'interfaces') then fp:binding-edges($model/pim:binding) else (),
+        'legend right',
+        '  port: filled circle «out» writes its data, «provided» offers operations;',
+        '  white circle «in» reads, «required» calls them',
+        '  solid arrow: connector, from the writer (caller) to the reader (provider)',
+        '  grey dashed arrow: delegation between a composite''s own port and its part''s',
+        'endlegend',
         fp:puml-close()))"/>
   </xsl:function>
 
@@ -130,12 +137,16 @@
         <xsl:variable name="aliases" as="xs:string+" select="$ends ! fp:end-alias(., $c, $path, $seen)"/>
         <xsl:variable name="kinds" as="xs:string+" select="$ends ! fp:end-kind(., $c)"/>
         <xsl:variable name="delegation" as="xs:boolean" select="@kind = 'delegation' or exists($ends[empty(@part)])"/>
-        <!-- the source: the composite's own port of a delegation, else the writing / calling end -->
+        <!-- the source: the writing / calling end; of a delegation, the
+             composite's own port when it reads or offers operations, else
+             the part's port (what flows, flows out) -->
+        <xsl:variable name="outer" as="xs:integer?" select="index-of($ends ! empty(@part), true())[1]"/>
         <xsl:variable name="from" as="xs:integer" select="(
-            if ($delegation) then index-of($ends ! empty(@part), true()) else index-of($kinds ! (. = ('out', 'required')), true()), 1)[1]"/>
+            if ($delegation and exists($outer)) then (if ($kinds[$outer] = ('out', 'required')) then (1 to count($ends))[. ne $outer][1] else $outer)
+            else index-of($kinds ! (. = ('out', 'required')), true()), 1)[1]"/>
         <xsl:variable name="label" as="xs:string" select="if (normalize-space(@name)) then ' : ' || fp:label(@name) else ''"/>
         <xsl:for-each select="(1 to count($ends))[. ne $from]">
-          <xsl:sequence select="$aliases[$from] || (if ($delegation) then ' ..&gt; ' else ' --&gt; ') || $aliases[current()] || $label"/>
+          <xsl:sequence select="$aliases[$from] || (if ($delegation) then ' .[#7f7f7f].&gt; ' else ' --&gt; ') || $aliases[current()] || $label"/>
         </xsl:for-each>
       </xsl:for-each>
       <xsl:for-each select="$c/pim:part">

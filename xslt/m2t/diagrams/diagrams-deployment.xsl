@@ -58,8 +58,8 @@
   <xsl:function name="fp:host-node" as="xs:string+">
     <xsl:param name="host" as="element(pim:host)"/>
     <xsl:variable name="facts" as="xs:string" select="string-join((
-        $host/@hostname[. ne $host/@name], $host/@address[normalize-space()], $host/@cores ! (. || ' cores'),
-        $host/@memory ! (. || ' MiB'), 'real-time'[$host/@real-time = 'true']), ', ')"/>
+        $host/@hostname[. ne $host/@name] ! ('hostname ' || .), $host/@address[normalize-space()] ! ('address ' || .),
+        $host/@cores ! (. || ' cores'), $host/@memory ! (. || ' MiB'), 'real-time kernel'[$host/@real-time = 'true']), ', ')"/>
     <xsl:variable name="inside" as="xs:string*" select="(
         key('fp:process-by-host', string($host/@xmi-id), root($host)) ! fp:process-node(.),
         key('fp:set-by-host', string($host/@xmi-id), root($host)) ! fp:set-artifact(.))"/>

@@ -53,7 +53,7 @@
     <xsl:sequence select="'@startuml', fp:banner(''' ', $stylesheet, $what, false()),
         ''' Render: plantuml -tsvg FILE (robomda does it when PlantUML is installed; docs/diagrams.md)',
         'set namespaceSeparator none', 'hide empty members', 'skinparam shadowing false',
-        'skinparam defaultFontName DejaVu Sans', 'skinparam componentStyle uml2',
+        'skinparam componentStyle uml2',
         'title ' || fp:puml-label($title)"/>
   </xsl:function>
 
