@@ -205,7 +205,8 @@
     <xsl:variable name="path" as="xs:string+" select="
         if ($instance/@composite) then
           (string($instance/@composite),
-           (1 to count($parents)) ! string(key('fp:composite-instance', string-join($parents[position() le current()], '.'), root($end))/@xmi-id),
+           (for $i in 1 to count($parents)
+            return string(key('fp:composite-instance', string-join($parents[position() le $i], '.'), root($end))/@xmi-id)),
            string($instance/@xmi-id))
         else string(($instance/@component, $end/@instance)[1])"/>
     <xsl:sequence select="fp:puml-alias('p', ($path, $end/@port))"/>
