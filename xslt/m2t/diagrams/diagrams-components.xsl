@@ -46,7 +46,7 @@
         fp:puml-open('Components of model ''' || $model/@name || '''', $fp:components-xsl, 'model ''' || $model/@name || ''''),
         'left to right direction',
         'skinparam interface {', '  BackgroundColor&lt;&lt;in&gt;&gt; White', '  BackgroundColor&lt;&lt;required&gt;&gt; White', '}',
-        ($tops, $alone) ! fp:component-box(., fp:label(@name), (string(@id)), ()),
+        ($tops, $alone) ! fp:component-box(., fp:puml-quoted(@name), (string(@id)), ()),
         if (empty($components)) then 'note as N_empty' || '&#10;  The model has no component.&#10;end note' else (),
         $tops ! fp:connector-edges(., (string(@id)), ()),
         if ($model/pim:binding/@connections-from = 'interfaces') then fp:binding-edges($model/pim:binding) else (),
@@ -57,12 +57,6 @@
         '  grey dashed arrow: delegation between a composite''s own port and its part''s',
         'endlegend',
         fp:puml-close()))"/>
-  </xsl:function>
-
-  <!-- a model name as written, inside a quoted PlantUML label -->
-  <xsl:function name="fp:label" as="xs:string">
-    <xsl:param name="s" as="xs:string?"/>
-    <xsl:sequence select="'&quot;' || fp:puml-label($s) || '&quot;'"/>
   </xsl:function>
 
   <!-- the box of component $c at the place $path (xmi:ids: the top
@@ -76,10 +70,10 @@
     <xsl:variable name="alias" as="xs:string" select="fp:puml-alias('c', $path)"/>
     <xsl:variable name="open" as="xs:boolean" select="not($c/@id = $seen)"/>
     <xsl:variable name="inside" as="xs:string*" select="if (not($open)) then () else (
-        $c/pim:port ! ('() ' || fp:label(@name || fp:port-type(., $c)) || ' &lt;&lt;' || fp:port-kind(., $c) || '&gt;&gt; as '
+        $c/pim:port ! ('() ' || fp:puml-quoted(@name || fp:port-type(., $c)) || ' &lt;&lt;' || fp:port-kind(., $c) || '&gt;&gt; as '
                        || fp:puml-alias('p', ($path, @id))),
         $c/pim:part ! (for $type in key('fp:id', @type)[self::pim:component]
-                       return fp:component-box($type, fp:label(@name || ' : ' || $type/@name || fp:multiplicity(.)),
+                       return fp:component-box($type, fp:puml-quoted(@name || ' : ' || $type/@name || fp:multiplicity(.)),
                                                ($path, string(@id)), ($seen, string($c/@id)))))"/>
     <xsl:variable name="head" as="xs:string" select="'component ' || $label
         || (if ($c/pim:part) then ' &lt;&lt;composite&gt;&gt;' else '') || ' as ' || $alias"/>
@@ -144,7 +138,7 @@
         <xsl:variable name="from" as="xs:integer" select="(
             if ($delegation and exists($outer)) then (if ($kinds[$outer] = ('out', 'required')) then (1 to count($ends))[. ne $outer][1] else $outer)
             else index-of($kinds ! (. = ('out', 'required')), true()), 1)[1]"/>
-        <xsl:variable name="label" as="xs:string" select="if (normalize-space(@name)) then ' : ' || fp:label(@name) else ''"/>
+        <xsl:variable name="label" as="xs:string" select="if (normalize-space(@name)) then ' : ' || fp:puml-quoted(@name) else ''"/>
         <xsl:for-each select="(1 to count($ends))[. ne $from]">
           <xsl:sequence select="$aliases[$from] || (if ($delegation) then ' .[#7f7f7f].&gt; ' else ' --&gt; ') || $aliases[current()] || $label"/>
         </xsl:for-each>
@@ -185,7 +179,7 @@
   <xsl:function name="fp:binding-edges" as="xs:string*">
     <xsl:param name="binding" as="element(pim:binding)"/>
     <xsl:for-each select="$binding/(pim:connection | pim:call)">
-      <xsl:variable name="label" as="xs:string" select="' : ' || fp:label(@name)"/>
+      <xsl:variable name="label" as="xs:string" select="' : ' || fp:puml-quoted(@name)"/>
       <xsl:for-each select="pim:writer | pim:caller">
         <xsl:variable name="from" as="xs:string" select="fp:instance-port-alias(.)"/>
         <xsl:for-each select="../(pim:reader | pim:provider)">

@@ -71,7 +71,7 @@
   <xsl:function name="fp:device-node" as="xs:string">
     <xsl:param name="id" as="xs:string"/>
     <xsl:param name="model" as="element(pim:model)"/>
-    <xsl:sequence select="'node ' || fp:label((key('fp:id', $id, root($model))/@name, $id)[1]) || ' &lt;&lt;device&gt;&gt; as '
+    <xsl:sequence select="'node ' || fp:puml-quoted((key('fp:id', $id, root($model))/@name, $id)[1]) || ' &lt;&lt;device&gt;&gt; as '
                           || fp:puml-alias('h', $id)"/>
   </xsl:function>
 
@@ -81,7 +81,7 @@
     <xsl:variable name="inside" as="xs:string*" select="(
         $process/pim:thread ! fp:thread-frame(.),
         $members[not(@thread = $process/pim:thread/@xmi-id)] ! fp:instance-box(.))"/>
-    <xsl:variable name="head" as="xs:string" select="'node ' || fp:label($process/@name) || ' &lt;&lt;'
+    <xsl:variable name="head" as="xs:string" select="'node ' || fp:puml-quoted($process/@name) || ' &lt;&lt;'
         || fp:puml-label(string-join(($process/@middleware, distinct-values($members/@middleware-version),
                                       'managed'[$process/@managed = 'true']), ' ')) || '&gt;&gt; as '
         || fp:puml-alias('e', string($process/@xmi-id))"/>
@@ -103,13 +103,13 @@
     <xsl:param name="instance" as="element(pim:instance)"/>
     <xsl:variable name="type" as="xs:string?"
         select="(key('fp:bc', $instance/@component, root($instance))/@name, key('fp:id', $instance/@component, root($instance))/@name)[1]"/>
-    <xsl:sequence select="'component ' || fp:label($instance/@name || $type ! (' : ' || .)) || ' as '
+    <xsl:sequence select="'component ' || fp:puml-quoted($instance/@name || $type ! (' : ' || .)) || ' as '
                           || fp:puml-alias('i', string($instance/@name))"/>
   </xsl:function>
 
   <xsl:function name="fp:set-artifact" as="xs:string">
     <xsl:param name="set" as="element(pim:component-set)"/>
-    <xsl:sequence select="'artifact ' || fp:label($set/@name) || ' &lt;&lt;component set&gt;&gt; as ' || fp:puml-alias('s', string($set/@xmi-id))"/>
+    <xsl:sequence select="'artifact ' || fp:puml-quoted($set/@name) || ' &lt;&lt;component set&gt;&gt; as ' || fp:puml-alias('s', string($set/@xmi-id))"/>
   </xsl:function>
 
   <!-- a bus: one line between its two ends, else a queue joined to each end -->

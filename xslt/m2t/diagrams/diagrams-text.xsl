@@ -12,6 +12,7 @@
                             second of a doubled * - / (Creole bold, strike,
                             italic) as a reference, line ends as spaces; so
                             any model name shows as written
+    fp:puml-quoted($s)      the same in double quotes
     fp:puml-alias($prefix, $keys)  a stable alias: $prefix, then each key
                             (xmi:ids, names) with every character but a
                             letter or digit written _<code point>_, joined by
@@ -36,6 +37,12 @@
     <xsl:sequence select="
         $entities => replace('\\', '\\\\') => replace('\*\*', '*&amp;#42;') => replace('--', '-&amp;#45;')
                   => replace('//', '/&amp;#47;') => replace('[&#10;&#13;&#9;]', ' ')"/>
+  </xsl:function>
+
+  <!-- fp:puml-label in double quotes -->
+  <xsl:function name="fp:puml-quoted" as="xs:string">
+    <xsl:param name="s" as="xs:string?"/>
+    <xsl:sequence select="'&quot;' || fp:puml-label($s) || '&quot;'"/>
   </xsl:function>
 
   <xsl:function name="fp:puml-alias" as="xs:string">
