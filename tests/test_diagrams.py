@@ -130,7 +130,8 @@ def test_composites_show_parts_and_delegations(drawn: dict) -> None:
 
 
 def _tricky_model(folder: Path) -> Path:
-    """A model whose names need escaping in PlantUML: quotes, spaces, '::', Creole markup, backslash."""
+    """A model whose names need escaping in PlantUML: quotes, spaces, '::', Creole markup, backslash,
+    preprocessor functions (which would print the date or an environment variable)."""
     model = folder / "tricky.uml"
     model.write_text(
         '<?xml version="1.0" encoding="UTF-8"?>\n'
@@ -138,6 +139,7 @@ def _tricky_model(folder: Path) -> Path:
         'xmlns:uml="http://www.eclipse.org/uml2/5.0.0/UML" xmi:id="m1" name="my &quot;robot&quot; v2">\n'
         '  <packagedElement xmi:type="uml:Component" xmi:id="c1" name="Arm::Driver **fast** &lt;b&gt;"/>\n'
         '  <packagedElement xmi:type="uml:Component" xmi:id="c-2" name="back\\slash --x-- //y//"/>\n'
+        '  <packagedElement xmi:type="uml:Component" xmi:id="c3" name="%date() %getenv(HOME) $x"/>\n'
         '</uml:Model>\n', encoding="utf-8")
     return model
 
@@ -151,6 +153,7 @@ def test_names_are_escaped_and_aliases_distinct(tmp_path: Path) -> None:
     assert 'component "Arm::Driver *&#42;fast*&#42; &#60;b&#62;" as c__c1' in text
     assert 'component "back\\\\slash -&#45;x-&#45; /&#47;y/&#47;" as c__c_45_2' in text
     assert "title Components of model 'my &#34;robot&#34; v2'" in text
+    assert 'component "&#37;date() &#37;getenv(HOME) $x" as c__c3' in text
     assert "The model deploys no component instance." in files[1].text
 
 
@@ -161,6 +164,7 @@ def test_escaped_names_render_as_written(tmp_path: Path) -> None:
     svg = (tmp_path / "out" / "diagrams" / "my__robot__v2-components.svg").read_text(encoding="utf-8")
     texts = _svg_texts(svg)
     assert "Arm::Driver **fast** <b>" in texts and "back\\slash --x-- //y//" in texts
+    assert "%date() %getenv(HOME) $x" in texts
     assert "Components of model 'my \"robot\" v2'" in texts
 
 

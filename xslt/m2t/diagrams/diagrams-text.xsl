@@ -8,7 +8,9 @@
   Params:  none.
   Errors:  none.
     fp:puml-label($s)       $s inside a PlantUML "quoted label": &, ", <, >,
-                            ~ as character references, \ doubled, and the
+                            ~ and % (PlantUML's preprocessor would call
+                            %date(), %getenv(...) in any line) as character
+                            references, \ doubled, and the
                             second of a doubled * - / (Creole bold, strike,
                             italic) as a reference, line ends as spaces; so
                             any model name shows as written
@@ -33,7 +35,8 @@
     <xsl:param name="s" as="xs:string?"/>
     <xsl:variable name="entities" as="xs:string" select="
         string($s) => replace('&amp;', '&amp;#38;') => replace('&quot;', '&amp;#34;')
-                   => replace('&lt;', '&amp;#60;') => replace('&gt;', '&amp;#62;') => replace('~', '&amp;#126;')"/>
+                   => replace('&lt;', '&amp;#60;') => replace('&gt;', '&amp;#62;') => replace('~', '&amp;#126;')
+                   => replace('%', '&amp;#37;')"/>
     <xsl:sequence select="
         $entities => replace('\\', '\\\\') => replace('\*\*', '*&amp;#42;') => replace('--', '-&amp;#45;')
                   => replace('//', '/&amp;#47;') => replace('[&#10;&#13;&#9;]', ' ')"/>
