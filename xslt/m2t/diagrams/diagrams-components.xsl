@@ -20,7 +20,7 @@
            - assembly connectors as arrows from the writing (or calling)
              port to the reading (or providing) one, delegations dashed (grey)
              between the composite's own port and its part's, in the way the
-             data or the calls flow; a legend; where the model connects
+             data or the calls flow; a legend of what it shows; where the model connects
              by interfaces (binding connections-from="interfaces"), the
              binding's connections and calls between the instances' ports.
   Params:  none.
@@ -50,13 +50,22 @@
         if (empty($components)) then 'note as N_empty' || '&#10;  The model has no component.&#10;end note' else (),
         $tops ! fp:connector-edges(., (string(@id)), ()),
         if ($model/pim:binding/@connections-from = 'interfaces') then fp:binding-edges($model/pim:binding) else (),
-        'legend right',
-        '  port: filled circle «out» writes its data, «provided» offers operations;',
-        '  white circle «in» reads, «required» calls them',
-        '  solid arrow: connector, from the writer (caller) to the reader (provider)',
-        '  grey dashed arrow: delegation between a composite''s own port and its part''s',
-        'endlegend',
+        fp:legend($model),
         fp:puml-close()))"/>
+  </xsl:function>
+
+  <!-- what the circles and arrows mean, the lines of what the view shows -->
+  <xsl:function name="fp:legend" as="xs:string*">
+    <xsl:param name="model" as="element(pim:model)"/>
+    <xsl:variable name="lines" as="xs:string*" select="
+        if ($model/pim:application//pim:component/pim:port) then (
+          '  port: filled circle «out» writes its data, «provided» offers operations;',
+          '  white circle «in» reads, «required» calls them') else (),
+        if ($model/pim:application//pim:connector[not(@kind = 'delegation')] or $model/pim:binding/(pim:connection | pim:call))
+        then '  solid arrow: connector, from the writer (caller) to the reader (provider)' else (),
+        if ($model/pim:application//pim:connector[@kind = 'delegation'])
+        then '  grey dashed arrow: delegation between a composite''s own port and its part''s' else ()"/>
+    <xsl:sequence select="if (empty($lines)) then () else ('legend right', $lines, 'endlegend')"/>
   </xsl:function>
 
   <!-- the box of component $c at the place $path (xmi:ids: the top
