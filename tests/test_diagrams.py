@@ -223,6 +223,16 @@ def test_a_failing_plantuml_is_a_warning(tmp_path: Path, monkeypatch: pytest.Mon
     assert not list((out / "diagrams").glob("*.svg"))
 
 
+def test_diagram_refuses_a_package_folder(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    model = str(ROOT / "fixtures/cases/pid/model.xmi")
+    assert main(["generate", model, "-o", str(tmp_path)]) == 0
+    before = sorted(p for p in tmp_path.rglob("*"))
+    assert main(["diagram", model, "-o", str(tmp_path)]) == 2
+    err = capsys.readouterr().err
+    assert "error: [USAGE]" in err and "holds a package robomda generated" in err and "generate --diagrams" in err
+    assert sorted(p for p in tmp_path.rglob("*")) == before
+
+
 def test_folder_mode_refuses_diagrams(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["generate", str(ROOT / "fixtures/cases"), "-o", str(tmp_path), "--diagrams"]) == 2
     assert "--diagrams applies to one model" in capsys.readouterr().err

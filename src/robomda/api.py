@@ -394,6 +394,8 @@ def diagram(model: Path | str, out: Path | str | None, *, write: bool = True, re
     _check_readable(model)
     out_path = Path(out) if out is not None else None
     context = _context(model, out_path, "", model_path=_model_path(model_path))
+    if write and out_path is not None:
+        _refuse_package_folder(out_path)
     result = _run(pipelines.load(pipeline_path("diagrams")), model, context)
     warnings = list(result.warnings)
     report = None
@@ -403,3 +405,16 @@ def diagram(model: Path | str, out: Path | str | None, *, write: bool = True, re
         report = write_fileset(result.tree, out_path)
         warnings += report.warnings
     return Generated(result.stages, report, result.timings, warnings, "diagrams")
+
+
+def _refuse_package_folder(out: Path) -> None:
+    """USAGE when ``out`` holds a package robomda generated: written there, the diagrams alone would
+    make every file of the package stale (removed) for the writer."""
+    from robomda.output import _read_state  # the writer's record of what it wrote
+
+    package = sorted(p for part in ("files", "user") for p in _read_state(out.resolve(), part)
+                     if not p.startswith("diagrams/"))
+    if package:
+        raise RobomdaError([Diagnostic(
+            "error", "USAGE", f"{out} holds a package robomda generated ({package[0]} ...): draw its diagrams "
+            "with generate --diagrams, or give diagram another folder", file=str(out))], EXIT_INPUT)
