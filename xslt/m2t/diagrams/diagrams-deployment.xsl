@@ -21,7 +21,7 @@
            - each bus (communication path) as a line between the nodes at
              its ends ("name", kind, bandwidth), through a queue <<bus>>
              when it has other than two ends; a device at an end as a node
-             <<device>>;
+             <<device>> (a process at an end: its own node);
            - what lies on no host (a process without host, an instance
              without process) at the top level, and a note when the model
              deploys nothing.
@@ -40,7 +40,7 @@
     <xsl:param name="model" as="element(pim:model)"/>
     <xsl:variable name="binding" as="element(pim:binding)?" select="$model/pim:binding"/>
     <xsl:variable name="devices" as="xs:string*"
-        select="distinct-values($binding/pim:link/pim:link-end/@node[empty(key('fp:host', ., root(.)))])"/>
+        select="distinct-values($binding/pim:link/pim:link-end/@node[empty(key('fp:host', ., root(.)) | key('fp:process', ., root(.)))])"/>
     <xsl:sequence select="fp:lines((
         fp:puml-open('Deployment of model ''' || $model/@name || '''', $fp:deployment-xsl, 'model ''' || $model/@name || ''''),
         $binding/pim:host ! fp:host-node(.),
@@ -118,7 +118,8 @@
     <xsl:variable name="facts" as="xs:string" select="string-join(($link/@kind[. ne 'unspecified'], $link/@bandwidth ! (. || ' Mbit/s')), ', ')"/>
     <xsl:variable name="label" as="xs:string" select="'&quot;' || fp:puml-label($link/@name)
         || (if ($facts) then '\n' || fp:puml-label($facts) else '') || '&quot;'"/>
-    <xsl:variable name="ends" as="xs:string*" select="$link/pim:link-end/@node ! fp:puml-alias('h', string(.))"/>
+    <xsl:variable name="ends" as="xs:string*"
+        select="$link/pim:link-end/@node ! fp:puml-alias(if (key('fp:process', ., root(.))) then 'e' else 'h', string(.))"/>
     <xsl:sequence select="
         if (count($ends) eq 2) then $ends[1] || ' -- ' || $ends[2] || ' : ' || $label
         else (for $bus in fp:puml-alias('b', string($link/@xmi-id))
