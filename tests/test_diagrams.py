@@ -118,6 +118,7 @@ def test_composites_show_parts_and_delegations(drawn: dict) -> None:
     text = next(n.text for n in files.iter(f"{FS}file") if n.get("path").endswith("-components.puml"))
     assert 'component "driver : ArmDriver" <<composite>>' in text
     assert 'component "jointCtrl : JointController" as' in text
+    assert "grey dashed arrow: delegation" in text
     lines = [line for line in text.splitlines() if " .[#7f7f7f].> " in line]
     assert len(lines) == len(bound.xpath("//pim:connector[@kind = 'delegation']", namespaces={"pim": PIM[1:-1]}))
     delegations = {line.rsplit(" : ", 1)[1].strip('"'): line.split(" ") for line in lines}
@@ -155,6 +156,7 @@ def test_names_are_escaped_and_aliases_distinct(tmp_path: Path) -> None:
     assert "title Components of model 'my &#34;robot&#34; v2'" in text
     assert 'component "&#37;date() &#37;getenv(HOME) $x" as c__c3' in text
     assert "The model deploys no component instance." in files[1].text
+    assert "legend" not in text  # no port, no connector: nothing to explain
 
 
 @NEEDS_PLANTUML
