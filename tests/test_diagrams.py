@@ -246,3 +246,19 @@ def test_a_model_with_errors_draws_nothing(tmp_path: Path, capsys: pytest.Captur
     model.write_text(text.replace('name="OROCOS"', 'name="Gazebo"', 1), encoding="utf-8")
     assert main(["diagram", str(model), "-o", str(tmp_path / "out")]) == 1
     assert "[BND003]" in capsys.readouterr().err and not (tmp_path / "out").exists()
+
+
+def test_a_part_typed_by_no_component_is_still_drawn(tmp_path: Path) -> None:
+    model = tmp_path / "parts.uml"
+    model.write_text(
+        '<?xml version="1.0" encoding="UTF-8"?>\n'
+        '<uml:Model xmi:version="20131001" xmlns:xmi="http://www.omg.org/spec/XMI/20131001" '
+        'xmlns:uml="http://www.eclipse.org/uml2/5.0.0/UML" xmi:id="m1" name="parts">\n'
+        '  <packagedElement xmi:type="uml:Class" xmi:id="k1" name="Helper"/>\n'
+        '  <packagedElement xmi:type="uml:Component" xmi:id="c1" name="Box">\n'
+        '    <ownedAttribute xmi:type="uml:Property" xmi:id="p1" name="helper" type="k1" aggregation="composite"/>\n'
+        '  </packagedElement>\n'
+        '</uml:Model>\n', encoding="utf-8")
+    done = diagram(model, tmp_path / "out", write=False)
+    text = etree.fromstring(done.stages["text"].encode("utf-8"))[0].text
+    assert 'component "Box" <<composite>> as c__c1 {\n  rectangle "helper : Helper" as c__c1__p1\n}' in text

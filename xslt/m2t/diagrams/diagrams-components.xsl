@@ -10,7 +10,8 @@
            - each top composite (a component with parts that types no part)
              as a box with its own ports, and inside it its parts, a part
              typed by a composite drawn open in turn (its ports, parts,
-             connectors), at any depth;
+             connectors), at any depth; a part typed by no component as a
+             plain box;
            - each other component that types no part as a box with its ports;
            - a port as a circle labelled "name : data type", stereotyped
              <<out>> / <<in>> (data written / read, from the binding's data
@@ -81,9 +82,12 @@
     <xsl:variable name="inside" as="xs:string*" select="if (not($open)) then () else (
         $c/pim:port ! ('() ' || fp:puml-quoted(@name || fp:port-type(., $c)) || ' &lt;&lt;' || fp:port-kind(., $c) || '&gt;&gt; as '
                        || fp:puml-alias('p', ($path, @id))),
-        $c/pim:part ! (for $type in key('fp:id', @type)[self::pim:component]
-                       return fp:component-box($type, fp:puml-quoted(@name || ' : ' || $type/@name || fp:multiplicity(.)),
-                                               ($path, string(@id)), ($seen, string($c/@id)))))"/>
+        $c/pim:part ! (let $type := key('fp:id', @type)[self::pim:component]
+                       return if ($type) then fp:component-box($type, fp:puml-quoted(@name || ' : ' || $type/@name || fp:multiplicity(.)),
+                                                               ($path, string(@id)), ($seen, string($c/@id)))
+                       (: a part typed by no component of the model: a plain box, its type as written :)
+                       else 'rectangle ' || fp:puml-quoted(@name || (@type-name, @primitive)[1] ! (' : ' || .) || fp:multiplicity(.))
+                            || ' as ' || fp:puml-alias('c', ($path, string(@id)))))"/>
     <xsl:variable name="head" as="xs:string" select="'component ' || $label
         || (if ($c/pim:part) then ' &lt;&lt;composite&gt;&gt;' else '') || ' as ' || $alias"/>
     <xsl:sequence select="if (empty($inside)) then $head else ($head || ' {', fp:indent(2, $inside), '}')"/>
