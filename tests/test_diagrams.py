@@ -107,10 +107,10 @@ def test_mixed_middlewares_show_each_process_middleware(drawn: dict) -> None:
     files, _ = _drawn(drawn, ROOT / "fixtures" / "cases" / "distributed")
     text = next(n.text for n in files.iter(f"{FS}file") if n.get("path").endswith("-deployment.puml"))
     assert re.search(r'node "rosSensor" <<ROS>> as \S+ \{\n\s+component "forceSensor : WristForceSensor"', text)
-    assert re.search(r'node "rttControl" <<OROCOS 2.10>> as \S+ \{\n\s+frame "controlLoop\\nperiod 0.003 s, '
+    assert re.search(r'node "rttControl" <<OROCOS 2.10>> as \S+ \{\n\s+frame "controlLoop\\n<size:12>period 0.003 s, '
                      r'priority 50, RT" <<thread>>', text)
-    assert 'artifact "visionSet" <<component set>>' in text and text.count(": member") == 2
-    assert '"lan\\nEthernet, 1000 Mbit/s"' in text
+    assert 'artifact "visionSet" <<component set>>' in text and text.count(".[#7f7f7f].> i__") == 2
+    assert '"lan\\n<size:12>Ethernet, 1000 Mbit/s"' in text
 
 
 def test_composites_show_parts_and_delegations(drawn: dict) -> None:

@@ -17,7 +17,8 @@
            - each instance as a component "name : ComponentType", in its
              thread, else its process;
            - each component set as an artifact <<component set>> on the
-             host its deployment names, a dashed arrow to each member;
+             host its deployment names, a grey dashed arrow to each member;
+           - the facts of a host or thread in a smaller font under its name;
            - each bus (communication path) as a line between the nodes at
              its ends ("name", kind, bandwidth), through a queue <<bus>>
              when it has other than two ends; a device at an end as a node
@@ -51,7 +52,7 @@
         if (empty($binding/pim:instance)) then ('note as N_empty', '  The model deploys no component instance.', 'end note') else (),
         $binding/pim:link ! fp:bus-edges(.),
         $binding/pim:component-set ! (for $set in . return key('fp:instance-by-set', @xmi-id)
-            ! (fp:puml-alias('s', string($set/@xmi-id)) || ' ..&gt; ' || fp:puml-alias('i', string(@name)) || ' : member')),
+            ! (fp:puml-alias('s', string($set/@xmi-id)) || ' .[#7f7f7f].&gt; ' || fp:puml-alias('i', string(@name)) || ' : member')),
         fp:puml-close()))"/>
   </xsl:function>
 
@@ -64,7 +65,7 @@
         key('fp:process-by-host', string($host/@xmi-id), root($host)) ! fp:process-node(.),
         key('fp:set-by-host', string($host/@xmi-id), root($host)) ! fp:set-artifact(.))"/>
     <xsl:variable name="head" as="xs:string" select="'node &quot;' || fp:puml-label($host/@name)
-        || (if ($facts) then '\n' || fp:puml-label($facts) else '') || '&quot; &lt;&lt;host&gt;&gt; as ' || fp:puml-alias('h', string($host/@xmi-id))"/>
+        || (if ($facts) then '\n&lt;size:12&gt;' || fp:puml-label($facts) else '') || '&quot; &lt;&lt;host&gt;&gt; as ' || fp:puml-alias('h', string($host/@xmi-id))"/>
     <xsl:sequence select="if (empty($inside)) then $head else ($head || ' {', fp:indent(2, $inside), '}')"/>
   </xsl:function>
 
@@ -94,7 +95,7 @@
     <xsl:variable name="facts" as="xs:string" select="string-join((
         $activity/@period ! ('period ' || . || ' s'), $activity/@priority ! ('priority ' || .), $activity/@scheduler), ', ')"/>
     <xsl:variable name="head" as="xs:string" select="'frame &quot;' || fp:puml-label($thread/@name)
-        || (if ($facts) then '\n' || fp:puml-label($facts) else '') || '&quot; &lt;&lt;thread&gt;&gt; as ' || fp:puml-alias('t', string($thread/@xmi-id))"/>
+        || (if ($facts) then '\n&lt;size:12&gt;' || fp:puml-label($facts) else '') || '&quot; &lt;&lt;thread&gt;&gt; as ' || fp:puml-alias('t', string($thread/@xmi-id))"/>
     <xsl:variable name="members" as="element(pim:instance)*" select="key('fp:instance-by-thread', $thread/@xmi-id, root($thread))"/>
     <xsl:sequence select="if (empty($members)) then $head else ($head || ' {', fp:indent(2, $members ! fp:instance-box(.)), '}')"/>
   </xsl:function>
@@ -117,7 +118,7 @@
     <xsl:param name="link" as="element(pim:link)"/>
     <xsl:variable name="facts" as="xs:string" select="string-join(($link/@kind[. ne 'unspecified'], $link/@bandwidth ! (. || ' Mbit/s')), ', ')"/>
     <xsl:variable name="label" as="xs:string" select="'&quot;' || fp:puml-label($link/@name)
-        || (if ($facts) then '\n' || fp:puml-label($facts) else '') || '&quot;'"/>
+        || (if ($facts) then '\n&lt;size:12&gt;' || fp:puml-label($facts) else '') || '&quot;'"/>
     <xsl:variable name="ends" as="xs:string*"
         select="$link/pim:link-end/@node ! fp:puml-alias(if (key('fp:process', ., root(.))) then 'e' else 'h', string(.))"/>
     <xsl:sequence select="
