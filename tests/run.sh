@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 
 # Debian packages the real-tool tests use: compiler and CMake for the fixture
 # libraries, Saxon-HE Java and Node.js (for SaxonJS) for the engine
-# portability tests. Installed when we are root on Debian; otherwise the
+# portability tests, PlantUML for the diagrams. Installed when we are root on Debian; otherwise the
 # tests that need a missing tool skip and say why.
 need=()
 command -v cmake >/dev/null 2>&1 || need+=(cmake)
@@ -18,6 +18,10 @@ command -v java >/dev/null 2>&1 || need+=(default-jre-headless)
 command -v node >/dev/null 2>&1 || need+=(nodejs)
 command -v npm >/dev/null 2>&1 || need+=(npm)
 python3 -c 'import venv, ensurepip' >/dev/null 2>&1 || need+=(python3-venv)
+# PlantUML (and Graphviz, which it lays component and deployment diagrams out
+# with) for tests/test_diagrams.py: every fixture's diagrams render to SVG.
+command -v plantuml >/dev/null 2>&1 || need+=(plantuml)
+command -v dot >/dev/null 2>&1 || need+=(graphviz)
 # ROS 1 (Debian's own packages) for tests/test_ros.py: catkin build, catkin_lint,
 # roslaunch loader, roscore / rostopic / rosnode / rosservice, std_msgs, std_srvs.
 [ -x /usr/bin/catkin_make ] || need+=(catkin)

@@ -19,7 +19,8 @@ from robomda.output import WriteReport, write_fileset
 from robomda.resources import available_targets, default_target, pipeline_path, target_of_middleware
 from robomda.validate import stream
 
-__all__ = ["generate", "import_model", "check", "targets", "default_targets", "Generated", "Checked", "PackageInfo"]
+__all__ = ["generate", "diagram", "import_model", "check", "targets", "default_targets", "Generated", "Checked",
+           "PackageInfo"]
 
 def targets() -> list[str]:
     """The middleware targets ``generate`` knows."""
@@ -320,14 +321,16 @@ def _package_name_note(asked: str, psm: str | None, model: Path) -> list[Diagnos
 
 def generate(model: Path | str, out: Path | str | None, target: str | None = None, *, package_name: str = "",
              type_map: Path | str | None = None, write: bool = True, package: PackageInfo | None = None,
-             model_path: Sequence[Path | str] = ()) -> Generated:
+             model_path: Sequence[Path | str] = (), diagrams: bool = False) -> Generated:
     """Run ``target``'s chain on ``model`` and write its files into ``out``.
 
     Without a ``target``: the one middleware the model deploys on (Orocos
     when it deploys on none robomda generates for); a model deployed on
     several must name one (usage error, exit code 2). Nothing is written
     unless every step succeeded and every intermediate model is valid. With
-    ``write=False`` only the stage outputs are returned.
+    ``write=False`` only the stage outputs are returned. With ``diagrams``,
+    the package also gets the model's diagrams (:func:`diagram`), written
+    and tracked as its other generated files.
     """
     model = Path(model)
     if target is not None:
@@ -347,6 +350,8 @@ def generate(model: Path | str, out: Path | str | None, target: str | None = Non
     chain = pipelines.load(pipeline_path(target))
     result = _run(chain, model, context, resume=bound)
     warnings = result.warnings + _package_name_note(package_name, result.stages.get("psm"), model)
+    if diagrams and result.tree is not None:
+        warnings += _add_diagrams(result, model, context, render=write)
     missing = [opt for opt, key in (("--maintainer", "maintainer-email"), ("--license", "license")) if not context[key]]
     writes_manifest = result.tree is not None and any(
         f.get("path") == "package.xml" for f in result.tree.iter("{urn:robomda:fileset:1}file"))
@@ -359,3 +364,57 @@ def generate(model: Path | str, out: Path | str | None, target: str | None = Non
         report = write_fileset(result.tree, out_path)
         warnings += report.warnings
     return Generated(result.stages, report, result.timings, warnings, target)
+
+
+def _add_diagrams(result: pipelines.RunResult, model: Path, context: dict[str, str], *, render: bool) -> list[Diagnostic]:
+    """Add the model's diagrams (and their SVGs, with ``render``) to the file set of a target's run; the
+    diagram chain resumes from that run (import, bind and the PIM rules are not run again)."""
+    from robomda.diagrams import add_svgs
+
+    drawn = _run(pipelines.load(pipeline_path("diagrams")), model, context, resume=result)
+    found = [d for d in drawn.warnings if d not in result.warnings]
+    if drawn.tree is not None and result.tree is not None:
+        for node in list(drawn.tree.iterchildren("{urn:robomda:fileset:1}file")):
+            result.tree.append(node)
+        if render:
+            found += add_svgs(result.tree, str(model))
+    return found
+
+
+def diagram(model: Path | str, out: Path | str | None, *, write: bool = True, render: bool = True,
+            model_path: Sequence[Path | str] = ()) -> Generated:
+    """Write the diagrams of ``model`` into ``out``: its component view and deployment view as PlantUML
+    (``diagrams/<model>-components.puml``, ``-deployment.puml``; pipelines/diagrams.xml), and each as SVG
+    when PlantUML is installed and ``render`` (robomda.diagrams). Nothing is written if the model has
+    errors; ``write=False`` returns the stage outputs only.
+    """
+    from robomda.diagrams import add_svgs
+
+    model = Path(model)
+    _check_readable(model)
+    out_path = Path(out) if out is not None else None
+    context = _context(model, out_path, "", model_path=_model_path(model_path))
+    if write and out_path is not None:
+        _refuse_package_folder(out_path)
+    result = _run(pipelines.load(pipeline_path("diagrams")), model, context)
+    warnings = list(result.warnings)
+    report = None
+    if result.tree is not None and render and write:
+        warnings += add_svgs(result.tree, str(model))
+    if write and out_path is not None and result.tree is not None:
+        report = write_fileset(result.tree, out_path)
+        warnings += report.warnings
+    return Generated(result.stages, report, result.timings, warnings, "diagrams")
+
+
+def _refuse_package_folder(out: Path) -> None:
+    """USAGE when ``out`` holds a package robomda generated: written there, the diagrams alone would
+    make every file of the package stale (removed) for the writer."""
+    from robomda.output import _read_state  # the writer's record of what it wrote
+
+    package = sorted(p for part in ("files", "user") for p in _read_state(out.resolve(), part)
+                     if not p.startswith("diagrams/"))
+    if package:
+        raise RobomdaError([Diagnostic(
+            "error", "USAGE", f"{out} holds a package robomda generated ({package[0]} ...): draw its diagrams "
+            "with generate --diagrams, or give diagram another folder", file=str(out))], EXIT_INPUT)

@@ -72,6 +72,9 @@ def _parser() -> argparse.ArgumentParser:
     gen.add_argument("--force", action="store_true",
                      help="folder mode: regenerate models whose input and stylesheets did not change")
     _package_options(gen)
+    gen.add_argument("--diagrams", action="store_true",
+                     help="also write the model's component and deployment diagrams into OUT/diagrams/ "
+                          "(PlantUML .puml, and .svg where PlantUML is installed; docs/diagrams.md)")
     gen.add_argument("--save-stages", type=Path, metavar="DIR",
                      help="also write every intermediate model (PIM, PSM, file set) into DIR")
     gen.add_argument("--format", default="text", choices=FORMATS,
@@ -111,6 +114,8 @@ def _parser() -> argparse.ArgumentParser:
                      help="stop after N checks (scripts and tests; default: until Ctrl-C), exit code that of "
                           "each model's latest run, the worst")
 
+    _diagram_parser(sub)
+
     imp = sub.add_parser(
         "import", help="write the platform-independent model (PIM) of an XMI model",
         description="Import MODEL into robomda's PIM (validated against schemas/pim/1/pim.xsd) and write it, "
@@ -123,6 +128,35 @@ def _parser() -> argparse.ArgumentParser:
     imp.add_argument("--no-bind", action="store_true",
                      help="stop after the import proper (skip the platform binding)")
     return parser
+
+
+def _diagram_parser(sub: argparse._SubParsersAction) -> None:
+    dia = sub.add_parser(
+        "diagram", help="draw an XMI model: its component and deployment diagrams (PlantUML, SVG)",
+        description="Write MODEL's component view (components, ports, connectors, composites with their "
+                    "parts and delegations) and deployment view (hosts, buses, processes and their middleware, "
+                    "threads, component sets, instances) into OUT/diagrams/ as PlantUML (.puml), and as SVG "
+                    "where PlantUML is installed (plantuml on PATH, or ROBOMDA_PLANTUML). Nothing else is "
+                    "written; nothing at all if the model has errors.",
+        epilog=_EXIT_CODES, formatter_class=argparse.RawDescriptionHelpFormatter)
+    dia.add_argument("model", type=Path, metavar="MODEL", help="the UML XMI file")
+    dia.add_argument("-o", "--output", type=Path, required=True, metavar="OUT", help="output folder")
+    dia.add_argument("--model-path", type=Path, action="append", default=[], metavar="DIR", help="as for generate")
+    dia.add_argument("--format", default="text", choices=FORMATS,
+                     help="text on stderr (default), or a json / sarif document on stdout")
+
+
+def _diagram(args: argparse.Namespace, fmt: str) -> int:
+    from robomda.api import diagram
+
+    done = diagram(args.model, args.output, model_path=args.model_path)
+    _report(fmt, done.warnings, EXIT_OK)
+    report = done.report
+    if report is not None:
+        drawn = sorted(p for p in report.written + report.unchanged if p.startswith("diagrams/"))
+        print(f"robomda: diagrams in {args.output}: {', '.join(drawn)} ({len(report.written)} written, "
+              f"{len(report.unchanged)} unchanged)", file=sys.stdout if fmt == "text" else sys.stderr)
+    return EXIT_OK
 
 
 def _write_model_file(dest: Path, text: str) -> None:
@@ -151,8 +185,9 @@ def _pim_destination(model: Path, out: Path) -> Path:
 def _batch(args: argparse.Namespace) -> int:
     from robomda.batch import ProgressBar, run_batch
 
-    if args.save_stages:
-        print("robomda: --save-stages applies to one model, not to a folder", file=sys.stderr)
+    if args.save_stages or args.diagrams:
+        print(f"robomda: {'--save-stages' if args.save_stages else '--diagrams'} applies to one model, not to a "
+              "folder", file=sys.stderr)
         return EXIT_INPUT
     if args.jobs is not None and args.jobs < 1:
         print("robomda: -j needs a positive number", file=sys.stderr)
@@ -265,9 +300,11 @@ def _main(args: argparse.Namespace, fmt: str) -> int:
             return _check(args)
         if args.command == "watch":
             return _watch(args)
+        if args.command == "diagram":
+            return _diagram(args, fmt)
         if args.command == "generate":
             done = generate(args.model, args.output, args.target, package_name=args.package_name,
-                            type_map=args.type_map, model_path=args.model_path,
+                            type_map=args.type_map, model_path=args.model_path, diagrams=args.diagrams,
                             package=PackageInfo(args.package_version, args.maintainer, args.license))
             _report(fmt, done.warnings, EXIT_OK)
             if args.save_stages:

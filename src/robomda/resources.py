@@ -39,14 +39,16 @@ def _manifests() -> tuple[tuple[str, tuple[str, ...], bool], ...]:
     found = []
     for path in sorted((resource_root() / "pipelines").glob("*.xml")):
         root = etree.parse(str(path)).getroot()
-        if root.tag == f"{_PIPELINE_NS}pipeline" and root.get("yields") == "files":
+        if (root.tag == f"{_PIPELINE_NS}pipeline" and root.get("yields") == "files"
+                and root.get("target") not in ("false", "0")):
             found.append((path.stem, tuple((root.get("serves") or "").split()),
                           root.get("default") in ("true", "1")))
     return tuple(found)
 
 
 def available_targets() -> list[str]:
-    """Targets = pipelines that yield files (not ``import`` or ``check``, which yield a model)."""
+    """Targets = pipelines that yield files (not ``import`` or ``check``, which yield a model, nor
+    ``diagrams``, marked ``target="false"``: its files join a target's or are written alone)."""
     return [name for name, _, _ in _manifests()]
 
 
