@@ -372,8 +372,9 @@ def write_fileset(files: etree._Element, out: Path) -> WriteReport:
             if current is None or state.get(rel) != current:
                 conflicts.append(Diagnostic(
                     "error", "OUT001",
-                    f"refusing to overwrite {target}: robomda did not write it, or it was edited since; "
-                    "move your changes into the user files (the ones robomda writes once) or remove it",
+                    f"refusing to overwrite {target}: robomda did not write it, or it was edited since (generate "
+                    "--diff shows what differs); move your changes into the user files (the ones robomda writes "
+                    "once) or remove it",
                     file=str(target)))
         plan.append((rel, data, mode))
     user_nodes = [n for n in files.iterchildren(f"{{{_FS}}}file") if n.get("mode") == "user"]
