@@ -237,3 +237,36 @@ def test_warnings_saying_the_same_read_as_one_finding_with_notes(capsys: pytest.
                           "--target", "orocos", "--format", "json")
     import json
     assert [d["code"] for d in json.loads(stdout)["diagnostics"]] == ["CMP009"] * 5 + ["PKG002"]
+
+
+def test_the_readme_quick_start_prints_what_the_readme_shows(capsys: pytest.CaptureFixture[str], tmp_path: Path,
+                                                             monkeypatch: pytest.MonkeyPatch) -> None:
+    """The README shows the quick start's output and says what its two warnings mean (issue 31 item 5)."""
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    command = "robomda generate fixtures/cases/headlamp/model.xmi -o out/headlamp --target orocos"
+    assert command in readme
+    shown = readme.split("prints two warnings about the model")[1].split("```\n", 2)[1]
+    (tmp_path / "fixtures").symlink_to(ROOT / "fixtures")
+    monkeypatch.chdir(tmp_path)
+    code, out, err = run(capsys, *command.split()[1:])
+    assert code == 0 and err + out == shown
+    explained = readme.split(shown)[1].split("The second installs")[0]
+    assert "- `CMP009`:" in explained and "- `PKG002`:" in explained
+    # what the README says makes them go, does
+    code, _, err = run(capsys, *command.split()[1:], "--maintainer", "Jane Doe <jane@example.org>",
+                       "--license", "Apache-2.0")
+    assert code == 0 and "PKG002" not in err
+
+
+def test_check_says_what_generate_would_say_of_your_user_files(capsys: pytest.CaptureFixture[str],
+                                                               tmp_path: Path) -> None:
+    """A user file whose instance is gone stops generate (OUT003): --check must not call that up to date."""
+    model, out = tmp_path / "lamp.xmi", tmp_path / "out"
+    text = (CASES / "headlamp" / "model.xmi").read_text(encoding="utf-8")
+    model.write_text(text, encoding="utf-8")
+    assert run(capsys, "generate", str(model), "-o", str(out), "--target", "orocos")[0] == 0
+    model.write_text(text.replace('name="camera"', 'name="camera2"'), encoding="utf-8")
+    before = _files(tmp_path)
+    code, _, err = run(capsys, "generate", str(model), "-o", str(out), "--target", "orocos", "--check")
+    assert code == 2 and "[OUT003] user file deploy/camera.user.cpf holds your work" in err
+    assert _files(tmp_path) == before

@@ -15,7 +15,7 @@ from lxml import etree
 from robomda import pipeline as pipelines
 from robomda.diagnostics import EXIT_FINDINGS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, Diagnostic, RobomdaError
 from robomda.engine import shared
-from robomda.output import Drift, WriteReport, compare_fileset, write_fileset
+from robomda.output import Drift, WriteReport, compare_fileset, user_findings, write_fileset
 from robomda.resources import available_targets, default_target, pipeline_path, target_of_middleware
 from robomda.validate import stream
 
@@ -360,6 +360,10 @@ def generate(model: Path | str, out: Path | str | None, target: str | None = Non
                                    file=str(model)))
     report, drift = None, None
     if check and out_path is not None and chain.yields == "files" and result.tree is not None:
+        errors, found = user_findings(result.tree, out_path)  # what writing would say of the user files
+        if errors:
+            raise RobomdaError(warnings + errors, EXIT_INPUT)
+        warnings += found
         drift = compare_fileset(result.tree, out_path)
     elif write and out_path is not None and chain.yields == "files" and result.tree is not None:
         report = write_fileset(result.tree, out_path)

@@ -55,8 +55,8 @@ from lxml import etree
 
 from robomda.diagnostics import EXIT_INPUT, Diagnostic, RobomdaError
 
-__all__ = ["WriteReport", "Drift", "write_fileset", "compare_fileset", "atomic_write", "recover", "STATE_FILE",
-           "NEW_SUFFIX"]
+__all__ = ["WriteReport", "Drift", "write_fileset", "compare_fileset", "user_findings", "atomic_write", "recover",
+           "STATE_FILE", "NEW_SUFFIX"]
 
 STATE_FILE = Path(".robomda") / "state.json"
 NEW_SUFFIX = ".robomda-new"
@@ -212,6 +212,15 @@ def _user_drift(out: Path, nodes: list[etree._Element]) -> tuple[list[Diagnostic
                 f"({'; '.join(changes)}): update it (the fresh version is beside it as {rel}{NEW_SUFFIX})",
                 file=str(out / rel)))
     return errors, warnings
+
+
+def user_findings(files: etree._Element, out: Path) -> tuple[list[Diagnostic], list[Diagnostic]]:
+    """What :func:`write_fileset` would say of the user files in ``out``, writing nothing: (OUT003
+    errors, which stop it, and OUT004 / OUT005 warnings)."""
+    out = Path(out).resolve()
+    nodes = [n for n in files.iterchildren(f"{{{_FS}}}file") if n.get("mode") == "user"]
+    errors, warnings = _user_drift(out, nodes)
+    return errors, warnings + _user_cpf_names(out, nodes)
 
 
 def _user_cpf_names(out: Path, nodes: list[etree._Element]) -> list[Diagnostic]:
