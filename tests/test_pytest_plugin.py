@@ -122,3 +122,11 @@ def test_without_the_ini_option_the_plugin_does_nothing(pytester: pytest.Pyteste
     result = pytester.runpytest_subprocess("-p", "no:cacheprovider")
     result.assert_outcomes(passed=1)
     assert not (pytester.path / "expected").exists()
+
+
+def test_the_plugin_is_a_pytest11_entry_point_of_the_package() -> None:
+    from importlib.metadata import entry_points
+    found = [ep for ep in entry_points(group="pytest11") if ep.name == "robomda"]
+    assert [ep.value for ep in found] == ["robomda.pytest_plugin"]
+    assert "[project.entry-points.pytest11]\nrobomda = \"robomda.pytest_plugin\"" in (
+        SAMPLE.parents[2] / "pyproject.toml").read_text(encoding="utf-8")
