@@ -130,3 +130,13 @@ def test_the_plugin_is_a_pytest11_entry_point_of_the_package() -> None:
     assert [ep.value for ep in found] == ["robomda.pytest_plugin"]
     assert "[project.entry-points.pytest11]\nrobomda = \"robomda.pytest_plugin\"" in (
         SAMPLE.parents[2] / "pyproject.toml").read_text(encoding="utf-8")
+
+
+def test_a_library_model_is_tested_with_the_model_that_uses_it(pytester: pytest.Pytester) -> None:
+    """A model split over files (fixtures/cases/split): one test per model, none per library file."""
+    split = Path(__file__).resolve().parents[1] / "fixtures" / "cases" / "split"
+    shutil.copytree(split, pytester.path / "models" / "split", ignore=shutil.ignore_patterns("expected"))
+    pytester.makeini("[pytest]\nrobomda_models = models\nrobomda_targets = orocos ros2\n")
+    listed = pytester.runpytest_subprocess("--collect-only", "-q", "-p", "no:cacheprovider")
+    assert [line for line in listed.outlines if "::" in line] == [
+        "models/split/model.xmi::orocos", "models/split/model.xmi::ros2"]
