@@ -140,3 +140,10 @@ def test_a_library_model_is_tested_with_the_model_that_uses_it(pytester: pytest.
     listed = pytester.runpytest_subprocess("--collect-only", "-q", "-p", "no:cacheprovider")
     assert [line for line in listed.outlines if "::" in line] == [
         "models/split/model.xmi::orocos", "models/split/model.xmi::ros2"]
+
+
+def test_without_pytest_regressions_the_plugin_says_what_to_install(repo: Path, pytester: pytest.Pytester) -> None:
+    result = pytester.runpytest_subprocess("-p", "no:cacheprovider", "-p", "no:regressions")
+    assert result.ret == pytest.ExitCode.USAGE_ERROR
+    assert "robomda's pytest plugin needs pytest-regressions" in result.stderr.str()
+    assert "pip install 'robomda[pytest]'" in result.stderr.str()
