@@ -30,7 +30,8 @@ EXIT_SIGTERM = 143  # 128 + SIGTERM
 
 _EXIT_CODES = """exit codes:
   0  success (warnings may have been reported)
-  1  the model has errors (each reported as FILE:LINE:COL: error: [CODE] ...)
+  1  the model has errors (each reported as FILE:LINE:COL: error: [CODE] ...); generate --check / --diff:
+     OUT is not what would be generated
   2  usage error, or input that cannot be read (missing, not XML, not UML XMI)
   3  internal error in robomda (please report it with the model)
   130 / 143  interrupted by SIGINT (Ctrl-C) / SIGTERM: no output folder is half-written"""
