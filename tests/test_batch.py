@@ -172,3 +172,35 @@ def test_a_changed_urdf_file_is_checked_again(tmp_path: Path) -> None:
     urdf.unlink()
     missing = run_batch(src, out, jobs=1)
     assert missing.count("failed") == 1 and "[IMP042]" in missing.results[0].diagnostics[0]
+
+
+def test_check_mode_says_which_models_drifted_and_writes_nothing(tmp_path: Path,
+                                                                 capsys: pytest.CaptureFixture[str]) -> None:
+    """CI over a repository of models: generate DIR -o OUT --check / --diff."""
+    src, out = tmp_path / "models", tmp_path / "out"
+    shutil.copytree(CASES / "headlamp", src / "headlamp", ignore=shutil.ignore_patterns("expected", "model.ea.xmi"))
+    shutil.copytree(CASES / "pid", src / "pid", ignore=shutil.ignore_patterns("expected", "model.*.xmi"))
+    assert main(["generate", str(src), "-o", str(out), "-j", "1"]) == 0
+    capsys.readouterr()
+    state = (out / ".robomda" / "batch.json").read_bytes()
+    code = main(["generate", str(src), "-o", str(out), "-j", "1", "--check"])
+    stdout, err = capsys.readouterr()
+    assert code == 0 and stdout == ""
+    assert "2 models: 2 up to date, 0 drifted, 0 failed; 0 files would change" in err
+    launch = next((out / "pid" / "model.xmi" / "launch").glob("*.launch"))
+    launch.write_text(launch.read_text() + "<!-- mine -->\n")
+    (out / "headlamp" / "model.xmi" / "package.xml").unlink()
+    rel = launch.relative_to(out).as_posix()
+    code = main(["generate", str(src), "-o", str(out), "-j", "2", "--diff"])
+    stdout, err = capsys.readouterr()
+    assert code == 1
+    rows = {line.split()[0]: line.split()[1:3] for line in err.splitlines() if line.endswith(tuple("0123456789"))
+            and line.split()[0].endswith(".xmi")}
+    assert rows == {"headlamp/model.xmi": ["drifted", "1"], "pid/model.xmi": ["drifted", "1"]}
+    assert "robomda: headlamp/model.xmi: its output would change (1 file):\n  added   package.xml" in err
+    assert "2 models: 0 up to date, 2 drifted, 0 failed; 2 files would change" in err
+    assert f"--- a/{rel}\n+++ b/{rel}\n" in stdout and "-<!-- mine -->\n" in stdout
+    assert "--- /dev/null\n+++ b/headlamp/model.xmi/package.xml\n" in stdout
+    assert (out / ".robomda" / "batch.json").read_bytes() == state and not (out / "headlamp" / "model.xmi" /
+                                                                            "package.xml").exists()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["models", "out"]

@@ -163,3 +163,110 @@ def test_package_xml_says_who_and_which_license(capsys: pytest.CaptureFixture[st
     assert '<maintainer email="jane@example.org">Jane Roe &amp; Co</maintainer>' in text
     code, _, err = run(capsys, "generate", str(CASES / "pid" / "model.xmi"), "-o", str(tmp_path / "b"))
     assert code == 0 and "[PKG002] package.xml names a placeholder maintainer and license" in err
+
+
+def _files(folder: Path) -> dict[str, tuple[bytes, int]]:
+    return {p.relative_to(folder).as_posix(): (p.read_bytes(), p.stat().st_mtime_ns)
+            for p in folder.rglob("*") if p.is_file()}
+
+
+def test_check_and_diff_compare_the_output_and_write_nothing(capsys: pytest.CaptureFixture[str],
+                                                             tmp_path: Path) -> None:
+    """generate --check / --diff, as black --check --diff: exit 1 and the files (and diffs) that would change."""
+    import subprocess
+    model, out = str(CASES / "headlamp" / "model.xmi"), tmp_path / "headlamp"
+    check = ["generate", model, "-o", str(out), "--target", "orocos", "--check"]
+    code, stdout, err = run(capsys, *check)
+    assert code == 1 and not out.exists() and list(tmp_path.iterdir()) == []  # not even a staging folder
+    assert "orocos package in" in err and "would change (22 files):" in err and "  added   CMakeLists.txt" in err
+    assert stdout == ""
+    assert run(capsys, "generate", model, "-o", str(out), "--target", "orocos")[0] == 0
+    code, stdout, err = run(capsys, *check)
+    assert code == 0 and "is up to date" in err and stdout == ""
+    # an edited generated file, a removed one, an edited user file (never drift), a missing user file
+    cmake = out / "CMakeLists.txt"
+    cmake.write_text(cmake.read_text().replace("orocos_generate_package()", "orocos_generate_package(my)"))
+    (out / "deploy" / "headlamp.ops").unlink()
+    (out / "deploy" / "camera.user.cpf").write_text("<properties/>\n")
+    (out / "deploy" / "arm.user.cpf").unlink()
+    before = _files(tmp_path)
+    code, stdout, err = run(capsys, *check[:-1], "--diff")
+    assert code == 1 and _files(tmp_path) == before
+    assert [line.strip() for line in err.splitlines() if line.startswith("  ")] == [
+        "changed CMakeLists.txt", "added   deploy/arm.user.cpf", "added   deploy/headlamp.ops"]
+    assert "--- a/CMakeLists.txt\n+++ b/CMakeLists.txt\n" in stdout
+    assert "-orocos_generate_package(my)\n+orocos_generate_package()\n" in stdout
+    assert "--- /dev/null\n+++ b/deploy/headlamp.ops\n" in stdout and "b/deploy/camera.user.cpf" not in stdout
+    # the diff is a patch that brings the folder up to date
+    subprocess.run(["patch", "-s", "-p1", "-d", str(out)], input=stdout, text=True, check=True)
+    assert run(capsys, *check)[0] == 0
+    assert (out / "deploy" / "camera.user.cpf").read_text() == "<properties/>\n"
+
+
+def test_check_refuses_what_would_write_or_mix_stdout(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    model = str(CASES / "headlamp" / "model.xmi")
+    code, _, err = run(capsys, "generate", model, "-o", str(tmp_path / "o"), "--check", "--save-stages",
+                       str(tmp_path / "s"))
+    assert code == 2 and "--check and --diff write nothing" in err
+    code, _, _ = run(capsys, "generate", model, "-o", str(tmp_path / "o"), "--diff", "--format", "json")
+    assert code == 2 and list(tmp_path.iterdir()) == []
+
+
+def test_warnings_saying_the_same_read_as_one_finding_with_notes(capsys: pytest.CaptureFixture[str],
+                                                                 tmp_path: Path,
+                                                                 monkeypatch: pytest.MonkeyPatch) -> None:
+    """The README's first command printed five CMP009 of 370 characters saying the same (issue 31 item 5)."""
+    monkeypatch.chdir(ROOT)
+    code, _, err = run(capsys, "generate", "fixtures/cases/headlamp/model.xmi", "-o", str(tmp_path / "h"),
+                       "--target", "orocos")
+    lines = err.splitlines()
+    assert code == 0 and len(lines) == 6
+    assert lines[0].endswith("[5 alike: 'camera', 'forceSensor', 'vision', 'controller', 'arm']")
+    assert ": warning: [CMP009] instance 'camera' asks for real-time priority 50 (scheduler RT) on host " \
+           "'controlPC', which the model does not declare real-time" in lines[0]
+    assert [line.split(": note: ")[1].split(" (")[0] for line in lines[1:5]] == [
+        "[CMP009] the same for 'forceSensor'", "[CMP009] the same for 'vision'",
+        "[CMP009] the same for 'controller'", "[CMP009] the same for 'arm'"]
+    assert [line.split(": note: ")[0].rsplit(":", 2)[1:] for line in lines[1:5]] == [
+        ["502", "3"], ["503", "3"], ["504", "3"], ["505", "3"]]
+    assert "[PKG002]" in lines[5]
+    assert len(err) < 1100  # 2,200 characters before, each CMP009 saying it all again
+    assert len(lines[0].split("[CMP009] ")[1].split(" (robomda:Activity")[0]) < 220
+    # json keeps one finding per element
+    code, stdout, _ = run(capsys, "generate", str(CASES / "headlamp" / "model.xmi"), "-o", str(tmp_path / "j"),
+                          "--target", "orocos", "--format", "json")
+    import json
+    assert [d["code"] for d in json.loads(stdout)["diagnostics"]] == ["CMP009"] * 5 + ["PKG002"]
+
+
+def test_the_readme_quick_start_prints_what_the_readme_shows(capsys: pytest.CaptureFixture[str], tmp_path: Path,
+                                                             monkeypatch: pytest.MonkeyPatch) -> None:
+    """The README shows the quick start's output and says what its two warnings mean (issue 31 item 5)."""
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    command = "robomda generate fixtures/cases/headlamp/model.xmi -o out/headlamp --target orocos"
+    assert command in readme
+    shown = readme.split("prints two warnings about the model")[1].split("```\n", 2)[1]
+    (tmp_path / "fixtures").symlink_to(ROOT / "fixtures")
+    monkeypatch.chdir(tmp_path)
+    code, out, err = run(capsys, *command.split()[1:])
+    assert code == 0 and err + out == shown
+    explained = readme.split(shown)[1].split("The second installs")[0]
+    assert "- `CMP009`:" in explained and "- `PKG002`:" in explained
+    # what the README says makes them go, does
+    code, _, err = run(capsys, *command.split()[1:], "--maintainer", "Jane Doe <jane@example.org>",
+                       "--license", "Apache-2.0")
+    assert code == 0 and "PKG002" not in err
+
+
+def test_check_says_what_generate_would_say_of_your_user_files(capsys: pytest.CaptureFixture[str],
+                                                               tmp_path: Path) -> None:
+    """A user file whose instance is gone stops generate (OUT003): --check must not call that up to date."""
+    model, out = tmp_path / "lamp.xmi", tmp_path / "out"
+    text = (CASES / "headlamp" / "model.xmi").read_text(encoding="utf-8")
+    model.write_text(text, encoding="utf-8")
+    assert run(capsys, "generate", str(model), "-o", str(out), "--target", "orocos")[0] == 0
+    model.write_text(text.replace('name="camera"', 'name="camera2"'), encoding="utf-8")
+    before = _files(tmp_path)
+    code, _, err = run(capsys, "generate", str(model), "-o", str(out), "--target", "orocos", "--check")
+    assert code == 2 and "[OUT003] user file deploy/camera.user.cpf holds your work" in err
+    assert _files(tmp_path) == before

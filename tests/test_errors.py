@@ -114,8 +114,12 @@ def test_a_model_deployed_elsewhere_is_generated_with_a_located_warning(
     line, column = _line_of(model, 'name="ROS"')
     assert code == 0
     assert err[0].startswith(f"{model}:{line}:{column}: warning: [ORO006] ") and "all 6 are generated for Orocos" in err[0]
-    # then the Orocos rules' warnings on the Meka activities and lifecycle
-    assert {e.split(": warning: [")[1][:6] for e in err[1:]} == {"ORO102", "ORO103"}
+    # then the Orocos rules' warnings on the Meka activities and lifecycle: ORO102 on the six instances
+    # as one finding (the other five as notes, each located)
+    assert [e.split(": ")[1] + " " + e.split("[")[1][:6] for e in err[1:]] == [
+        "warning ORO102"] + ["note ORO102"] * 5 + ["warning ORO103"]
+    assert err[1].endswith("[6 alike: 'GX1050Camera', 'ATIForceSensor', 'ScrewDetection', 'TrajectoryPlanner', "
+                           "'ImpedanceController', 'MekaArm']")
     assert len(list((tmp_path / "out" / "src").glob("*.cpp"))) == 7
 
 
@@ -168,3 +172,23 @@ def test_every_connector_that_joins_nothing_is_reported_at_once(tmp_path: Path,
     code, err = _generate(capsys, tmp_path / "model.xmi", tmp_path / "out")
     assert code == 1
     assert len([line for line in err if "[BND007]" in line]) == 2, err
+
+
+def test_text_groups_only_what_is_said_alike_of_several_elements() -> None:
+    from robomda.diagnostics import Diagnostic, format_all
+
+    def warn(message: str, line: int, code: str = "APP021") -> Diagnostic:
+        return Diagnostic("warning", code, message, file="m.xmi", line=line, column=3, element_kind="uml:Component",
+                          element_name="x", xmi_id=f"_{line}")
+
+    lines = format_all([warn("component 'a' is bad on 'h1'", 10), warn("other", 11, "APP022"),
+                        warn("component 'b' is bad on 'h1'", 12), warn("component 'c' is bad on 'h2'", 13),
+                        warn("component 'd' is bad on 'h1'", 14, "APP023"), warn("component 'e' is bad on 'h1'", 15)])
+    assert lines == [
+        "m.xmi:10:3: warning: [APP021] component 'a' is bad on 'h1' (uml:Component 'x', _10) [3 alike: 'a', 'b', 'e']",
+        "m.xmi:12:3: note: [APP021] the same for 'b' (uml:Component 'x', _12)",
+        "m.xmi:15:3: note: [APP021] the same for 'e' (uml:Component 'x', _15)",
+        "m.xmi:11:3: warning: [APP022] other (uml:Component 'x', _11)",
+        # differs in the other name: its own finding; another code: its own finding
+        "m.xmi:13:3: warning: [APP021] component 'c' is bad on 'h2' (uml:Component 'x', _13)",
+        "m.xmi:14:3: warning: [APP023] component 'd' is bad on 'h1' (uml:Component 'x', _14)"]

@@ -122,3 +122,46 @@ def test_an_interrupted_swap_is_completed_by_the_next_run(tmp_path: Path) -> Non
     out.rename(tmp_path / ".out.robomda-old")
     recover(out)
     assert (out / "a.cpp").read_text() == "A2\n" and [p.name for p in tmp_path.iterdir()] == ["out"]
+
+
+def _tree(folder: Path) -> dict[str, tuple[bytes, int]]:
+    """Every file under ``folder`` (itself included) with its bytes and modification time."""
+    return {p.relative_to(folder).as_posix(): (p.read_bytes(), p.stat().st_mtime_ns)
+            for p in folder.rglob("*") if p.is_file()}
+
+
+def test_compare_lists_what_a_run_would_add_change_and_remove_and_writes_nothing(tmp_path: Path) -> None:
+    from robomda.output import compare_fileset
+    out = tmp_path / "out"
+    write_fileset(fileset(("a.cpp", "A1\n", "generated"), ("old.cpp", "O\n", "generated"),
+                          ("u.cpp", "U1\n", "user"), ("v.cpp", "V1\n", "user")), out)
+    (out / "u.cpp").write_text("my code\n")  # the user's: never drift
+    (out / "v.cpp").unlink()  # a missing user file is: the run writes it
+    (out / "notes.md").write_text("mine\n")  # not robomda's: never drift
+    before = _tree(tmp_path)
+    drift = compare_fileset(fileset(("a.cpp", "A2\n", "generated"), ("new.cpp", "N\n", "generated"),
+                                    ("u.cpp", "U2\n", "user"), ("v.cpp", "V2\n", "user")), out)
+    assert _tree(tmp_path) == before and sorted(p.name for p in tmp_path.iterdir()) == ["out"]
+    assert (drift.added, drift.changed, drift.removed) == (["new.cpp", "v.cpp"], ["a.cpp"], ["old.cpp"])
+    assert drift.lines() == ["changed a.cpp", "added   new.cpp", "removed old.cpp", "added   v.cpp"]
+    assert drift.diffs["a.cpp"] == "--- a/a.cpp\n+++ b/a.cpp\n@@ -1 +1 @@\n-A1\n+A2\n"
+    assert drift.diffs["new.cpp"] == "--- /dev/null\n+++ b/new.cpp\n@@ -0,0 +1 @@\n+N\n"
+    assert drift.diffs["old.cpp"] == "--- a/old.cpp\n+++ /dev/null\n@@ -1 +0,0 @@\n-O\n"
+    assert drift.diff("m/x.xmi/").startswith("--- a/m/x.xmi/a.cpp\n+++ b/m/x.xmi/a.cpp\n@@ -1 +1 @@\n-A1\n+A2\n")
+    same = compare_fileset(fileset(("a.cpp", "A1\n", "generated"), ("old.cpp", "O\n", "generated"),
+                                   ("u.cpp", "U2\n", "user")), out)
+    assert not same and same.lines() == [] and same.diff() == ""
+
+
+def test_an_exact_compare_takes_user_files_and_foreign_files_too(tmp_path: Path) -> None:
+    """A golden copy (the pytest plugin's expected folder) holds what a fresh run writes, nothing else."""
+    from robomda.output import compare_fileset
+    out = tmp_path / "golden"
+    write_fileset(fileset(("a.cpp", "A\n", "generated"), ("u.cpp", "U1\n", "user")), out)
+    (out / "extra.txt").write_text("x\n")
+    (out / ("u.cpp" + NEW_SUFFIX)).write_text("fresh\n")
+    drift = compare_fileset(fileset(("a.cpp", "A\n", "generated"), ("u.cpp", "U2\n", "user")), out, exact=True)
+    assert drift.lines() == ["removed extra.txt", "changed u.cpp"]
+    assert "-U1\n+U2\n" in drift.diffs["u.cpp"]
+    assert compare_fileset(fileset(("a.cpp", "A\n", "generated")), tmp_path / "none", exact=True).added == ["a.cpp"]
+    assert not (tmp_path / "none").exists()

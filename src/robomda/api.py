@@ -15,7 +15,7 @@ from lxml import etree
 from robomda import pipeline as pipelines
 from robomda.diagnostics import EXIT_FINDINGS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, Diagnostic, RobomdaError
 from robomda.engine import shared
-from robomda.output import WriteReport, write_fileset
+from robomda.output import Drift, WriteReport, compare_fileset, user_findings, write_fileset
 from robomda.resources import available_targets, default_target, pipeline_path, target_of_middleware
 from robomda.validate import stream
 
@@ -36,6 +36,7 @@ class Generated:
     timings: list[tuple[str, float, float, float]]
     warnings: list[Diagnostic]
     target: str = ""
+    drift: Drift | None = None  # check mode: how the output folder differs from what would be written
 
 
 @dataclass
@@ -321,7 +322,7 @@ def _package_name_note(asked: str, psm: str | None, model: Path) -> list[Diagnos
 
 def generate(model: Path | str, out: Path | str | None, target: str | None = None, *, package_name: str = "",
              type_map: Path | str | None = None, write: bool = True, package: PackageInfo | None = None,
-             model_path: Sequence[Path | str] = (), diagrams: bool = False) -> Generated:
+             model_path: Sequence[Path | str] = (), diagrams: bool = False, check: bool = False) -> Generated:
     """Run ``target``'s chain on ``model`` and write its files into ``out``.
 
     Without a ``target``: the one middleware the model deploys on (Orocos
@@ -330,7 +331,10 @@ def generate(model: Path | str, out: Path | str | None, target: str | None = Non
     unless every step succeeded and every intermediate model is valid. With
     ``write=False`` only the stage outputs are returned. With ``diagrams``,
     the package also gets the model's diagrams (:func:`diagram`), written
-    and tracked as its other generated files.
+    and tracked as its other generated files. With ``check=True``
+    nothing is written either: ``drift`` says how ``out`` differs from what
+    would be written (:func:`robomda.output.compare_fileset`; empty when ``out``
+    is up to date).
     """
     model = Path(model)
     if target is not None:
@@ -359,11 +363,17 @@ def generate(model: Path | str, out: Path | str | None, target: str | None = Non
         warnings.append(Diagnostic("warning", "PKG002", f"package.xml names a placeholder {' and '.join(m[2:] for m in missing)}: "
                                    f"give {' and '.join(missing)} (a package cannot be released as it is)",
                                    file=str(model)))
-    report = None
-    if write and out_path is not None and chain.yields == "files" and result.tree is not None:
+    report, drift = None, None
+    if check and out_path is not None and chain.yields == "files" and result.tree is not None:
+        errors, found = user_findings(result.tree, out_path)  # what writing would say of the user files
+        if errors:
+            raise RobomdaError(warnings + errors, EXIT_INPUT)
+        warnings += found
+        drift = compare_fileset(result.tree, out_path)
+    elif write and out_path is not None and chain.yields == "files" and result.tree is not None:
         report = write_fileset(result.tree, out_path)
         warnings += report.warnings
-    return Generated(result.stages, report, result.timings, warnings, target)
+    return Generated(result.stages, report, result.timings, warnings, target, drift)
 
 
 def _add_diagrams(result: pipelines.RunResult, model: Path, context: dict[str, str], *, render: bool) -> list[Diagnostic]:

@@ -28,6 +28,10 @@
   the DoF checks), so an edited or removed robot description is checked again.
 - A failing model is reported with its diagnostics and does not stop the
   others.
+- Check mode (``check``) writes nothing, not even the batch state, and skips
+  nothing: each model's output folder is compared with what would be
+  generated (status ``drifted`` when it differs, with the files and, with
+  ``diff``, their unified diffs; ``ok`` when up to date).
 - SIGINT (Ctrl-C) or SIGTERM stops the batch at once: queued models are
   cancelled, the workers are terminated (each output folder is then the old
   package or the new one, see output.py), the batch state is written for
@@ -52,7 +56,7 @@ from typing import Callable, Sequence
 from lxml import etree
 
 from robomda import __version__
-from robomda.diagnostics import EXIT_OK, as_error, linked_files
+from robomda.diagnostics import EXIT_FINDINGS, EXIT_OK, as_error, format_all, linked_files
 from robomda.inputs import robot_files
 from robomda.output import STATE_FILE as OUTPUT_STATE
 from robomda.output import atomic_write
@@ -72,12 +76,14 @@ class ModelResult:
     """What happened to one model."""
 
     model: str  # relative to the input folder
-    status: str  # "ok", "skipped" (unchanged), "library" (used by another model) or "failed"
-    files_written: int = 0
+    status: str  # "ok", "skipped" (unchanged), "library" (used by another model), "drifted" (check) or "failed"
+    files_written: int = 0  # check mode: the files that would change
     seconds: float = 0.0
     diagnostics: list[str] = field(default_factory=list)
     exit_code: int = EXIT_OK
     input_hash: str = ""
+    drift: list[str] = field(default_factory=list)  # check mode: "added PATH", "changed PATH", "removed PATH"
+    diff: str = ""  # check mode with diff: the unified diffs, paths relative to the batch's output folder
 
 
 @dataclass
@@ -90,7 +96,7 @@ class BatchReport:
 
     @property
     def exit_code(self) -> int:
-        return max((r.exit_code for r in self.results if r.status == "failed"), default=EXIT_OK)
+        return max((r.exit_code for r in self.results if r.status in ("failed", "drifted")), default=EXIT_OK)
 
 
 def _is_uml_model(path: Path) -> bool:
@@ -147,6 +153,11 @@ def toolchain_hash(target: str | None, package_name: str, type_map: Path | None 
     return digest.hexdigest()
 
 
+def _prefix(model: Path, folder: Path) -> str:
+    """The model's output folder relative to the batch's, as a diff path prefix."""
+    return model.relative_to(folder).as_posix() + "/"
+
+
 def _output_folder(model: Path, folder: Path, out: Path) -> Path:
     """OUT/<the model's path under DIR>: one folder per model file, whatever its siblings."""
     return out / model.relative_to(folder)
@@ -164,21 +175,27 @@ def _outputs_intact(dest: Path) -> bool:
 
 
 def _generate_one(model: str, out: str, target: str | None, package_name: str, type_map: str | None,
-                  package: tuple[str, str, str] = ("", "", ""), model_path: tuple[str, ...] = ()) -> ModelResult:
-    """Worker: one model (the process's engine is reused across calls)."""
+                  package: tuple[str, str, str] = ("", "", ""), model_path: tuple[str, ...] = (),
+                  check: str = "", prefix: str = "") -> ModelResult:
+    """Worker: one model (the process's engine is reused across calls); ``check``: "", "check" or "diff"
+    (the diff's paths start with ``prefix``, the model's folder under the batch's output)."""
     from robomda.api import PackageInfo, generate
 
     started = time.perf_counter()
     result = ModelResult(model=model, status="ok")
     try:
         done = generate(model, out, target, package_name=package_name, type_map=type_map,
-                        package=PackageInfo(*package), model_path=model_path)
+                        package=PackageInfo(*package), model_path=model_path, check=bool(check))
         result.files_written = len(done.report.written) if done.report else 0
-        result.diagnostics = [w.format() for w in done.warnings]
+        result.diagnostics = format_all(done.warnings)
+        if done.drift:
+            result.status, result.exit_code = "drifted", EXIT_FINDINGS
+            result.drift, result.files_written = done.drift.lines(), len(done.drift.lines())
+            result.diff = done.drift.diff(prefix) if check == "diff" else ""
     except Exception as exc:  # noqa: BLE001 - one model's bug must not stop the batch
         failed = as_error(exc, model)
         result.status, result.exit_code = "failed", failed.exit_code
-        result.diagnostics = [d.format() for d in failed.diagnostics]
+        result.diagnostics = format_all(failed.diagnostics)
     result.seconds = time.perf_counter() - started
     return result
 
@@ -205,8 +222,10 @@ def _input_hash(model: Path, linked: list[Path]) -> str:
 def run_batch(folder: Path, out: Path, target: str | None = None, *, package_name: str = "", jobs: int | None = None,
               force: bool = False, type_map: Path | None = None, package: tuple[str, str, str] = ("", "", ""),
               model_path: Sequence[Path] = (),
-              progress: Callable[[int, int, ModelResult], None] | None = None) -> BatchReport:
-    """Generate every model under ``folder`` into ``out``; never raises for one model's failure."""
+              progress: Callable[[int, int, ModelResult], None] | None = None, check: str = "") -> BatchReport:
+    """Generate every model under ``folder`` into ``out``; never raises for one model's failure.
+
+    ``check`` ("check" or "diff"): write nothing, compare each model's output folder instead."""
     started = time.perf_counter()
     folder, out = folder.resolve(), out.resolve()
     models = find_models(folder, exclude=out)
@@ -231,7 +250,7 @@ def run_batch(folder: Path, out: Path, target: str | None = None, *, package_nam
         digest = _input_hash(model, links[model])
         dest = _output_folder(model, folder, out)
         seen = state.get(rel, {})
-        if (not force and seen.get("input") == digest and seen.get("toolchain") == tools
+        if (not force and not check and seen.get("input") == digest and seen.get("toolchain") == tools
                 and _outputs_intact(dest)):
             results.append(ModelResult(model=rel, status="skipped", input_hash=digest))
         else:
@@ -246,7 +265,8 @@ def run_batch(folder: Path, out: Path, target: str | None = None, *, package_nam
     try:
         if todo and workers == 1:
             for model, dest, digest in todo:
-                result = _generate_one(str(model), str(dest), target, package_name, map_arg, package, path_arg)
+                result = _generate_one(str(model), str(dest), target, package_name, map_arg, package, path_arg, check,
+                                       _prefix(model, folder))
                 done_count += 1
                 results.append(_finish(result, model, folder, digest, progress, done_count, total))
         elif todo:
@@ -255,7 +275,7 @@ def run_batch(folder: Path, out: Path, target: str | None = None, *, package_nam
                                        initializer=_worker_init)
             try:
                 futures = {pool.submit(_generate_one, str(m), str(d), target, package_name, map_arg, package,
-                                       path_arg): (m, dg)
+                                       path_arg, check, _prefix(m, folder)): (m, dg)
                            for m, d, dg in todo}
                 for future in as_completed(futures):
                     model, digest = futures[future]
@@ -265,8 +285,9 @@ def run_batch(folder: Path, out: Path, target: str | None = None, *, package_nam
                 _stop(pool)
                 raise
             pool.shutdown()
-    finally:  # the models done are recorded, also when a signal stops the batch
-        _write_state(out, target, tools, results)
+    finally:  # the models done are recorded, also when a signal stops the batch (check mode writes nothing)
+        if not check:
+            _write_state(out, target, tools, results)
     results.sort(key=lambda r: r.model)
     return BatchReport(results, time.perf_counter() - started)
 

@@ -8,11 +8,16 @@ import signal
 import sys
 import time
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from robomda import __version__
-from robomda.diagnostics import EXIT_INPUT, EXIT_OK, Diagnostic, RobomdaError, as_error
+from robomda.diagnostics import EXIT_FINDINGS, EXIT_INPUT, EXIT_OK, Diagnostic, RobomdaError, as_error, format_all
 from robomda.formats import FORMATS, render
 from robomda.resources import available_targets as targets
+
+if TYPE_CHECKING:
+    from robomda.batch import BatchReport
+    from robomda.output import Drift
 
 # robomda.api (the engine, schemas and rules), robomda.batch and
 # robomda.output are imported by the commands that use them: `--version`
@@ -25,7 +30,8 @@ EXIT_SIGTERM = 143  # 128 + SIGTERM
 
 _EXIT_CODES = """exit codes:
   0  success (warnings may have been reported)
-  1  the model has errors (each reported as FILE:LINE:COL: error: [CODE] ...)
+  1  the model has errors (each reported as FILE:LINE:COL: error: [CODE] ...); generate --check / --diff:
+     OUT is not what would be generated
   2  usage error, or input that cannot be read (missing, not XML, not UML XMI)
   3  internal error in robomda (please report it with the model)
   130 / 143  interrupted by SIGINT (Ctrl-C) / SIGTERM: no output folder is half-written"""
@@ -46,6 +52,33 @@ def _package_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--model-path", type=Path, action="append", default=[], metavar="DIR",
                         help="a folder of model files your model references (libraries kept elsewhere); "
                              "repeat for several. Without it only files in the model's own folder are read")
+
+
+def _check_options(parser: argparse.ArgumentParser) -> None:
+    """generate --check / --diff: compare OUT with what would be written, write nothing (as black does)."""
+    parser.add_argument("--check", action="store_true",
+                        help="write nothing; exit 1 if OUT is not exactly what would be generated, listing the "
+                             "files that would be added, changed or removed (on stderr)")
+    parser.add_argument("--diff", action="store_true",
+                        help="write nothing; print a unified diff of each file that would change on stdout "
+                             "(implies --check's exit code)")
+
+
+def _files(count: int) -> str:
+    return f"{count} file" + ("" if count == 1 else "s")
+
+
+def _show_drift(out: Path, drift: Drift, label: str, diff: bool) -> int:
+    """Report a check-mode comparison: the listing on stderr, the diff on stdout; the exit code."""
+    if diff:
+        sys.stdout.write(drift.diff())
+    if not drift:
+        print(f"robomda: {label} in {out} is up to date", file=sys.stderr)
+        return EXIT_OK
+    print(f"robomda: {label} in {out} would change ({_files(len(drift.lines()))}):", file=sys.stderr)
+    for line in drift.lines():
+        print(f"  {line}", file=sys.stderr)
+    return EXIT_FINDINGS
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -80,6 +113,7 @@ def _parser() -> argparse.ArgumentParser:
     gen.add_argument("--format", default="text", choices=FORMATS,
                      help="how to report diagnostics: text on stderr (default), or a json / sarif document "
                           "on stdout (one model only)")
+    _check_options(gen)
 
     chk = sub.add_parser(
         "check", help="check an XMI model without generating anything",
@@ -192,32 +226,50 @@ def _batch(args: argparse.Namespace) -> int:
     if args.jobs is not None and args.jobs < 1:
         print("robomda: -j needs a positive number", file=sys.stderr)
         return EXIT_INPUT
+    check = "diff" if args.diff else "check" if args.check else ""
     report = run_batch(args.model, args.output, args.target, package_name=args.package_name, jobs=args.jobs,
                        package=(args.package_version, args.maintainer, args.license),
                        force=args.force, type_map=args.type_map, model_path=args.model_path,
-                       progress=ProgressBar())
+                       progress=ProgressBar(), check=check)
     for result in report.results:
         for line in result.diagnostics:
             print(line, file=sys.stderr)
-    files = sum(r.files_written for r in report.results)
-    width = max([len(r.model) for r in report.results] + [5])
-    print(f"{'model':<{width}}  {'status':<8} {'files':>5} {'seconds':>8}")
-    for r in report.results:
-        print(f"{r.model:<{width}}  {r.status:<8} {r.files_written:>5} {r.seconds:>8.2f}")
-    libraries = f", {report.count('library')} libraries" if report.count("library") else ""
-    print(f"robomda: {len(report.results)} models: {report.count('ok')} ok, {report.count('skipped')} unchanged, "
-          f"{report.count('failed')} failed{libraries}; {files} files written in {report.seconds:.1f} s")
+        if result.drift:
+            print(f"robomda: {result.model}: its output would change ({_files(len(result.drift))}):", file=sys.stderr)
+            for line in result.drift:
+                print(f"  {line}", file=sys.stderr)
+        sys.stdout.write(result.diff)
+    _batch_table(report, bool(check))
     if not report.results:
         print(f"robomda: no UML model found under {args.model}", file=sys.stderr)
         return EXIT_INPUT
     return report.exit_code
 
 
+def _batch_table(report: BatchReport, check: bool) -> None:
+    """The summary of a batch: one row per model, then the counts; in check mode (on stderr, stdout holds
+    the diffs) the files column counts the files that would change."""
+    stream = sys.stderr if check else sys.stdout
+    files = sum(r.files_written for r in report.results)
+    width = max([len(r.model) for r in report.results] + [5])
+    print(f"{'model':<{width}}  {'status':<8} {'files':>5} {'seconds':>8}", file=stream)
+    for r in report.results:
+        print(f"{r.model:<{width}}  {r.status:<8} {r.files_written:>5} {r.seconds:>8.2f}", file=stream)
+    libraries = f", {report.count('library')} libraries" if report.count("library") else ""
+    if check:
+        print(f"robomda: {len(report.results)} models: {report.count('ok')} up to date, {report.count('drifted')} "
+              f"drifted, {report.count('failed')} failed{libraries}; {_files(files)} would change "
+              f"(checked in {report.seconds:.1f} s)", file=stream)
+        return
+    print(f"robomda: {len(report.results)} models: {report.count('ok')} ok, {report.count('skipped')} unchanged, "
+          f"{report.count('failed')} failed{libraries}; {files} files written in {report.seconds:.1f} s", file=stream)
+
+
 def _report(fmt: str, diagnostics: list[Diagnostic], exit_code: int) -> None:
     """Diagnostics as text on stderr, or as one json / sarif document on stdout."""
     if fmt == "text":
-        for diag in diagnostics:
-            print(diag.format(), file=sys.stderr)
+        for line in format_all(diagnostics):
+            print(line, file=sys.stderr)
     else:
         sys.stdout.write(render(fmt, diagnostics, exit_code))
 
@@ -247,7 +299,7 @@ def _watch(args: argparse.Namespace) -> int:
 
     def show(result: Regeneration) -> None:
         # the diagnostics when they differ from the model's last ones; always the one line of result
-        lines = [d.format() for d in result.diagnostics]
+        lines = format_all(result.diagnostics)
         if lines != shown.get(result.model):
             for line in lines:
                 print(line, file=sys.stderr)
@@ -303,10 +355,19 @@ def _main(args: argparse.Namespace, fmt: str) -> int:
         if args.command == "diagram":
             return _diagram(args, fmt)
         if args.command == "generate":
+            checking = args.check or args.diff
+            if checking and args.save_stages or args.diff and fmt != "text":
+                print("robomda: --check and --diff write nothing (leave out --save-stages), and --diff prints on "
+                      "stdout, as json / sarif do: use one of them", file=sys.stderr)
+                return EXIT_INPUT
             done = generate(args.model, args.output, args.target, package_name=args.package_name,
-                            type_map=args.type_map, model_path=args.model_path, diagrams=args.diagrams,
+                            type_map=args.type_map, model_path=args.model_path, diagrams=args.diagrams, check=checking,
                             package=PackageInfo(args.package_version, args.maintainer, args.license))
             _report(fmt, done.warnings, EXIT_OK)
+            if checking:
+                from robomda.output import Drift
+
+                return _show_drift(args.output, done.drift or Drift(), f"{done.target} package", args.diff)
             if args.save_stages:
                 for name, text in done.stages.items():
                     _write_model_file(args.save_stages / f"{name}.xml", text)

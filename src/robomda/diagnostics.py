@@ -9,6 +9,7 @@ of the XMI element that carries it.
 
 from __future__ import annotations
 
+import dataclasses
 import os
 import re
 from dataclasses import dataclass, field
@@ -31,6 +32,7 @@ __all__ = [
     "parse_stylesheet_message",
     "model_element_id",
     "as_error",
+    "format_all",
 ]
 
 EXIT_OK = 0
@@ -85,6 +87,63 @@ class Diagnostic:
                 parts.append(self.xmi_id)
             text += f" ({', '.join(parts)})"
         return text
+
+
+_QUOTED = re.compile(r"('[^']*')")
+
+
+def _variants(d: Diagnostic) -> list[tuple[tuple[str, ...], str]]:
+    """For each quoted name in ``d``'s message: (the key of the message with that name left out, the name)."""
+    parts = _QUOTED.split(d.message)  # odd indexes are the quoted names
+    return [((d.severity, d.code, str(i), *parts[:i], *parts[i + 1:]), parts[i]) for i in range(1, len(parts), 2)]
+
+
+def _groups(diagnostics: list[Diagnostic]) -> list[list[tuple[Diagnostic, str]]]:
+    """``diagnostics`` in order, those saying the same thing about different elements together.
+
+    Two diagnostics say the same thing when they have the same severity and
+    code and their messages differ in one quoted name only, at the same
+    place. Each diagnostic joins the largest such group (the earliest
+    name's on a tie); a group stands where its first member stood.
+    """
+    sizes: dict[tuple[str, ...], int] = {}
+    for d in diagnostics:
+        for key, _ in _variants(d):
+            sizes[key] = sizes.get(key, 0) + 1
+    groups: dict[object, list[tuple[Diagnostic, str]]] = {}
+    for n, d in enumerate(diagnostics):
+        best = max(_variants(d), key=lambda v: sizes[v[0]], default=None)
+        key: object = best[0] if best is not None and sizes[best[0]] > 1 else n
+        groups.setdefault(key, []).append((d, best[1] if best is not None else ""))
+    return list(groups.values())
+
+
+def _short(name: str) -> str:
+    return name if len(name) <= 80 else name[:60] + "...'"
+
+
+def format_all(diagnostics: list[Diagnostic]) -> list[str]:
+    """The text lines of ``diagnostics``: one finding per thing said, located at every element it is about.
+
+    A diagnostic that says the same as others about another element (see
+    :func:`_groups`) is one finding: its first line is the first one's
+    (:meth:`Diagnostic.format`) ending in ``[N alike: 'a', 'b', ...]``, and
+    each other element gets a ``FILE:LINE:COL: note: [CODE] the same for 'b'
+    (kind 'name', xmi:id)`` line after it, as compilers locate the other
+    places of one finding.
+    """
+    lines = []
+    for group in _groups(diagnostics):
+        first, _ = group[0]
+        if len(group) == 1:
+            lines.append(first.format())
+            continue
+        names = ", ".join(_short(name) for _, name in group)
+        lines.append(f"{first.format()} [{len(group)} alike: {names}]")
+        for d, name in group[1:]:
+            note = dataclasses.replace(d, severity="note", message=f"the same for {_short(name)}")
+            lines.append(note.format())
+    return lines
 
 
 @dataclass

@@ -4,8 +4,12 @@ Text (``FILE:LINE:COL: severity: [CODE] message (kind 'name', xmi:id)``) is
 for people and compilers' habits; ``--format json`` gives the same fields as
 one JSON document, and ``--format sarif`` the OASIS Static Analysis Results
 Interchange Format that editors (VS Code's SARIF viewer) and CI systems
-(GitHub code scanning, GitLab) read. Both go to standard output, sorted as
-the text would be, with nothing else on standard output.
+(GitHub code scanning, GitLab) read. Both go to standard output, in the
+order found, with nothing else on standard output. Neither groups
+what is said of several elements alike, as the text does
+(:func:`robomda.diagnostics.format_all`): one result per element, each with
+its location and its full message, as code-scanning tools annotate each
+line on its own.
 """
 
 from __future__ import annotations

@@ -39,6 +39,7 @@ directory is inside the output stays in the old, removed tree: ``cd .``.
 from __future__ import annotations
 
 import ctypes
+import difflib
 import errno
 import hashlib
 import json
@@ -54,7 +55,8 @@ from lxml import etree
 
 from robomda.diagnostics import EXIT_INPUT, Diagnostic, RobomdaError
 
-__all__ = ["WriteReport", "write_fileset", "atomic_write", "recover", "STATE_FILE", "NEW_SUFFIX"]
+__all__ = ["WriteReport", "Drift", "write_fileset", "compare_fileset", "user_findings", "atomic_write", "recover",
+           "STATE_FILE", "NEW_SUFFIX"]
 
 STATE_FILE = Path(".robomda") / "state.json"
 NEW_SUFFIX = ".robomda-new"
@@ -70,6 +72,96 @@ class WriteReport:
     removed: list[str] = field(default_factory=list)
     kept_stale: list[str] = field(default_factory=list)
     warnings: list[Diagnostic] = field(default_factory=list)
+
+
+@dataclass
+class Drift:
+    """How a folder differs from the file set a run would write (:func:`compare_fileset`); paths relative
+    to the folder, sorted. ``diffs`` holds a unified diff per path (``a/PATH`` is the folder's file,
+    ``b/PATH`` the new one, ``/dev/null`` for a missing side)."""
+
+    added: list[str] = field(default_factory=list)
+    changed: list[str] = field(default_factory=list)
+    removed: list[str] = field(default_factory=list)
+    diffs: dict[str, str] = field(default_factory=dict)
+
+    def __bool__(self) -> bool:
+        return bool(self.added or self.changed or self.removed)
+
+    def lines(self) -> list[str]:
+        """One line per path, ``added   PATH`` / ``changed PATH`` / ``removed PATH``, sorted by path."""
+        rows = [(rel, kind) for kind, paths in (("added", self.added), ("changed", self.changed),
+                                                ("removed", self.removed)) for rel in paths]
+        return [f"{kind:<7} {rel}" for rel, kind in sorted(rows)]
+
+    def diff(self, prefix: str = "") -> str:
+        """Every path's diff, in path order; ``prefix`` (a folder, ending in "/") goes before each path."""
+        if not prefix:
+            return "".join(self.diffs[rel] for rel in sorted(self.diffs))
+        parts = []
+        for rel in sorted(self.diffs):
+            old, new, rest = self.diffs[rel].split("\n", 2)
+            parts.append("\n".join(re.sub(r"^(---|\+\+\+) ([ab])/", lambda m: f"{m[1]} {m[2]}/{prefix}", line) for line in (old, new))
+                         + "\n" + rest)
+        return "".join(parts)
+
+
+def _unified(rel: str, old: bytes | None, new: bytes | None) -> str:
+    """A git-style unified diff of one file (``patch -p1`` inside the folder applies it)."""
+    def text(data: bytes | None) -> list[str]:
+        return data.decode("utf-8", "replace").splitlines(keepends=True) if data is not None else []
+
+    lines = list(difflib.unified_diff(text(old), text(new), "a/" + rel if old is not None else "/dev/null",
+                                      "b/" + rel if new is not None else "/dev/null"))
+    return "".join(line if line.endswith("\n") else line + "\n\\ No newline at end of file\n" for line in lines)
+
+
+def _folder_files(out: Path) -> list[str]:
+    """Every regular file under ``out`` (relative, posix), without robomda's own bookkeeping and fresh copies."""
+    found = []
+    for top, dirs, names in os.walk(out):
+        rel_dir = Path(top).relative_to(out)
+        if rel_dir == Path("."):
+            dirs[:] = [d for d in dirs if d != STATE_FILE.parts[0]]
+        found += [(rel_dir / n).as_posix() for n in names if not n.endswith(NEW_SUFFIX)]
+    return found
+
+
+def compare_fileset(files: etree._Element, out: Path, *, exact: bool = False) -> Drift:
+    """How folder ``out`` differs from what :func:`write_fileset` would make of it; reads only.
+
+    A generated file is ``added`` when missing, ``changed`` when its bytes
+    differ (edited or out of date). A user file (written once, the user's to
+    edit) counts only when missing: its content is the user's. ``removed``
+    are the generated files of the folder's state that the file set no
+    longer has. With ``exact`` (a golden copy, no user edits), user files are
+    compared by content too and every other file of the folder (robomda's
+    ``.robomda/`` and ``*.robomda-new`` aside) counts as ``removed``.
+    """
+    out = Path(out)
+    drift = Drift()
+    produced: set[str] = set()
+    for node in files.iterchildren(f"{{{_FS}}}file"):
+        rel, mode = node.get("path"), node.get("mode", "generated")
+        data = (node.text or "").encode("utf-8")
+        produced.add(rel)
+        target = out / rel
+        if not target.is_file():
+            drift.added.append(rel)
+            drift.diffs[rel] = _unified(rel, None, data)
+        elif mode == "generated" or exact:
+            current = target.read_bytes()
+            if current != data:
+                drift.changed.append(rel)
+                drift.diffs[rel] = _unified(rel, current, data)
+    gone = _folder_files(out) if exact and out.is_dir() else _read_state(out)
+    for rel in sorted(set(gone) - produced):
+        if (out / rel).is_file():
+            drift.removed.append(rel)
+            drift.diffs[rel] = _unified(rel, (out / rel).read_bytes(), None)
+    drift.added.sort()
+    drift.changed.sort()
+    return drift
 
 
 def _sha(data: bytes) -> str:
@@ -120,6 +212,15 @@ def _user_drift(out: Path, nodes: list[etree._Element]) -> tuple[list[Diagnostic
                 f"({'; '.join(changes)}): update it (the fresh version is beside it as {rel}{NEW_SUFFIX})",
                 file=str(out / rel)))
     return errors, warnings
+
+
+def user_findings(files: etree._Element, out: Path) -> tuple[list[Diagnostic], list[Diagnostic]]:
+    """What :func:`write_fileset` would say of the user files in ``out``, writing nothing: (OUT003
+    errors, which stop it, and OUT004 / OUT005 warnings)."""
+    out = Path(out).resolve()
+    nodes = [n for n in files.iterchildren(f"{{{_FS}}}file") if n.get("mode") == "user"]
+    errors, warnings = _user_drift(out, nodes)
+    return errors, warnings + _user_cpf_names(out, nodes)
 
 
 def _user_cpf_names(out: Path, nodes: list[etree._Element]) -> list[Diagnostic]:
@@ -280,8 +381,9 @@ def write_fileset(files: etree._Element, out: Path) -> WriteReport:
             if current is None or state.get(rel) != current:
                 conflicts.append(Diagnostic(
                     "error", "OUT001",
-                    f"refusing to overwrite {target}: robomda did not write it, or it was edited since; "
-                    "move your changes into the user files (the ones robomda writes once) or remove it",
+                    f"refusing to overwrite {target}: robomda did not write it, or it was edited since (generate "
+                    "--diff shows what differs); move your changes into the user files (the ones robomda writes "
+                    "once) or remove it",
                     file=str(target)))
         plan.append((rel, data, mode))
     user_nodes = [n for n in files.iterchildren(f"{{{_FS}}}file") if n.get("mode") == "user"]
