@@ -14,6 +14,8 @@
   Model (docs/deployment.md):
   - a process is an ExecutionEnvironment that is not a thread (as before:
     the one instances are deployed to, its middleware theirs);
+  - a model that draws no execution environment: one default process
+    per host of its instances (@default, no @middleware; bind/instances.xsl);
   - a thread is an ExecutionEnvironment stereotyped Thread, or, unprofiled,
     one nested in another ExecutionEnvironment whose name ends in 'thread'
     (any case); its process is the nearest enclosing execution environment
@@ -188,6 +190,17 @@
         </xsl:for-each>
       </pim:process>
     </xsl:for-each>
+    <!-- the default processes of a model that draws no execution
+         environment, one per host (BND028): no middleware, each target
+         deploys them on its own; named after the model (with the host's
+         name when there are several) -->
+    <xsl:variable name="undrawn" as="element(pim:instance)*" select="$instances[empty(@middleware)]"/>
+    <xsl:variable name="several" as="xs:boolean" select="count(distinct-values($undrawn/@host)) gt 1"/>
+    <xsl:for-each-group select="$undrawn" group-by="string(@host)">
+      <pim:process xmi-id="{current-grouping-key()}"
+                   name="{f:cpp-identifier(string-join(($model/@name, key('fp:id', current-grouping-key(), $root)[self::pim:node]/@name[$several]), '_'))}"
+                   host="{current-grouping-key()}" managed="false" default="true"/>
+    </xsl:for-each-group>
   </xsl:function>
 
   <!-- ========================================================== buses -->
