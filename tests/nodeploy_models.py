@@ -5,9 +5,9 @@ Eclipse UML2 / Papyrus and Enterprise Architect.
 components with ports typed by one interface (provided by the driver, required by the
 planner), a top composite with a part of each and an assembly connector between them, and
 no platform at all. Options add a platform piece by piece: a Node (``node``), an
-ExecutionEnvironment in it (``environment``) holding the driver by a Deployment
-(``deploy``), an Artifact nested in the environment that manifests the planner
-(``nested_artifact``), a «Host» memory / «Bus» bandwidth / «Activity» period written with
+ExecutionEnvironment in it (``environment``: its name), a second one named ``deploy``
+holding the driver's part by a Deployment, an Artifact nested in the first environment
+that manifests the planner's part (``nested_artifact``), a «Host» memory / «Bus» bandwidth / «Activity» period written with
 units (``host_memory``, ``bandwidth``, ``period``).
 """
 
@@ -30,7 +30,7 @@ _REAL = {"eclipse": '<type xmi:type="uml:PrimitiveType" href="pathmap://UML_LIBR
          "ea": '<type xmi:idref="EAJava_double"/>'}
 
 
-def component_model(dialect: str = "eclipse", *, node: bool = False, environment: str = "", deploy: bool = False,
+def component_model(dialect: str = "eclipse", *, node: bool = False, environment: str = "", deploy: str = "",
                     nested_artifact: bool = False, host_memory: str = "", bandwidth: str = "", period: str = "") -> str:
     """The XMI text of the rover model (see the module's doc)."""
     p = "EAID_" if dialect == "ea" else "_nd"
@@ -64,10 +64,13 @@ def component_model(dialect: str = "eclipse", *, node: bool = False, environment
                       f'          <manifestation xmi:type="uml:Manifestation" xmi:id="{p}Man" client="{p}Art" '
                       f'supplier="{p}PartP" utilizedElement="{p}PartP"/>\n'
                       f'        </nestedClassifier>\n') if nested_artifact else ""
-            dep = (f'        <deployment xmi:type="uml:Deployment" xmi:id="{p}Dep" client="{p}EE" supplier="{p}PartW" '
-                   f'deployedArtifact="{p}PartW"/>\n') if deploy else ""
             inner = (f'      <nestedNode xmi:type="uml:ExecutionEnvironment" xmi:id="{p}EE" name="{environment}">\n'
-                     f'{dep}{nested}      </nestedNode>\n')
+                     f'{nested}      </nestedNode>\n')
+            if deploy:
+                inner += (f'      <nestedNode xmi:type="uml:ExecutionEnvironment" xmi:id="{p}EE2" name="{deploy}">\n'
+                          f'        <deployment xmi:type="uml:Deployment" xmi:id="{p}Dep" client="{p}EE2" '
+                          f'supplier="{p}PartW" deployedArtifact="{p}PartW"/>\n'
+                          f'      </nestedNode>\n')
         body.append(f'    <packagedElement xmi:type="uml:Node" xmi:id="{p}PC" name="robotPC">\n{inner}    </packagedElement>\n')
         if bandwidth:
             body.append(f'    <packagedElement xmi:type="uml:Node" xmi:id="{p}PC2" name="otherPC"/>\n'

@@ -28,7 +28,8 @@
     Deployment of it on a Node (or in an execution environment of one)
     deploys the set on that host: it gives its members their host and, when
     they are deployed nowhere else, their process (the first execution
-    environment of the host);
+    environment of the host); an artifact nested in a node or an execution
+    environment is deployed there as by a Deployment;
   - a bus is a CommunicationPath (Bus tags kind, bandwidth).
   Errors: BND024 a thread nested in no process; BND025 an instance in two
   component sets; BND026 two processes of one host with one name.
@@ -161,6 +162,16 @@
         <xsl:for-each select="key('fp:deployment-by-deployed', @id, root($model))">
           <xsl:variable name="host" as="element(pim:node)?" select="fp:host-of(fp:deployment-ee(.), .., $hosts)"/>
           <pim:on deployment="{@id}">
+            <xsl:if test="$host"><xsl:attribute name="host" select="$host/@id"/></xsl:if>
+          </pim:on>
+        </xsl:for-each>
+        <!-- an artifact nested in a node (or an execution environment of
+             one) is deployed there: @deployment is the artifact's own id -->
+        <xsl:variable name="artifact" as="element(pim:artifact)" select="."/>
+        <xsl:for-each select="@node/key('fp:id', ., root($model))[self::pim:node]">
+          <xsl:variable name="host" as="element(pim:node)?"
+              select="fp:host-of(fp:owner-ee($artifact), ancestor-or-self::pim:node, $hosts)"/>
+          <pim:on deployment="{$artifact/@id}">
             <xsl:if test="$host"><xsl:attribute name="host" select="$host/@id"/></xsl:if>
           </pim:on>
         </xsl:for-each>
