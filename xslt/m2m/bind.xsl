@@ -140,6 +140,8 @@
   <xsl:include href="../common/indent.xsl"/>
   <xsl:include href="../common/naming.xsl"/>
   <xsl:include href="../common/profile.xsl"/>
+  <!-- values with units (period, memory, bandwidth) -->
+  <xsl:include href="../common/units.xsl"/>
   <!-- inherited attributes and operations (fp:attributes, fp:operations) -->
   <xsl:include href="common/data-types.xsl"/>
   <!-- bind, by concern -->

@@ -51,10 +51,18 @@
               address-source="{if (exists($ad)) then 'stereotype' else 'default'}"
               real-time="{fp:host-real-time($node)}" described="{exists(f:stereotype($node, 'Host'))}">
       <!-- the computational resources, where the model gives them (seed 002) -->
+      <!-- memory: a size with a unit or MiB (fp:mebibytes), in MiB -->
       <xsl:for-each select="'cores', 'memory'">
         <xsl:variable name="value" as="xs:string?" select="(fp:tag($node, 'Host', .), fp:conv($node, .))[normalize-space(.)][1]"/>
-        <xsl:if test="exists($value) and fp:integer($value, ., string($node/@id)) gt 0">
-          <xsl:attribute name="{.}" select="fp:integer($value, ., string($node/@id))"/>
+        <!-- an error points at the Host stereotype application, or the attribute -->
+        <xsl:variable name="holder" as="xs:string"
+            select="if (exists(fp:tag($node, 'Host', .)[normalize-space(.)])) then string(f:stereotype($node, 'Host')/@id)
+                    else (fp:conv-holder($node, .)[. ne ''], string($node/@id))[1]"/>
+        <xsl:variable name="number" as="xs:integer?"
+            select="if (empty($value)) then () else if (. eq 'memory') then fp:mebibytes($value, ., $holder)
+                    else fp:integer($value, ., $holder)"/>
+        <xsl:if test="exists($number) and $number gt 0">
+          <xsl:attribute name="{.}" select="$number"/>
         </xsl:if>
       </xsl:for-each>
     </pim:host>
@@ -311,7 +319,7 @@
     <xsl:variable name="cpu" as="xs:string+" select="fp:activity-value($stereo-on, 'cpuAffinity', $realization, $ee, 'cpuAffinity', '0')"/>
     <xsl:variable name="text" as="xs:string"
         select="replace(replace(upper-case(fp:literal(fp:strip($sched[1]))), '^(ORO_)?SCHED_', ''), '^OTHERS$', 'OTHER')"/>
-    <pim:activity period="{fp:number($period[1], 'period', fp:holder($period, $id))}" period-source="{$period[2]}"
+    <pim:activity period="{fp:quantity($period[1], 'period', 'period', fp:holder($period, $id))}" period-source="{$period[2]}"
                   priority="{fp:integer($prio[1], 'priority', fp:holder($prio, $id))}" priority-source="{$prio[2]}"
                   scheduler="{fp:enum($text, ('RT', 'OTHER'), 'scheduler', fp:holder($sched, $id))}" scheduler-source="{$sched[2]}"
                   cpu-affinity="{fp:integer($cpu[1], 'cpuAffinity', fp:holder($cpu, $id))}" cpu-affinity-source="{$cpu[2]}">

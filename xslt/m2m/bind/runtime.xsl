@@ -72,7 +72,7 @@
     <xsl:variable name="id" as="xs:string" select="string($thread/@id)"/>
     <xsl:variable name="sched" as="xs:string"
         select="replace(replace(upper-case(fp:literal(fp:strip($values?scheduler[1]))), '^(ORO_)?SCHED_', ''), '^OTHERS$', 'OTHER')"/>
-    <pim:activity period="{fp:number($values?period[1], 'period', fp:holder($values?period, $id))}" period-source="{$values?period[2]}"
+    <pim:activity period="{fp:quantity($values?period[1], 'period', 'period', fp:holder($values?period, $id))}" period-source="{$values?period[2]}"
                   priority="{fp:integer($values?priority[1], 'priority', fp:holder($values?priority, $id))}" priority-source="{$values?priority[2]}"
                   scheduler="{fp:enum($sched, ('RT', 'OTHER'), 'scheduler', fp:holder($values?scheduler, $id))}" scheduler-source="{$values?scheduler[2]}"
                   cpu-affinity="{fp:integer($values?cpuAffinity[1], 'cpuAffinity', fp:holder($values?cpuAffinity, $id))}" cpu-affinity-source="{$values?cpuAffinity[2]}">
@@ -223,8 +223,11 @@
       <xsl:variable name="bandwidth" as="xs:string?" select="fp:tag(., 'Bus', 'bandwidth')[normalize-space(.)]"/>
       <pim:link xmi-id="{@id}" name="{@name}"
                 kind="{if (exists($kind)) then fp:literal($kind) else if (exists(f:stereotype(., 'Bus'))) then fp:tag-default('Bus', 'kind') else 'unspecified'}">
-        <xsl:if test="exists($bandwidth) and fp:number($bandwidth, 'bandwidth', string(@id)) gt 0">
-          <xsl:attribute name="bandwidth" select="fp:number($bandwidth, 'bandwidth', string(@id))"/>
+        <!-- a bandwidth with a unit, or Mbit/s (fp:quantity), in Mbit/s -->
+        <xsl:variable name="mbits" as="xs:double?"
+            select="$bandwidth ! fp:quantity(., 'bandwidth', 'bandwidth', string(f:stereotype(current(), 'Bus')/@id))"/>
+        <xsl:if test="$mbits gt 0">
+          <xsl:attribute name="bandwidth" select="$mbits"/>
         </xsl:if>
         <xsl:for-each select="pim:end">
           <xsl:variable name="node" as="element(pim:node)?" select="key('fp:id', @node, root($model))[self::pim:node]"/>
