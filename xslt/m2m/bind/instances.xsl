@@ -6,7 +6,7 @@
   Writes:  parts of pim:binding (schemas/pim/1/binding.xsd), or values.
   Params:  none.  Keys: those of bind.xsl.
   Provides: fp:host, fp:default-host, fp:libraries, fp:instance, fp:instance-ee,
-           fp:owner-ee, fp:draws-no-process, fp:activity, fp:activity-value,
+           fp:owner-ee, fp:owner-nodes, fp:draws-no-process, fp:activity, fp:activity-value,
            fp:holder.
   Placement: an instance runs in the execution environment a Deployment
            gives it (of its part, component, enclosing composites, realizing
