@@ -780,9 +780,10 @@ def test_smoke_program(case: str, tmp_path: Path):
     assert p.returncode == 0, p.stdout
 
 
-@pytest.mark.parametrize("script", [CASES_DIR / "tuned" / "make.py", ROOT / "fixtures" / "ros" / "jointstate" / "make.py",
+@pytest.mark.parametrize("script", [CASES_DIR / "tuned" / "make.py", CASES_DIR / "undeployed" / "make.py",
+                                    ROOT / "fixtures" / "ros" / "jointstate" / "make.py",
                                     ROOT / "fixtures" / "ros" / "managed" / "make.py"],
-                         ids=["tuned", "jointstate", "managed"])
+                         ids=["tuned", "undeployed", "jointstate", "managed"])
 def test_derived_fixture_is_what_its_make_py_writes(script: Path):
     """A derived fixture is its source model with the edits its make.py lists, and nothing else."""
     import importlib.util

@@ -31,7 +31,9 @@
     deploys on its client, once (warning IMP117 names both); one whose
     client is no node is not imported (IMP113, report.xsl).
   - Artifact and DeploymentSpecification (nested artifacts too) ->
-    top-level pim:artifact; @file-name = fileName. Manifestation (owned by
+    top-level pim:artifact; @file-name = fileName; @node = the Node,
+    Device or ExecutionEnvironment that owns it, if any (bind deploys what
+    it manifests there). Manifestation (owned by
     the artifact, or anywhere with client = the artifact): element =
     utilizedElement, else supplier.
   - CommunicationPath -> pim:communication-path; its ends are the types of
@@ -113,6 +115,10 @@
       <xsl:if test="@fileName">
         <xsl:attribute name="file-name" select="@fileName"/>
       </xsl:if>
+      <!-- owned by a node: what it manifests runs there (bind) -->
+      <xsl:for-each select="ancestor::*[@x:type = $node-metas][1]">
+        <xsl:attribute name="node" select="fp:id(.)"/>
+      </xsl:for-each>
       <xsl:call-template name="tp:decoration">
         <xsl:with-param name="e" select="."/>
       </xsl:call-template>

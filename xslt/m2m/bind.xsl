@@ -91,7 +91,8 @@
     BND004  an interface used by a port carries no datum (no attribute)
     BND005  an interface used by a port carries several data (attributes)
     BND006  an instance is deployed to no execution environment and the model
-            has none or several
+            has several (a model with none runs every instance in a default
+            process: BND028)
     BND007  a connector joins no output port to an input port of the same
             data type
     BND008  an input port is fed by several connection points (connector mode)
@@ -112,6 +113,9 @@
     BND016  (warning) a property of a composite promotes the property of no part
     BND017  a property of a composite names the properties of several parts
     BND018  a part sets a value on a property its type does not have
+  Warnings: BND028 the model draws no execution environment: its instances
+  run in one default process per host (bind/instances.xsl), named once,
+  on the first instance, with how to model the platform.
   Of the hardware platform (bind/devices.xsl): BND010 a Robot tag dof that
   is no non-negative integer; warnings BND021 a fixed-size array that does
   not fit the degrees of freedom of the Device its instance drives (DoF
@@ -136,6 +140,8 @@
   <xsl:include href="../common/indent.xsl"/>
   <xsl:include href="../common/naming.xsl"/>
   <xsl:include href="../common/profile.xsl"/>
+  <!-- values with units (period, memory, bandwidth) -->
+  <xsl:include href="../common/units.xsl"/>
   <!-- inherited attributes and operations (fp:attributes, fp:operations) -->
   <xsl:include href="common/data-types.xsl"/>
   <!-- bind, by concern -->
@@ -312,6 +318,7 @@
          hide those of the others: each was caught, all are raised here -->
     <xsl:sequence select="f:fail-all($instance-tree/fp:error ! f:error-map(@description))"/>
     <xsl:variable name="instances" as="element(pim:instance)*" select="$instance-tree/pim:instance"/>
+    <xsl:sequence select="fp:warn-default-processes(., $instances)"/>
     <xsl:variable name="same-names" as="map(*)*">
       <xsl:for-each-group select="$instances" group-by="@name">
         <xsl:if test="count(current-group()) gt 1">
@@ -347,12 +354,33 @@
     <pim:binding instances-from="{if (exists($tops)) then 'parts' else 'components'}"
                  connections-from="{if (exists($uses)) then 'connectors' else 'interfaces'}">
       <xsl:sequence select="$hosts ! fp:host(., count($hosts))"/>
+      <xsl:sequence select="fp:default-host(.)[@xmi-id = $instances/@host]"/>
       <xsl:sequence select="fp:links(., $hosts), $processes, fp:component-sets(., $hosts)"/>
       <xsl:sequence select="fp:libraries(.)"/>
       <xsl:sequence select="$bound, $instance-tree/pim:composite-instance, fp:sequence(., $instances, $instance-tree)"/>
       <xsl:sequence select="fp:uniquely-named($raw-connections), fp:uniquely-named($calls)"/>
     </pim:binding>
   </xsl:template>
+
+  <!-- BND028 once, on the first instance, when the instances run in
+       default processes (the model draws no execution environment) -->
+  <xsl:function name="fp:warn-default-processes" as="empty-sequence()">
+    <xsl:param name="model" as="element(pim:model)"/>
+    <xsl:param name="instances" as="element(pim:instance)*"/>
+    <xsl:variable name="undrawn" as="element(pim:instance)*" select="$instances[empty(@middleware)]"/>
+    <xsl:variable name="hosts" as="xs:string*"
+        select="distinct-values($undrawn/@host) ! (if (. eq $model/@id) then 'localhost (127.0.0.1)'
+                                                   else '''' || key('fp:id', ., root($model))/@name || '''')"/>
+    <xsl:if test="exists($undrawn)">
+      <xsl:sequence select="f:warn('BND028', string($undrawn[1]/@xmi-id), 'the model draws no execution environment: its '
+          || count($undrawn) || ' component instance' || (if (count($undrawn) gt 1) then 's' else '') || ' ('''
+          || string-join($undrawn/@name, ''', ''') || ''') run in one default process on host ' || string-join($hosts, ', host ')
+          || ', on the middleware of the target generated; to model the platform, draw a Node (the host) with an'
+          || ' ExecutionEnvironment (a process: its «Middleware» kind, else its name, is the middleware) and a'
+          || ' Deployment of each part on it, or nest the components, or artifacts that manifest them, in the'
+          || ' ExecutionEnvironment (docs/profile.md, docs/deployment.md)')"/>
+    </xsl:if>
+  </xsl:function>
 
   <!-- $elements with their @name made unique among them (f:unique-names) -->
   <xsl:function name="fp:uniquely-named" as="element()*">
@@ -392,7 +420,10 @@
                      ! map { 'component': ., 'around': () }"/>
     <xsl:variable name="found" as="element(pim:node)*"
         select="$placed ! fp:instance-ee(?part, ?component, ?around, $ees)"/>
-    <xsl:sequence select="$placed[empty(fp:instance-ee(?part, ?component, ?around, $ees))]
+    <!-- a model that draws no execution environment runs its instances in
+         default processes (BND028, fp:warn-default-processes) -->
+    <xsl:sequence select="$placed[not(fp:draws-no-process(root($components[1])))]
+                                 [empty(fp:instance-ee(?part, ?component, ?around, $ees))]
                             ! fp:no-ee-problem(?part, ?component, $ees),
                           ($found ! fp:process-of(.))/. ! fp:middleware-problems(.)"/>
   </xsl:function>

@@ -5,9 +5,25 @@
   Reads:   the PIM (urn:robomda:pim:1) and the working trees of fp:binding.
   Writes:  parts of pim:binding (schemas/pim/1/binding.xsd), or values.
   Params:  none.  Keys: those of bind.xsl.
-  Provides: fp:host, fp:libraries, fp:instance, fp:instance-ee, fp:owner-ee,
-           fp:activity, fp:activity-value, fp:holder.
-  Errors:  BND006 an instance deployed to no execution environment; BND010.
+  Provides: fp:host, fp:default-host, fp:libraries, fp:instance, fp:instance-ee,
+           fp:owner-ee, fp:owner-nodes, fp:draws-no-process, fp:activity, fp:activity-value,
+           fp:holder.
+  Placement: an instance runs in the execution environment a Deployment
+           gives it (of its part, component, enclosing composites, realizing
+           class, or an artifact that manifests one of them), else the one
+           that owns its component in the XMI, else the one that owns an
+           artifact manifesting it (an Artifact nested in a Node or an
+           ExecutionEnvironment), else the model's only one. A model that
+           draws no execution environment at all (the first component model
+           a developer draws) runs every instance in one default process
+           per host (@default, no @middleware: each target deploys it on
+           its own middleware), on the Node its deployment or owner gives,
+           else the model's only Node, else a default host (localhost,
+           127.0.0.1); bind.xsl warns once (BND028). A model that draws
+           execution environments but deploys an instance in none keeps
+           BND006: the platform is drawn, the instance was left out of it.
+  Errors:  BND006 an instance deployed to no execution environment while the
+           model has several; BND010.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -35,10 +51,18 @@
               address-source="{if (exists($ad)) then 'stereotype' else 'default'}"
               real-time="{fp:host-real-time($node)}" described="{exists(f:stereotype($node, 'Host'))}">
       <!-- the computational resources, where the model gives them (seed 002) -->
+      <!-- memory: a size with a unit or MiB (fp:mebibytes), in MiB -->
       <xsl:for-each select="'cores', 'memory'">
         <xsl:variable name="value" as="xs:string?" select="(fp:tag($node, 'Host', .), fp:conv($node, .))[normalize-space(.)][1]"/>
-        <xsl:if test="exists($value) and fp:integer($value, ., string($node/@id)) gt 0">
-          <xsl:attribute name="{.}" select="fp:integer($value, ., string($node/@id))"/>
+        <!-- an error points at the Host stereotype application, or the attribute -->
+        <xsl:variable name="holder" as="xs:string"
+            select="if (exists(fp:tag($node, 'Host', .)[normalize-space(.)])) then string(f:stereotype($node, 'Host')/@id)
+                    else (fp:conv-holder($node, .)[. ne ''], string($node/@id))[1]"/>
+        <xsl:variable name="number" as="xs:integer?"
+            select="if (empty($value)) then () else if (. eq 'memory') then fp:mebibytes($value, ., $holder)
+                    else fp:integer($value, ., $holder)"/>
+        <xsl:if test="exists($number) and $number gt 0">
+          <xsl:attribute name="{.}" select="$number"/>
         </xsl:if>
       </xsl:for-each>
     </pim:host>
@@ -50,6 +74,15 @@
     <xsl:param name="node" as="element(pim:node)"/>
     <xsl:variable name="value" as="xs:string?" select="(fp:tag($node, 'Host', 'realTime'), fp:conv($node, 'realTime'))[normalize-space(.)][1]"/>
     <xsl:sequence select="exists($value) and fp:boolean($value, 'realTime', string($node/@id))"/>
+  </xsl:function>
+
+  <!-- the default host of the default process (BND028): the model draws
+       no execution environment and the instance no Node; its id is the
+       model's -->
+  <xsl:function name="fp:default-host" as="element(pim:host)">
+    <xsl:param name="model" as="element(pim:model)"/>
+    <pim:host xmi-id="{$model/@id}" name="localhost" hostname="localhost" hostname-source="default"
+              address="127.0.0.1" address-source="default" real-time="false" described="false" default="true"/>
   </xsl:function>
 
   <!-- ====================================================== libraries -->
@@ -90,8 +123,9 @@
     <xsl:variable name="around" as="xs:string*" select="tokenize($unit/@around)"/>
     <xsl:variable name="deployments" as="element(pim:deployment)*"
         select="fp:deployments-of($part, $component, $around, $realization-item)"/>
+    <xsl:variable name="ids" as="xs:string*" select="($part/@id, $component/@id, $around, $realization-item/@id) ! string(.)"/>
     <!-- the execution environment deployed to: a process, or a thread of one -->
-    <xsl:variable name="target" as="element(pim:node)?" select="fp:ee-of($deployments, $component, $ees)"/>
+    <xsl:variable name="target" as="element(pim:node)?" select="fp:ee-of($deployments, $component, $ids, $ees)"/>
     <xsl:variable name="thread" as="element(pim:node)?" select="$target[fp:is-thread(.)]"/>
     <xsl:variable name="ee" as="element(pim:node)?" select="fp:process-of($target)"/>
     <xsl:variable name="inst-id" as="xs:string" select="string(($part/@id, $component/@id)[1])"/>
@@ -101,11 +135,16 @@
           || ''' is in ' || count($sets) || ' component sets (''' || string-join($sets/@name, ''', ''')
           || '''): an instance belongs to at most one set')"/>
     </xsl:if>
-    <xsl:if test="empty($ee)">
+    <!-- no execution environment drawn at all: the default process -->
+    <xsl:variable name="undrawn" as="xs:boolean" select="empty($ee) and fp:draws-no-process($root)"/>
+    <xsl:if test="empty($ee) and not($undrawn)">
       <xsl:sequence select="f:fail-all(fp:no-ee-problem($part, $component, $ees))"/>
     </xsl:if>
     <xsl:variable name="host" as="element(pim:node)?"
-        select="(fp:host-of($ee, $deployments/.., $hosts), if (count($hosts) eq 1) then $hosts else ())[1]"/>
+        select="(fp:host-of($ee, $deployments/.., $hosts), fp:owner-nodes($ids, $root) intersect $hosts,
+                 if (count($hosts) eq 1) then $hosts else ())[1]"/>
+    <!-- the default process's id: its host's (a Node, else the model) -->
+    <xsl:variable name="host-id" as="xs:string?" select="($host/@id, $root/pim:model/@id[$undrawn])[1]"/>
     <pim:instance name="{($unit/@name, f:cpp-identifier(($part/@name[normalize-space(.)], $component/@name)[1]))[1]}"
                   xmi-id="{$inst-id}" component="{$component/@id}">
       <xsl:if test="$unit"><xsl:attribute name="composite" select="$unit/@top"/></xsl:if>
@@ -113,11 +152,11 @@
       <xsl:if test="$unit/@parent">
         <xsl:sequence select="$unit/(@path, @parent)"/>
       </xsl:if>
-      <xsl:if test="$host"><xsl:attribute name="host" select="$host/@id"/></xsl:if>
-      <xsl:attribute name="execution-environment" select="$ee/@id"/>
+      <xsl:if test="exists($host-id)"><xsl:attribute name="host" select="$host-id"/></xsl:if>
+      <xsl:attribute name="execution-environment" select="if ($undrawn) then $host-id else $ee/@id"/>
       <xsl:if test="$thread"><xsl:attribute name="thread" select="$thread/@id"/></xsl:if>
       <xsl:if test="$sets"><xsl:attribute name="set" select="$sets/@id"/></xsl:if>
-      <xsl:attribute name="middleware" select="fp:middleware($ee)"/>
+      <xsl:if test="exists($ee)"><xsl:attribute name="middleware" select="fp:middleware($ee)"/></xsl:if>
       <xsl:for-each select="fp:tag($ee, 'Middleware', 'version')[normalize-space(.)]">
         <xsl:attribute name="middleware-version" select="."/>
       </xsl:for-each>
@@ -166,38 +205,65 @@
     <xsl:param name="component" as="element(pim:component)"/>
     <xsl:param name="around" as="xs:string*"/>
     <xsl:param name="ees" as="element(pim:node)*"/>
-    <xsl:sequence select="fp:ee-of(fp:deployments-of($part, $component, $around, fp:realizing-class($component)), $component, $ees)"/>
+    <xsl:variable name="realization" as="element(pim:class)?" select="fp:realizing-class($component)"/>
+    <xsl:sequence select="fp:ee-of(fp:deployments-of($part, $component, $around, $realization), $component,
+                                   ($part/@id, $component/@id, $around, $realization/@id) ! string(.), $ees)"/>
   </xsl:function>
 
   <!-- the execution environment of an instance of $component placed by
        $deployments: the first they reach (deployments of component sets
        last: a set gives the host, its members may choose the process),
-       else the one that owns the component, else the model's only one -->
+       else the one that owns the component, else the one that owns an
+       artifact manifesting the instance ($ids: its part, component,
+       enclosing composites, realizing class), else the model's only one -->
   <xsl:function name="fp:ee-of" as="element(pim:node)?">
     <xsl:param name="deployments" as="element(pim:deployment)*"/>
     <xsl:param name="component" as="element(pim:component)"/>
+    <xsl:param name="ids" as="xs:string*"/>
     <xsl:param name="ees" as="element(pim:node)*"/>
     <xsl:sequence select="(($deployments[not(fp:set-deployment(.))], $deployments[fp:set-deployment(.)]) ! fp:deployment-ee(.),
-                           fp:owner-ee($component), if (count($ees) eq 1) then $ees else ())[1]"/>
+                           fp:owner-ee($component),
+                           key('fp:manifestation-by-element', $ids, root($component))/..[@node] ! fp:owner-ee(.),
+                           if (count($ees) eq 1) then $ees else ())[1]"/>
   </xsl:function>
 
-  <!-- the execution environment of the node that owns component $c in
-       the XMI (EA nests a component in the node it runs on): the node
+  <!-- the execution environment of the node that owns component or
+       artifact $e in the XMI (EA nests a component in the node it runs
+       on, an artifact in the environment it is deployed in): the node
        itself, else the first one nested in it -->
   <xsl:function name="fp:owner-ee" as="element(pim:node)?">
-    <xsl:param name="component" as="element(pim:component)"/>
-    <xsl:variable name="node" as="element(pim:node)?" select="$component/@node ! key('fp:id', ., root($component))[self::pim:node]"/>
+    <xsl:param name="e" as="element()"/>
+    <xsl:variable name="node" as="element(pim:node)?" select="$e/@node ! key('fp:id', ., root($e))[self::pim:node]"/>
     <xsl:sequence select="($node[@kind eq 'execution-environment'], $node//pim:node[@kind eq 'execution-environment'])[1]"/>
   </xsl:function>
 
-  <!-- BND006 about the instance of $part / $c -->
+  <!-- the nodes that own, in the XMI, the elements $ids (a component) or
+       an artifact that manifests one of them, and the nodes around those -->
+  <xsl:function name="fp:owner-nodes" as="element(pim:node)*">
+    <xsl:param name="ids" as="xs:string*"/>
+    <xsl:param name="root" as="document-node()"/>
+    <xsl:sequence select="(key('fp:id', $ids, $root), key('fp:manifestation-by-element', $ids, $root)/..)/@node
+                          ! key('fp:id', ., $root)[self::pim:node]/ancestor-or-self::pim:node"/>
+  </xsl:function>
+
+  <!-- true when the model draws no execution environment at all: its
+       instances run in default processes (BND028) -->
+  <xsl:function name="fp:draws-no-process" as="xs:boolean">
+    <xsl:param name="root" as="document-node()"/>
+    <xsl:sequence select="empty(fp:execution-environments($root))"/>
+  </xsl:function>
+
+  <!-- BND006 about the instance of $part / $c (the model draws
+       execution environments, $ees: one or several) -->
   <xsl:function name="fp:no-ee-problem" as="map(*)">
     <xsl:param name="part" as="element(pim:part)?"/>
     <xsl:param name="component" as="element(pim:component)"/>
     <xsl:param name="ees" as="element(pim:node)*"/>
     <xsl:sequence select="map { 'code': 'BND006', 'id': string(($part/@id, $component/@id)[1]), 'message':
         'component instance ''' || ($part/@name, $component/@name)[1] || ''' is deployed to no execution environment'
-        || ' and the model has ' || count($ees) || ' of them' }"/>
+        || ' and the model has ' || count($ees) || ' of them (' || string-join($ees ! ('''' || @name || ''''), ', ')
+        || '): draw a Deployment of the part (or of its component, or of an artifact that manifests it) on one,'
+        || ' or nest the component, or an artifact that manifests it, in one (docs/profile.md)' }"/>
   </xsl:function>
 
   <!-- the execution environment deployment $d reaches: its target, else
@@ -253,7 +319,7 @@
     <xsl:variable name="cpu" as="xs:string+" select="fp:activity-value($stereo-on, 'cpuAffinity', $realization, $ee, 'cpuAffinity', '0')"/>
     <xsl:variable name="text" as="xs:string"
         select="replace(replace(upper-case(fp:literal(fp:strip($sched[1]))), '^(ORO_)?SCHED_', ''), '^OTHERS$', 'OTHER')"/>
-    <pim:activity period="{fp:number($period[1], 'period', fp:holder($period, $id))}" period-source="{$period[2]}"
+    <pim:activity period="{fp:quantity($period[1], 'period', 'period', fp:holder($period, $id))}" period-source="{$period[2]}"
                   priority="{fp:integer($prio[1], 'priority', fp:holder($prio, $id))}" priority-source="{$prio[2]}"
                   scheduler="{fp:enum($text, ('RT', 'OTHER'), 'scheduler', fp:holder($sched, $id))}" scheduler-source="{$sched[2]}"
                   cpu-affinity="{fp:integer($cpu[1], 'cpuAffinity', fp:holder($cpu, $id))}" cpu-affinity-source="{$cpu[2]}">

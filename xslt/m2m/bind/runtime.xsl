@@ -14,6 +14,8 @@
   Model (docs/deployment.md):
   - a process is an ExecutionEnvironment that is not a thread (as before:
     the one instances are deployed to, its middleware theirs);
+  - a model that draws no execution environment: one default process
+    per host of its instances (@default, no @middleware; bind/instances.xsl);
   - a thread is an ExecutionEnvironment stereotyped Thread, or, unprofiled,
     one nested in another ExecutionEnvironment whose name ends in 'thread'
     (any case); its process is the nearest enclosing execution environment
@@ -26,7 +28,8 @@
     Deployment of it on a Node (or in an execution environment of one)
     deploys the set on that host: it gives its members their host and, when
     they are deployed nowhere else, their process (the first execution
-    environment of the host);
+    environment of the host); an artifact nested in a node or an execution
+    environment is deployed there as by a Deployment;
   - a bus is a CommunicationPath (Bus tags kind, bandwidth).
   Errors: BND024 a thread nested in no process; BND025 an instance in two
   component sets; BND026 two processes of one host with one name.
@@ -69,7 +72,7 @@
     <xsl:variable name="id" as="xs:string" select="string($thread/@id)"/>
     <xsl:variable name="sched" as="xs:string"
         select="replace(replace(upper-case(fp:literal(fp:strip($values?scheduler[1]))), '^(ORO_)?SCHED_', ''), '^OTHERS$', 'OTHER')"/>
-    <pim:activity period="{fp:number($values?period[1], 'period', fp:holder($values?period, $id))}" period-source="{$values?period[2]}"
+    <pim:activity period="{fp:quantity($values?period[1], 'period', 'period', fp:holder($values?period, $id))}" period-source="{$values?period[2]}"
                   priority="{fp:integer($values?priority[1], 'priority', fp:holder($values?priority, $id))}" priority-source="{$values?priority[2]}"
                   scheduler="{fp:enum($sched, ('RT', 'OTHER'), 'scheduler', fp:holder($values?scheduler, $id))}" scheduler-source="{$values?scheduler[2]}"
                   cpu-affinity="{fp:integer($values?cpuAffinity[1], 'cpuAffinity', fp:holder($values?cpuAffinity, $id))}" cpu-affinity-source="{$values?cpuAffinity[2]}">
@@ -162,6 +165,16 @@
             <xsl:if test="$host"><xsl:attribute name="host" select="$host/@id"/></xsl:if>
           </pim:on>
         </xsl:for-each>
+        <!-- an artifact nested in a node (or an execution environment of
+             one) is deployed there: @deployment is the artifact's own id -->
+        <xsl:variable name="artifact" as="element(pim:artifact)" select="."/>
+        <xsl:for-each select="@node/key('fp:id', ., root($model))[self::pim:node]">
+          <xsl:variable name="host" as="element(pim:node)?"
+              select="fp:host-of(fp:owner-ee($artifact), ancestor-or-self::pim:node, $hosts)"/>
+          <pim:on deployment="{$artifact/@id}">
+            <xsl:if test="$host"><xsl:attribute name="host" select="$host/@id"/></xsl:if>
+          </pim:on>
+        </xsl:for-each>
       </pim:component-set>
     </xsl:for-each>
   </xsl:function>
@@ -188,6 +201,17 @@
         </xsl:for-each>
       </pim:process>
     </xsl:for-each>
+    <!-- the default processes of a model that draws no execution
+         environment, one per host (BND028): no middleware, each target
+         deploys them on its own; named after the model (with the host's
+         name when there are several) -->
+    <xsl:variable name="undrawn" as="element(pim:instance)*" select="$instances[empty(@middleware)]"/>
+    <xsl:variable name="several" as="xs:boolean" select="count(distinct-values($undrawn/@host)) gt 1"/>
+    <xsl:for-each-group select="$undrawn" group-by="string(@host)">
+      <pim:process xmi-id="{current-grouping-key()}"
+                   name="{f:cpp-identifier(string-join(($model/@name, key('fp:id', current-grouping-key(), $root)[self::pim:node]/@name[$several]), '_'))}"
+                   host="{current-grouping-key()}" managed="false" default="true"/>
+    </xsl:for-each-group>
   </xsl:function>
 
   <!-- ========================================================== buses -->
@@ -199,8 +223,11 @@
       <xsl:variable name="bandwidth" as="xs:string?" select="fp:tag(., 'Bus', 'bandwidth')[normalize-space(.)]"/>
       <pim:link xmi-id="{@id}" name="{@name}"
                 kind="{if (exists($kind)) then fp:literal($kind) else if (exists(f:stereotype(., 'Bus'))) then fp:tag-default('Bus', 'kind') else 'unspecified'}">
-        <xsl:if test="exists($bandwidth) and fp:number($bandwidth, 'bandwidth', string(@id)) gt 0">
-          <xsl:attribute name="bandwidth" select="fp:number($bandwidth, 'bandwidth', string(@id))"/>
+        <!-- a bandwidth with a unit, or Mbit/s (fp:quantity), in Mbit/s -->
+        <xsl:variable name="mbits" as="xs:double?"
+            select="$bandwidth ! fp:quantity(., 'bandwidth', 'bandwidth', string(f:stereotype(current(), 'Bus')/@id))"/>
+        <xsl:if test="$mbits gt 0">
+          <xsl:attribute name="bandwidth" select="$mbits"/>
         </xsl:if>
         <xsl:for-each select="pim:end">
           <xsl:variable name="node" as="element(pim:node)?" select="key('fp:id', @node, root($model))[self::pim:node]"/>

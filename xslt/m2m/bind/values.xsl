@@ -6,9 +6,13 @@
   Writes:  parts of pim:binding (schemas/pim/1/binding.xsd), or values.
   Params:  none.  Keys: those of bind.xsl.
   Provides: fp:tag, fp:first-tag, fp:conv, fp:conv-holder, fp:literal, fp:strip, fp:number,
-           fp:integer, fp:boolean, fp:enum.
-  Errors:  BND010 a value that is not a number, an integer, a boolean or one of
-           the allowed names.
+           fp:integer, fp:quantity, fp:mebibytes, fp:boolean, fp:enum.
+  Values with a dimension (period, memory, bandwidth) are read by
+  fp:quantity only, through f:quantity (xslt/common/units.xsl): a number in
+  the canonical unit, or a number with a unit.
+  Errors:  BND010 a value that is not a number, an integer, a boolean, one of
+           the allowed names, or a quantity (the message shows the accepted
+           forms).
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -89,6 +93,32 @@
     <xsl:variable name="deployment" as="xs:double" select="fp:number($value, $what, $id)"/>
     <xsl:sequence select="if ($deployment eq floor($deployment)) then xs:integer($deployment)
         else f:fail('BND010', $id, $what || ': ''' || $value || ''' is not an integer')"/>
+  </xsl:function>
+
+  <!-- a value with dimension $dimension (f:quantity: period, memory,
+       bandwidth) in its canonical unit (s, MiB, Mbit/s); BND010 shows the
+       accepted forms -->
+  <xsl:function name="fp:quantity" as="xs:double">
+    <xsl:param name="value" as="xs:string"/>
+    <xsl:param name="what" as="xs:string"/>
+    <xsl:param name="dimension" as="xs:string"/>
+    <xsl:param name="id" as="xs:string?"/>
+    <xsl:sequence select="(f:quantity(fp:strip($value), $dimension),
+        f:fail('BND010', $id, $what || ': ''' || $value || ''' is no ' || f:quantity-noun($dimension)
+               || ' robomda reads: write ' || f:quantity-forms($dimension)))[1]"/>
+  </xsl:function>
+
+  <!-- a memory size (fp:quantity) in whole MiB, rounded to the nearest;
+       BND010 for a size above 0 that rounds to 0 -->
+  <xsl:function name="fp:mebibytes" as="xs:integer">
+    <xsl:param name="value" as="xs:string"/>
+    <xsl:param name="what" as="xs:string"/>
+    <xsl:param name="id" as="xs:string?"/>
+    <xsl:variable name="mib" as="xs:double" select="fp:quantity($value, $what, 'memory', $id)"/>
+    <xsl:sequence select="if ($mib gt 0 and round($mib) eq 0)
+        then f:fail('BND010', $id, $what || ': ''' || $value || ''' is less than 1 MiB: robomda counts memory in MiB; write '
+                    || f:quantity-forms('memory'))
+        else xs:integer(round($mib))"/>
   </xsl:function>
 
   <xsl:function name="fp:boolean" as="xs:boolean">

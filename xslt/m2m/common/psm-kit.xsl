@@ -82,7 +82,10 @@
   <!-- true when $instance goes into the package of the target for
        $middleware (OROCOS, ROS, ROS2): it is deployed on that middleware,
        or no instance of the model is (the target then takes them all: the
-       same model runs on another middleware, and the target says so) -->
+       same model runs on another middleware, and the target says so; an
+       instance of a model that draws no execution environment has no
+       middleware, and every target takes it without a word: bind said so,
+       BND028) -->
   <xsl:function name="fp:on-target" as="xs:boolean">
     <xsl:param name="instance" as="element(pim:instance)"/>
     <xsl:param name="middleware" as="xs:string"/>

@@ -713,7 +713,9 @@
       </xsl:if>
       <xsl:attribute name="executable" select="$node/@executable"/>
       <xsl:attribute name="host" select="$host-keys(string($instance/@host))"/>
-      <xsl:attribute name="middleware" select="$instance/@middleware"/>
+      <!-- an instance of the default process (the model draws none) runs
+           on the target's middleware -->
+      <xsl:attribute name="middleware" select="($instance/@middleware, $fp:target-middleware)[1]"/>
       <!-- its process (a container), component set and thread, by name -->
       <xsl:for-each select="key('fp:process', string($instance/@execution-environment), root($instance))">
         <xsl:attribute name="process" select="@name"/>
