@@ -12,7 +12,8 @@
              memory, real-time kernel), holding its processes;
            - each process as a node stereotyped with its middleware
              (<<OROCOS>>, <<ROS>>, <<ROS2>> ...; "managed" for lifecycle
-             nodes), holding its threads (frames <<thread>>, with their
+             nodes; a model's default process, which has none, <<process,
+             middleware of the target>>), holding its threads (frames <<thread>>, with their
              period and priority) and its instances;
            - each instance as a component "name : ComponentType", in its
              thread, else its process;
@@ -83,7 +84,7 @@
         $process/pim:thread ! fp:thread-frame(.),
         $members[not(@thread = $process/pim:thread/@xmi-id)] ! fp:instance-box(.))"/>
     <xsl:variable name="head" as="xs:string" select="'node ' || fp:puml-quoted($process/@name) || ' &lt;&lt;'
-        || fp:puml-label(string-join(($process/@middleware, distinct-values($members/@middleware-version),
+        || fp:puml-label(string-join((($process/@middleware/string(), 'process, middleware of the target')[1], distinct-values($members/@middleware-version),
                                       'managed'[$process/@managed = 'true']), ' ')) || '&gt;&gt; as '
         || fp:puml-alias('e', string($process/@xmi-id))"/>
     <xsl:sequence select="if (empty($inside)) then $head else ($head || ' {', fp:indent(2, $inside), '}')"/>
