@@ -254,8 +254,9 @@
         select="distinct-values($hrefs ! fp:href-doc(.))[exists(fp:model-file-doc(.))]"/>
     <xsl:variable name="base" as="xs:string" select="string(base-uri($doc))"/>
     <xsl:for-each-group select="if (empty($files)) then () else $hrefs[fp:href-doc(.) = $files][fp:model-file-ref(.)]"
-                        group-by="fp:ref-uri(fp:model-file-ref(.), $base, $sandbox)">
-      <xsl:variable name="uri" as="xs:string" select="current-grouping-key()"/>
+                        group-by="(fp:ref-uri(fp:model-file-ref(.), $base, $sandbox)[. ne ''], fp:model-file-ref(.))[1]">
+      <!-- '' for a platform:/resource/ URI found nowhere (grouped by itself) -->
+      <xsl:variable name="uri" as="xs:string" select="fp:ref-uri(fp:model-file-ref(.), $base, $sandbox)"/>
       <xsl:variable name="who" as="element()?" select="fp:referrer(.)"/>
       <xsl:variable name="id" as="xs:string" select="string($who/@*[local-name() eq 'id'][fp:is-xmi-ns(namespace-uri())])"/>
       <xsl:variable name="what" as="xs:string"
