@@ -220,3 +220,156 @@ def test_a_file_name_with_a_space_url_encoded_or_not(tmp_path: Path, written: st
     assert "../services/joint services.servicedef.uml" in _files(pim)
     assert _connected(pim) == CONNECTIONS
     assert "joint services.servicedef.uml" in {p.name for p in linked_files(model)}
+
+
+# ============================================== class 3: ids are per file
+def _shared_ids(folder: Path) -> Path:
+    """The split fixture in ``folder`` with the three component files using one set of xmi:ids (as files
+    copied from one template do) and the services file the system model's id for its model."""
+    shutil.copytree(SPLIT, folder, ignore=shutil.ignore_patterns("expected"))
+    for path in [folder / "model.xmi", *(folder / "components").glob("*.uml")]:
+        text = path.read_text(encoding="utf-8")
+        for prefix in ("_spT", "_spP", "_spR"):
+            text = text.replace(prefix, "_spX")
+        path.write_text(text, encoding="utf-8")
+    services = folder / "services" / "joint.servicedef.uml"
+    services.write_text(services.read_text(encoding="utf-8").replace('xmi:id="_spS0model"', 'xmi:id="_spY0model"'),
+                        encoding="utf-8")
+    return folder / "model.xmi"
+
+
+def test_two_files_may_use_one_xmi_id(tmp_path: Path) -> None:
+    model = _shared_ids(tmp_path / "split")
+    text = import_model(model)
+    pim = etree.fromstring(text.encode())
+    parts = {p.get("name"): (p.get("type"), p.get("type-name")) for p in pim.iter(f"{PIM}part")}
+    assert parts == {"trajectory": ("components/TrajectoryGenerator.compdef.uml#_spXk", "TrajectoryGenerator"),
+                     "controller": ("components/PIDController.compdef.uml#_spXk", "PIDController"),
+                     "robot": ("components/RobotInterface.compdef.uml#_spXk", "RobotInterface")}
+    # each reference inside a file resolved in that file: every port of every component keeps its interface
+    ports = {(c.get("name"), p.get("name")): p.get("type-name")
+             for c in pim.iter(f"{PIM}component") for p in c.iter(f"{PIM}port")}
+    original = etree.fromstring(import_model(SPLIT / "model.xmi").encode())
+    assert ports == {(c.get("name"), p.get("name")): p.get("type-name")
+                     for c in original.iter(f"{PIM}component") for p in c.iter(f"{PIM}port")}
+    assert _connected(pim) == CONNECTIONS
+    # the model file's own element with an id another file uses is qualified too
+    assert pim.get("id") == "model.xmi#_spY0model"
+    ids = [e.get("id") for e in pim.iter() if e.get("id")]
+    assert len(ids) == len(set(ids))
+    assert import_model(model) == text  # deterministic
+
+
+def test_a_model_with_shared_ids_generates_what_the_model_without_does(tmp_path: Path) -> None:
+    from robomda.api import generate
+    for side in ("a", "b"):
+        (tmp_path / side).mkdir()
+        (tmp_path / side / "pid").symlink_to(ROOT / "fixtures" / "cases" / "pid")
+    shutil.copytree(SPLIT, tmp_path / "a" / "split", ignore=shutil.ignore_patterns("expected"))
+    shared = _shared_ids(tmp_path / "b" / "split")
+    for target in ("orocos", "ros1"):
+        done = [generate(m, m.parent.parent / f"out-{target}", target)
+                for m in (tmp_path / "a" / "split" / "model.xmi", shared)]
+        assert [w.code for w in done[0].warnings] == [w.code for w in done[1].warnings]
+        files = [{p.relative_to(d): p.read_bytes() for p in d.rglob("*") if p.is_file() and ".robomda" not in p.parts}
+                 for d in (tmp_path / "a" / f"out-{target}", tmp_path / "b" / f"out-{target}")]
+        assert files[0] and files[0] == files[1]
+
+
+def test_a_duplicate_id_within_one_file_is_still_an_error_located_there(tmp_path: Path) -> None:
+    model = _shared_ids(tmp_path / "split")
+    lib = model.parent / "components" / "PIDController.compdef.uml"
+    text = lib.read_text(encoding="utf-8")
+    lib.write_text(text.replace('xmi:id="_spXa2v"', 'xmi:id="_spXa1v"'), encoding="utf-8")
+    found = _refused(model)
+    assert [d.code for d in found] == ["IMP004"]
+    assert "_spXa1v" in found[0].xmi_id and "on 2 elements" in found[0].message
+    assert found[0].file.endswith("PIDController.compdef.uml") and found[0].line
+
+
+def test_an_error_on_an_element_with_a_shared_id_is_located_in_its_file(tmp_path: Path, capsys) -> None:
+    model = _shared_ids(tmp_path / "split")
+    (model.parent.parent / "pid").symlink_to(ROOT / "fixtures" / "cases" / "pid")
+    lib = model.parent / "components" / "RobotInterface.compdef.uml"
+    text = lib.read_text(encoding="utf-8")
+    # a negative period, on an attribute whose id the other component files use too
+    assert text.count('value="0.01"') == 1
+    lib.write_text(text.replace('value="0.01"', 'value="-0.01"'), encoding="utf-8")
+    assert main(["check", str(model)]) == 1
+    err = capsys.readouterr().err
+    line = next(line for line in err.splitlines() if "[BND010]" in line)
+    assert line.startswith(str(lib)), line
+    assert "RobotInterface.compdef.uml#_spX" in line
+
+
+# ================================== class 8: MagicDraw used projects
+MD_HEAD = ('<?xml version="1.0" encoding="UTF-8"?>\n'
+           '<xmi:XMI xmi:version="2.5" xmlns:xmi="http://www.omg.org/spec/XMI/20131001" '
+           'xmlns:uml="http://www.omg.org/spec/UML/20131001">\n'
+           '  <xmi:Documentation><xmi:exporter>MagicDraw Clean XMI Exporter</xmi:exporter></xmi:Documentation>\n')
+
+
+def _md_ref(tag: str, href: str, path: str, meta: str = "Class") -> str:
+    """A MagicDraw reference into another project: the href and, in an extension, the referent's path."""
+    return (f'<{tag} href="{href}"><xmi:Extension extender="MagicDraw UML 2021x"><referenceExtension '
+            f'referentPath="{path}" referentType="{meta}"/></xmi:Extension></{tag}>')
+
+
+def magicdraw_model(folder: Path, project: str) -> Path:
+    """A MagicDraw model whose types and general live in used projects: ``project`` (a PROJECT-<id> href,
+    with or without local:/) holds Pose, Lib.mdzip the general Base, the UML Standard Profile int."""
+    body = (f'  <uml:Model xmi:type="uml:Model" xmi:id="_m" name="robot">\n'
+            f'    <packagedElement xmi:type="uml:Class" xmi:id="_c" name="Controller">\n'
+            f'      <generalization xmi:type="uml:Generalization" xmi:id="_g">'
+            f'{_md_ref("general", "Lib.mdzip#_base", "Lib::Base")}</generalization>\n'
+            f'      <ownedAttribute xmi:type="uml:Property" xmi:id="_a1" name="pose">'
+            f'{_md_ref("type", project + "?resource=com.nomagic.magicdraw.uml_umodel.shared_umodel#_pose", "Types::Pose")}'
+            f'</ownedAttribute>\n'
+            f'      <ownedAttribute xmi:type="uml:Property" xmi:id="_a2" name="count">'
+            f'{_md_ref("type", "local:/PROJECT-877ab?resource=com.nomagic.magicdraw.uml_umodel.shared_umodel#_int", "UML Standard Profile::MagicDraw Profile::datatypes::int", "DataType")}'
+            f'</ownedAttribute>\n'
+            f'    </packagedElement>\n'
+            f'    <packagedElement xmi:type="uml:Component" xmi:id="_k" name="Ctrl"/>\n'
+            f'  </uml:Model>\n</xmi:XMI>\n')
+    folder.mkdir(parents=True, exist_ok=True)
+    path = folder / "model.xmi"
+    path.write_text(MD_HEAD + body, encoding="utf-8")
+    return path
+
+
+@pytest.mark.parametrize("project", ["PROJECT-4f1e2d", "local:/PROJECT-4f1e2d"])
+def test_magicdraw_used_projects_are_external_with_one_warning_each(tmp_path: Path, project: str) -> None:
+    model = magicdraw_model(tmp_path / "md", project)
+    warnings: list[Diagnostic] = []
+    pim = _pim(model, warnings=warnings)
+    assert not [w for w in warnings if w.code in ("IMP040", "IMP041")]
+    used = [w for w in warnings if w.code == "IMP049"]
+    assert sorted(w.message.split("used project '")[1].split("'")[0] for w in used) == ["Lib.mdzip", "PROJECT-4f1e2d"]
+    pose = next(w for w in used if "PROJECT-4f1e2d" in w.message)
+    assert "type 'Pose'" in pose.message and pose.xmi_id == "_a1" and pose.line and pose.file == str(model)
+    assert "general 'Base'" in next(w for w in used if "Lib.mdzip" in w.message).message
+    # the primitive of the standard profile's used project is no loss: no warning names it
+    assert not [w for w in used if "PROJECT-877ab" in w.message]
+    attrs = {a.get("name"): a for a in pim.iter(f"{PIM}attribute")}
+    assert attrs["pose"].get("type-name") == "Pose" and attrs["pose"].get("type-library") == "external"
+    assert attrs["count"].get("primitive") == "int32"
+    assert linked_files(model) == []
+
+
+def _codes(argv: list[str], capsys) -> tuple[int, list[str]]:
+    code = main(argv)
+    err = capsys.readouterr().err
+    assert "Traceback" not in err and "INTERNAL" not in err
+    return code, sorted(line.split("[")[1].split("]")[0] for line in err.splitlines() if "[IMP" in line)
+
+
+@pytest.mark.parametrize("case", ["refused", "magicdraw"])
+def test_import_check_and_generate_agree(tmp_path: Path, capsys, case: str) -> None:
+    model = robotics_layout(tmp_path, None) if case == "refused" else magicdraw_model(tmp_path / "md", "PROJECT-4f1e2d")
+    found = [_codes([command, str(model), "-o", str(tmp_path / f"out-{command}")] if command != "check"
+                    else [command, str(model)], capsys) for command in ("import", "check", "generate")]
+    imp = found[0][1]
+    assert imp == (["IMP040"] * 3 if case == "refused" else ["IMP049", "IMP049"])
+    assert all(codes == imp for _, codes in found), found
+    if case == "refused":
+        assert {code for code, _ in found} == {1}

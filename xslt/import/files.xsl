@@ -376,7 +376,7 @@
     <!-- the ids that more than one file uses -->
     <xsl:variable name="shared" as="map(xs:string, xs:boolean)">
       <xsl:map>
-        <xsl:for-each-group select="($norm, $linked) ! distinct-values(.//@x:id)" group-by=".">
+        <xsl:for-each-group select="($norm, $linked) ! distinct-values(.//@x:id ! string(.))" group-by=".">
           <xsl:if test="count(current-group()) gt 1">
             <xsl:map-entry key="current-grouping-key()" select="true()"/>
           </xsl:if>
