@@ -373,3 +373,20 @@ def test_import_check_and_generate_agree(tmp_path: Path, capsys, case: str) -> N
     assert all(codes == imp for _, codes in found), found
     if case == "refused":
         assert {code for code, _ in found} == {1}
+
+
+def test_batch_over_a_workspace_generates_the_system_and_reads_the_sibling_project_as_its_library(
+        tmp_path: Path) -> None:
+    from robomda.batch import run_batch
+    from robomda.inputs import model_files
+
+    model = workspace_layout(tmp_path, "platform:/resource/Lib/components/")
+    (tmp_path / "ws" / "pid").symlink_to(ROOT / "fixtures" / "cases" / "pid")
+    done = run_batch(tmp_path / "ws" / "App", tmp_path / "out", "ros1", jobs=1)
+    assert {r.model: r.status for r in done.results} == {"models/model.xmi": "ok"}
+    # watch stats (and batch hashes) the sibling project's files the model reads
+    assert {p.name for p in model_files(model)} >= {f"{c}.compdef.uml" for c in COMPONENTS}
+    library = tmp_path / "ws" / "Lib" / "components" / "PIDController.compdef.uml"
+    library.write_text(library.read_text(encoding="utf-8").replace('value="20.0"', 'value="25.0"'), encoding="utf-8")
+    again = run_batch(tmp_path / "ws" / "App", tmp_path / "out", "ros1", jobs=1)
+    assert {r.model: r.status for r in again.results} == {"models/model.xmi": "ok"}
