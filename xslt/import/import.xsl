@@ -81,7 +81,9 @@
   Warnings (f:warn) about what the import leaves out: IMP030, IMP101-IMP103
   (application.xsl), IMP110-IMP116 (report.xsl), IMP048 (urdf.xsl: a
   Robot's rootLink / tipLink without urdf), IMP117 (platform.xsl: a
-  deployment owned by a node whose client is another); docs/errors.md. Every
+  deployment owned by a node whose client is another), IMP041 and IMP049
+  (files.xsl: a model file that is not there, references into a MagicDraw
+  used project); docs/errors.md. Every
   duplicate id and dangling reference is reported (f:fail-all).
 -->
 <xsl:stylesheet version="3.0"

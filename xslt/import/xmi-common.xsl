@@ -21,7 +21,9 @@
              patterns run only for other URIs;
            - fp:href-types: what each distinct type href says (library,
              name, primitive kind), computed once per document;
-           - the keys (every id look-up goes through xsl:key);
+           - the keys (every id look-up goes through xsl:key; ids are
+             per file: an xmi:id several files of a model use is "FILE#id",
+             x:qid of files.xsl, read by fp:id, fp:ref-id and the keys);
            - functions for ids, metaclasses, references, qualified names,
              value specifications, multiplicities, types and comments.
   Params:  none.
