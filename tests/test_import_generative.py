@@ -430,3 +430,100 @@ def test_random_models_never_crash_and_drop_nothing_in_silence(model: tuple[str,
         else:
             assert done.exit_code in (0, 1), "\n".join(d.format() for d in done.diagnostics) + "\n" + text
             assert not [d for d in done.diagnostics if d.code in ("INTERNAL", "SCHEMA")], text
+
+
+# ============================================ several files sharing ids
+# issue 30, class 3: EMF ids are unique within a file only ("file#id" is the
+# identity), so two files of one model may use the same xmi:id. A system
+# model and two component files draw their ids from one small pool: they
+# share ids with each other and with the model, and references inside each
+# file (a port's type, a realization, a comment) and across files (parts,
+# connector ends: hrefs) must reach the right file's element. Sometimes one
+# file repeats an id itself: that is still IMP004. Self-contained: its own
+# builder and test, its own (smaller) example count.
+SHARED_POOL = [f"_s{i}" for i in range(7)]
+SHARED_EXAMPLES = max(1, EXAMPLES // 4)
+
+
+def _shared_component_file(ns: dict, name: str, ids: list[str], dup: bool) -> str:
+    """Component file ``name``.uml: interface I<name>, class Cls<name> realizing component Comp<name>, whose
+    port is typed by I<name>, all by ids of this file (``ids``: distinct unless ``dup``)."""
+    m, i, a, c, k, p, r = ids
+    if dup:  # the interface's attribute repeats the class's id
+        a = c
+    return (f'<?xml version="1.0" encoding="UTF-8"?>\n<xmi:XMI xmi:version="{ns["version"]}" xmlns:xmi="{ns["xmi"]}" '
+            f'xmlns:uml="{ns["uml"]}"><uml:Model xmi:type="uml:Model" xmi:id="{m}" name="{name}_def">'
+            f'<packagedElement xmi:type="uml:Interface" xmi:id="{i}" name="I{name}">'
+            f'<ownedAttribute xmi:type="uml:Property" xmi:id="{a}" name="v{name}"><type xmi:type="uml:PrimitiveType" '
+            f'href="pathmap://UML_LIBRARIES/UMLPrimitiveTypes.library.uml#Real"/></ownedAttribute></packagedElement>'
+            f'<packagedElement xmi:type="uml:Class" xmi:id="{c}" name="Cls{name}"/>'
+            f'<packagedElement xmi:type="uml:Component" xmi:id="{k}" name="Comp{name}">'
+            f'<ownedAttribute xmi:type="uml:Port" xmi:id="{p}" name="port{name}" type="{i}" aggregation="composite"/>'
+            f'<realization xmi:type="uml:ComponentRealization" xmi:id="{r}" client="{k}" supplier="{c}" '
+            f'realizingClassifier="{c}"/>'
+            f'<ownedComment xmi:type="uml:Comment" xmi:id="{r}c" annotatedElement="{k}" body="about Comp{name}"/>'
+            f'</packagedElement></uml:Model></xmi:XMI>\n')
+
+
+@st.composite
+def shared_id_models(draw) -> tuple[dict[str, str], dict[str, list[str]], str | None]:
+    """(file name -> text, file -> its ids, the file that repeats an id or None)."""
+    ns = DIALECTS[draw(st.sampled_from(["eclipse", "magicdraw"]))]
+    ids = {f: list(draw(st.permutations(SHARED_POOL))) for f in ("model.uml", "A.uml", "B.uml")}
+    dup = draw(st.sampled_from([None, None, None, "A.uml"]))
+    files = {f"{n}.uml": _shared_component_file(ns, n, ids[f"{n}.uml"], dup == f"{n}.uml") for n in ("A", "B")}
+    m, sysk, pa, pb, con, ea, eb = ids["model.uml"]
+    ka, kb = ids["A.uml"][4], ids["B.uml"][4]
+    porta, portb = ids["A.uml"][5], ids["B.uml"][5]
+    files["model.uml"] = (
+        f'<?xml version="1.0" encoding="UTF-8"?>\n<xmi:XMI xmi:version="{ns["version"]}" xmlns:xmi="{ns["xmi"]}" '
+        f'xmlns:uml="{ns["uml"]}"><uml:Model xmi:type="uml:Model" xmi:id="{m}" name="system">'
+        f'<packagedElement xmi:type="uml:Component" xmi:id="{sysk}" name="System">'
+        f'<ownedAttribute xmi:type="uml:Property" xmi:id="{pa}" name="a" aggregation="composite">'
+        f'<type xmi:type="uml:Component" href="A.uml#{ka}"/></ownedAttribute>'
+        f'<ownedAttribute xmi:type="uml:Property" xmi:id="{pb}" name="b" aggregation="composite">'
+        f'<type xmi:type="uml:Component" href="B.uml#{kb}"/></ownedAttribute>'
+        f'<ownedConnector xmi:type="uml:Connector" xmi:id="{con}" name="link">'
+        f'<end xmi:type="uml:ConnectorEnd" xmi:id="{ea}" partWithPort="{pa}"><role xmi:type="uml:Port" href="A.uml#{porta}"/></end>'
+        f'<end xmi:type="uml:ConnectorEnd" xmi:id="{eb}" partWithPort="{pb}"><role xmi:type="uml:Port" href="B.uml#{portb}"/></end>'
+        f'</ownedConnector></packagedElement></uml:Model></xmi:XMI>\n')
+    return files, ids, dup
+
+
+@settings(max_examples=SHARED_EXAMPLES, derandomize=not RANDOM, deadline=None, database=None,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+@given(shared_id_models())
+def test_files_that_share_ids_resolve_each_reference_in_its_own_file(model) -> None:
+    from lxml import etree
+
+    files, ids, dup = model
+    pim_ns = "{urn:robomda:pim:1}"
+    with tempfile.TemporaryDirectory() as tmp:
+        for name, text in files.items():
+            (Path(tmp) / name).write_text(text, encoding="utf-8")
+        path = Path(tmp) / "model.uml"
+        code, pim_text, messages = import_run(path)
+        codes = {m.split(":", 1)[0] for m in messages}
+        assert codes <= DOCUMENTED and "INTERNAL" not in codes, messages
+        if dup:
+            assert code == 1 and codes == {"IMP004"}, messages
+            assert any(f"A.uml#{ids['A.uml'][3]}" in m or ids["A.uml"][3] in m for m in messages), messages
+            return
+        assert code == 0, "\n".join(messages) + "\n" + "\n".join(files.values())
+        assert not dropped(path, pim_text, messages), messages
+        assert import_run(path)[1] == pim_text  # deterministic
+        pim = etree.fromstring(pim_text.encode("utf-8"))
+        all_ids = [e.get("id") for e in pim.iter() if e.get("id")]
+        assert len(all_ids) == len(set(all_ids)), all_ids
+        by_id = {e.get("id"): e for e in pim.iter() if e.get("id")}
+        parts = {p.get("name"): by_id[p.get("type")].get("name") for p in pim.iter(f"{pim_ns}part")}
+        assert parts == {"a": "CompA", "b": "CompB"}
+        for name in ("A", "B"):
+            comp = next(c for c in pim.iter(f"{pim_ns}component") if c.get("name") == f"Comp{name}")
+            port = comp.find(f"{pim_ns}port")
+            assert port.get("type-name") == f"I{name}" and by_id[port.get("type")].get("name") == f"I{name}"
+            assert f"about Comp{name}" in etree.tostring(comp, encoding="unicode")
+            assert [by_id[r.get("classifier")].get("name") for r in comp.iter(f"{pim_ns}realization")] == [f"Cls{name}"]
+        ends = {e.get("role") for e in pim.iter(f"{pim_ns}end")}
+        assert {by_id[r].get("name") for r in ends} == {"portA", "portB"}
+

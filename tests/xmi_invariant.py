@@ -124,7 +124,9 @@ def dropped(xmi: Path, pim_text: str | None, messages: list[str]) -> dict[str, s
     named = {xid for m in messages for xid in _NAMED.findall(m)}
     named |= {i for m in messages for ids in re.findall(r"\bxmi:ids=([^\s\]\)]+)", m) for i in ids.split(",")}
     in_pim = pim_ids(etree.fromstring(pim_text.encode("utf-8"))) if pim_text else set()
-    return {xid: m for xid, m in understood_ids(xmi).items() if xid not in in_pim and xid not in named}
+    # an xmi:id other files of the model use too is "FILE#id" (xslt/import/files.xsl): the model file's own
+    own = {i.rsplit("#", 1)[1] for i in in_pim | named if i.startswith(f"{xmi.name}#")}
+    return {xid: m for xid, m in understood_ids(xmi).items() if xid not in in_pim | named | own}
 
 
 def import_run(model: Path) -> tuple[int, str | None, list[str]]:

@@ -51,7 +51,9 @@ def _package_options(parser: argparse.ArgumentParser) -> None:
                         help="ROS targets: your message type map (format of xslt/m2m/ros/types.xml); its entries win")
     parser.add_argument("--model-path", type=Path, action="append", default=[], metavar="DIR",
                         help="a folder of model files your model references (libraries kept elsewhere); "
-                             "repeat for several. Without it only files in the model's own folder are read")
+                             "repeat for several. Without it only files in the model's project (the nearest "
+                             "folder above it with a .project, .git, .hg or .svn; else the model's own folder) "
+                             "and the other projects of its workspace are read")
 
 
 def _check_options(parser: argparse.ArgumentParser) -> None:

@@ -18,6 +18,8 @@ from urllib.parse import unquote
 
 from lxml import etree
 
+from robomda.sandbox import Sandbox
+
 __all__ = [
     "Diagnostic",
     "RobomdaError",
@@ -231,10 +233,12 @@ class _Where:
     qualified_name: str = ""
 
 
-# an href to another file: its document part (before "#")
-_HREF = re.compile(rb"""\bhref\s*=\s*["']([^"'#]+)#""")
+# an href to another file: its document part (before "#", or the whole href)
+_HREF = re.compile(rb"""\bhref\s*=\s*["']([^"'#]+)["'#]""")
 _SCHEME = re.compile(r"^[A-Za-z][A-Za-z0-9+.\-]*:")
 _PROFILE = re.compile(r"\.profile\.(uml|xmi)$", re.I)
+# a MagicDraw used project (files.xsl, fp:used-project): never read
+_USED_PROJECT = re.compile(r"(^|[:/])PROJECT-[0-9A-Za-z_\-]+(\?|$)|\.mdzip$", re.I)
 
 
 def file_ref_path(ref: str, base: Path) -> Path | None:
@@ -248,19 +252,19 @@ def file_ref_path(ref: str, base: Path) -> Path | None:
 def linked_files(model: Path, search: tuple[Path, ...] = ()) -> list[Path]:
     """The model files ``model`` references through hrefs, and theirs, each once (breadth first).
 
-    The same files the import reads (xslt/import/files.xsl): relative or
-    file: references that are not profiles, inside the model's folder or a
-    ``search`` folder (the model path), that exist. Used only to locate
-    diagnostics; the import decides what the model holds.
+    The same files the import reads (xslt/import/files.xsl): relative,
+    ``file:`` or ``platform:/resource/`` references (URL-decoded) that are
+    not profiles nor MagicDraw used projects, inside the model's sandbox
+    (:class:`robomda.sandbox.Sandbox`: its folder, project, the other
+    projects of its workspace, the model path ``search``), that exist.
     """
-    # by path as written, not by real path, as the import resolves URIs: a
-    # library reached through a symlinked folder inside the model's folder is
-    # inside it, as it is for the import
-    def lexical(path: Path) -> Path:
-        return Path(os.path.normpath(path.absolute()))
-
-    roots = [lexical(model).parent, *(lexical(d) for d in search)]
-    seen, order, todo = {lexical(model)}, [], [lexical(model)]
+    # targets by path as written, not by real path, as the import resolves
+    # URIs (from the model's real path): a library reached through a
+    # symlinked folder inside the model's folder is inside it, as it is for
+    # the import
+    sandbox = Sandbox.of(model, search)
+    start = Path(os.path.normpath(model.resolve()))
+    seen, order, todo = {start}, [], [start]
     while todo:
         current = todo.pop(0)
         try:
@@ -268,11 +272,10 @@ def linked_files(model: Path, search: tuple[Path, ...] = ()) -> list[Path]:
         except OSError:
             continue
         for ref in dict.fromkeys(unquote(m.group(1).decode("utf-8", "replace")) for m in _HREF.finditer(raw)):
-            named = None if _PROFILE.search(ref) else file_ref_path(ref, current.parent)
-            if named is None:
+            if _PROFILE.search(ref) or _USED_PROJECT.search(ref):
                 continue
-            target = lexical(named)
-            if target in seen or not target.is_file() or not any(target.is_relative_to(r) for r in roots):
+            target = sandbox.resolve(ref, current.parent)
+            if target is None or target in seen or not target.is_file() or not sandbox.contains(target):
                 continue
             seen.add(target)
             order.append(target)
@@ -321,6 +324,8 @@ class XmiLocator:
             self._index = self._build(self.path)
         if xmi_id in self._index:
             return self.path, self._index[xmi_id]
+        if "#" in xmi_id:  # an id several files use, qualified by its file (files.xsl): "components/A.uml#_x"
+            return self._qualified(xmi_id)
         if self._others is None:
             self._others = [(p, None) for p in linked_files(self.path, self._search)]
         for i, (path, index) in enumerate(self._others):
@@ -330,6 +335,13 @@ class XmiLocator:
             if xmi_id in index:
                 return path, index[xmi_id]
         return self.path, None
+
+    def _qualified(self, xmi_id: str) -> tuple[Path, _Where | None]:
+        """Where the file-qualified id ``file#id`` is (the file relative to the model's folder)."""
+        rel, raw = xmi_id.rsplit("#", 1)
+        path = Path(os.path.normpath(self.path.resolve().parent / unquote(rel)))
+        where = self._build(path).get(raw)
+        return (path, where) if where else (self.path, None)
 
     def _shown(self, path: Path) -> str:
         """A linked file as the user would name it: beside the model file as the user named that."""

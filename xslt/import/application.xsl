@@ -124,7 +124,7 @@
                 as="element(pim:package)">
     <xsl:param name="root" as="element()" tunnel="yes"/>
     <pim:package id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
-      <xsl:if test="@x:file"><xsl:attribute name="file" select="@x:file"/></xsl:if>
+      <xsl:if test="@x:file"><xsl:attribute name="file" select="fp:uri-decode(@x:file)"/></xsl:if>
       <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
       <xsl:apply-templates select="fp:owned-packageables(.)" mode="mp:packageable"/>
     </pim:package>

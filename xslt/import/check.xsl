@@ -52,9 +52,12 @@
        one pass instead of a call per element and property) -->
   <xsl:function name="fp:any-dangling-ids" as="xs:string*">
     <xsl:param name="checked" as="element()*"/>
-    <xsl:sequence select="$checked[1] ! fp:dangling-ids(., distinct-values(
+    <!-- an id several files use (files.xsl) is resolved in the file of
+         its reference, not of $checked[1]: always in the superset -->
+    <xsl:variable name="ids" as="xs:string*" select="distinct-values(
         $checked/(@Q{}*[map:contains($checked-properties, local-name())]/tokenize(.),
-                  Q{}*[map:contains($checked-properties, local-name())]/@x:idref/string())))"/>
+                  Q{}*[map:contains($checked-properties, local-name())]/@x:idref/string()))"/>
+    <xsl:sequence select="$checked[1] ! (fp:dangling-ids(., $ids), $ids[exists(key('fp:shared-id', ., root($checked[1])))])"/>
   </xsl:function>
 
   <!-- the problems of one element: maps with code, id, message -->

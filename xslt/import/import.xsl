@@ -21,9 +21,12 @@
            directories; written to pim:model/@source.
            model-path (xs:string, default ''): space-separated folder URIs
            that referenced model files may be read from besides the model's
-           own folder (files.xsl: models split over several files).
+           own folder, project and workspace (files.xsl: models split over
+           several files; the project is found from the files that mark one,
+           so no parameter gives it).
   Modules: xmi-common.xsl (normalisation, keys, references, types),
-           files.xsl (models split over several files: IMP040, IMP041),
+           files.xsl (models split over several files, the sandbox:
+           IMP040, IMP041, IMP049),
            urdf.xsl (the kinematic chains of robot Devices, counted in
            the URDF files their Robot stereotype names: IMP040,
            IMP042-IMP048),
@@ -39,8 +42,8 @@
             Model / Package, or no UML 2.x namespace is used).
     IMP003  unsupported: an xmi:XMI document without a uml:Model or
             uml:Package.
-    IMP004  duplicate xmi:id (outside xmi:Extension blocks); ID is the
-            duplicated id.
+    IMP004  duplicate xmi:id within one file (outside xmi:Extension
+            blocks; ids are per file: files.xsl); ID is the duplicated id.
     IMP010  a Property or Parameter whose type is an id not in the file.
     IMP011  a Port whose type (its interface or class) is not in the file.
     IMP012  a Generalization whose general is not in the file.
@@ -78,7 +81,9 @@
   Warnings (f:warn) about what the import leaves out: IMP030, IMP101-IMP103
   (application.xsl), IMP110-IMP116 (report.xsl), IMP048 (urdf.xsl: a
   Robot's rootLink / tipLink without urdf), IMP117 (platform.xsl: a
-  deployment owned by a node whose client is another); docs/errors.md. Every
+  deployment owned by a node whose client is another), IMP041 and IMP049
+  (files.xsl: a model file that is not there, references into a MagicDraw
+  used project); docs/errors.md. Every
   duplicate id and dangling reference is reported (f:fail-all).
 -->
 <xsl:stylesheet version="3.0"
@@ -122,15 +127,6 @@
          files it references may be read from (files.xsl) -->
   </xsl:param>
 
-  <!-- the folders files may be read from: the model's own and the model
-       path, as URIs ending in "/" -->
-  <xsl:function name="fp:sandbox" as="xs:string+">
-    <xsl:param name="doc" as="document-node()"/>
-    <xsl:param name="model-path" as="xs:string"/>
-    <xsl:sequence select="string(resolve-uri('.', base-uri($doc))),
-                          tokenize($model-path) ! (if (ends-with(., '/')) then . else . || '/')"/>
-  </xsl:function>
-
   <!-- $doc normalised (mode mp:normalise of xmi-common.xsl) -->
   <xsl:function name="fp:normalised" as="document-node()">
     <xsl:param name="doc" as="document-node()"/>
@@ -148,8 +144,10 @@
     <xsl:variable name="src-model" as="element()?" select="fp:src-model($src-root)"/>
     <xsl:if test="fp:check-format($src-root, $src-model)">
       <!-- the model files this one references (files.xsl), each once -->
+      <xsl:variable name="sandbox" as="map(*)?"
+          select="if (base-uri(.) = '') then () else fp:sandbox(., $model-path)"/>
       <xsl:variable name="linked" as="xs:string*"
-          select="if (base-uri(.) = '') then () else fp:linked-files(., fp:sandbox(., $model-path))"/>
+          select="if (empty($sandbox)) then () else fp:linked-files(., $sandbox)"/>
       <!-- the normalised copy every rule reads (see xmi-common.xsl), with
            the linked files merged in -->
       <xsl:variable name="main-norm" as="document-node()">
@@ -159,15 +157,16 @@
       </xsl:variable>
       <xsl:variable name="norm" as="document-node()"
           select="if (empty($linked)) then $main-norm
-                  else fp:merged($main-norm, $linked ! fp:normalised(doc(.)), (string(base-uri(.)), $linked))"/>
+                  else fp:merged($main-norm, $linked ! fp:normalised(doc(.)), (string(base-uri(.)), $linked), $sandbox)"/>
       <xsl:variable name="model-el" as="element()" select="fp:model-el($norm)"/>
       <xsl:variable name="root" as="element()" select="fp:model-root($model-el)"/>
       <xsl:if test="fp:check-model($norm, $model-el)">
         <!-- the kinematic chains the robot Devices name in URDF files
              (urdf.xsl), read once: checked here, written by platform.xsl -->
         <xsl:variable name="chains" as="map(*)*"
-            select="fp:urdf-chains($root, string(base-uri(.)), if (base-uri(.) = '') then () else fp:sandbox(., $model-path))"/>
+            select="fp:urdf-chains($root, string(base-uri(.)), $sandbox)"/>
         <xsl:sequence select="fp:check-urdf($chains)"/>
+        <xsl:sequence select="fp:used-project-warnings($norm)"/>
         <xsl:variable name="href-types" as="map(*)" select="fp:href-types($norm)"/>
         <xsl:variable name="pim" as="document-node()">
         <xsl:document>
@@ -250,7 +249,8 @@
   <xsl:function name="fp:check-model" as="xs:boolean">
     <xsl:param name="norm" as="document-node()"/>
     <xsl:param name="model-el" as="element()"/>
-    <xsl:variable name="ids" as="attribute()*" select="$norm//@x:id"/>
+    <!-- ids are per file: fp:id is "FILE#id" where several files use one -->
+    <xsl:variable name="ids" as="xs:string*" select="$norm//*[@x:id] ! fp:id(.)"/>
     <xsl:variable name="duplicates" as="xs:string*">
       <xsl:for-each-group select="if (count(distinct-values($ids)) eq count($ids)) then () else $ids"
           group-by="string(.)">

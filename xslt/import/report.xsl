@@ -89,23 +89,23 @@
         select="$norm/x:XMI/*[not(namespace-uri() = ($U, $X))][@x:id]
                   [@*[starts-with(local-name(), 'base_')]]"/>
     <xsl:variable name="left-out" as="element()*"
-        select="($understood, $applications)[empty(key('fp:in-pim', string(@x:id), $pim))]"/>
+        select="($understood, $applications)[empty(key('fp:in-pim', fp:id(.), $pim))]"/>
     <!-- stereotype applications on no element of the model (tools apply
          their own to diagrams kept in xmi:Extension): one warning per
          stereotype, naming every application -->
     <xsl:variable name="unbased" as="element()*"
         select="$left-out[parent::x:XMI]
                   [empty(for $a in . return
-                         $a/@*[starts-with(local-name(), 'base_')]/tokenize(.) ! fp:element($a, .))]"/>
+                         fp:base-ids($a) ! fp:element($a, .))]"/>
     <xsl:for-each select="$left-out except $unbased">
       <xsl:variable name="why" as="map(*)" select="fp:why-not-imported(., $root, $pim)"/>
-      <xsl:sequence select="f:warn($why?code, string(@x:id), $why?message)"/>
+      <xsl:sequence select="f:warn($why?code, fp:id(.), $why?message)"/>
     </xsl:for-each>
     <xsl:for-each-group select="$unbased" group-by="name()">
-      <xsl:sequence select="f:warn('IMP115', string(@x:id), 'stereotype ' || local-name() || ' is applied '
+      <xsl:sequence select="f:warn('IMP115', fp:id(.), 'stereotype ' || local-name() || ' is applied '
           || count(current-group()) || ' time(s) to no element of the model (a tool''s own element, such as a'
           || ' diagram, or an element not in the file): not imported (xmi:ids='
-          || string-join(current-group()/@x:id, ',') || ')')"/>
+          || string-join(current-group() ! fp:id(.), ',') || ')')"/>
     </xsl:for-each-group>
     <xsl:if test="empty(($pim//(pim:component | pim:class | pim:interface | pim:node))[1])">
       <xsl:sequence select="f:warn('IMP030', fp:id($root), 'nothing to generate from: '
@@ -150,7 +150,7 @@
     <xsl:choose>
       <xsl:when test="not(namespace-uri($element) = ($U, $X, '')) and $element/parent::x:XMI">
         <xsl:variable name="bases" as="element()*"
-            select="$element/@*[starts-with(local-name(), 'base_')]/tokenize(.) ! fp:element($element, .)"/>
+            select="fp:base-ids($element) ! fp:element($element, .)"/>
         <xsl:sequence select="map { 'code': 'IMP115', 'message': 'stereotype ' || local-name($element)
             || (if (empty($bases)) then ' is applied to no element of the file'
                 else ' is applied to ' || string-join($bases ! fp:label(.), ', ')

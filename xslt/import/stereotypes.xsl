@@ -83,7 +83,7 @@
         <xsl:choose>
           <xsl:when test="exists($tokens) and (every $t in $tokens satisfies exists(fp:element(.., $t)))">
             <xsl:for-each select="$tokens">
-              <pim:tag name="{$tag}" value="{.}" ref="true"/>
+              <pim:tag name="{$tag}" value="{fp:ref-id($app, .)}" ref="true"/>
             </xsl:for-each>
           </xsl:when>
           <xsl:otherwise>
@@ -94,7 +94,7 @@
       <xsl:for-each select="*[namespace-uri() eq '']">
         <xsl:choose>
           <xsl:when test="@x:idref">
-            <pim:tag name="{local-name()}" value="{@x:idref}" ref="true"/>
+            <pim:tag name="{local-name()}" value="{fp:ref-id(., @x:idref)}" ref="true"/>
           </xsl:when>
           <xsl:when test="@href">
             <pim:tag name="{local-name()}" value="{@href}"/>

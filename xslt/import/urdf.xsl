@@ -18,8 +18,8 @@
            with severity error / warning, code, id, message) }.
            fp:check-urdf reports the problems; platform.xsl writes the
            chains into their pim:node.
-  Params:  none; fp:urdf-chains takes the model file's URI and the folders
-           files may be read from (import.xsl: fp:sandbox).
+  Params:  none; fp:urdf-chains takes the model file's URI and the
+           sandbox (files.xsl: fp:sandbox).
 
   Counting (docs/profile.md, "The hardware platform's degrees of freedom"):
   the joints of the chain from link rootLink down to link tipLink (both
@@ -31,8 +31,9 @@
   (IMP047): its coordinates are no values of a joint array.
 
   Errors (f:fail-all, located on the Robot stereotype application):
-    IMP040  the urdf path names a file outside the model's folder and the
-            model path, or is a URI of another scheme (package://, http:).
+    IMP040  the urdf path names a file outside the model's sandbox (its
+            folder, project, workspace projects and the model path:
+            files.xsl), or is a URI of another scheme (package://, http:).
     IMP042  the URDF file is not there, or cannot be read (or the model
             was given without a file, so no path is relative to it).
     IMP043  the URDF file is not well-formed XML.
@@ -83,15 +84,16 @@
   <!-- ====================================================== entry -->
   <!-- per Device under $root with a Robot stereotype: map { 'device',
        'items' } (see the header); $model-uri the model file's URI ('' when
-       the model was given without a file), $roots the sandbox -->
+       the model was given without a file), $sandbox the sandbox
+       (files.xsl, fp:sandbox; () without a file) -->
   <xsl:function name="fp:urdf-chains" as="map(*)*">
     <xsl:param name="root" as="element()"/>
     <xsl:param name="model-uri" as="xs:string"/>
-    <xsl:param name="roots" as="xs:string*"/>
+    <xsl:param name="sandbox" as="map(*)?"/>
     <xsl:for-each select="$root/descendant-or-self::*[@x:type eq 'Device']">
       <xsl:variable name="app" as="element()?" select="fp:robot-application(.)"/>
       <xsl:if test="exists($app)">
-        <xsl:sequence select="map { 'device': fp:id(.), 'items': fp:urdf-chain(., $app, $model-uri, $roots) }"/>
+        <xsl:sequence select="map { 'device': fp:id(.), 'items': fp:urdf-chain(., $app, $model-uri, $sandbox) }"/>
       </xsl:if>
     </xsl:for-each>
   </xsl:function>
@@ -124,7 +126,7 @@
     <xsl:param name="device" as="element()"/>
     <xsl:param name="app" as="element()"/>
     <xsl:param name="model-uri" as="xs:string"/>
-    <xsl:param name="roots" as="xs:string*"/>
+    <xsl:param name="sandbox" as="map(*)?"/>
     <xsl:variable name="path" as="xs:string?" select="fp:application-tag($app, 'urdf')"/>
     <xsl:variable name="who" as="xs:string" select="'device ''' || $device/@name || ''''"/>
     <xsl:variable name="file" as="xs:string" select="'the URDF file ''' || $path || ''' of ' || $who"/>
@@ -143,8 +145,8 @@
         <xsl:sequence select="fp:problem('IMP042', $app, $file || ' cannot be read: the model was not read from a file, '
             || 'so no path is relative to it')"/>
       </xsl:when>
-      <xsl:when test="empty($uri) or not(fp:in-sandbox($uri, $roots))">
-        <xsl:sequence select="fp:problem('IMP040', $app, $file || ' is not a file in the model''s folder or the model path: '
+      <xsl:when test="empty($uri) or empty($sandbox) or not(fp:in-sandbox($uri, $sandbox))">
+        <xsl:sequence select="fp:problem('IMP040', $app, $file || ' is not a file in the model''s folder, project or the model path: '
             || 'robomda reads only files there, never a package:// or network URI; give the path relative to the model file, '
             || 'or add its folder with --model-path DIR')"/>
       </xsl:when>

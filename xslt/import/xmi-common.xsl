@@ -21,7 +21,9 @@
              patterns run only for other URIs;
            - fp:href-types: what each distinct type href says (library,
              name, primitive kind), computed once per document;
-           - the keys (every id look-up goes through xsl:key);
+           - the keys (every id look-up goes through xsl:key; ids are
+             per file: an xmi:id several files of a model use is "FILE#id",
+             x:qid of files.xsl, read by fp:id, fp:ref-id and the keys);
            - functions for ids, metaclasses, references, qualified names,
              value specifications, multiplicities, types and comments.
   Params:  none.
@@ -212,7 +214,12 @@
   </xsl:function>
 
   <!-- ================================================================ keys -->
-  <xsl:key name="fp:by-id" match="*[@x:id]" use="string(@x:id)"/>
+  <!-- by the id that identifies an element in the model: its xmi:id, or
+       "FILE#id" (x:qid) when several files of the model use that xmi:id
+       (files.xsl) -->
+  <xsl:key name="fp:by-id" match="*[@x:id]" use="string((@x:qid, @x:id)[1])"/>
+  <!-- the elements whose xmi:id several files use, by that xmi:id -->
+  <xsl:key name="fp:shared-id" match="*[@x:qid]" use="string(@x:id)"/>
 
   <xsl:variable name="dependency-metas" as="xs:string+"
       select="('Usage', 'InterfaceRealization', 'Realization', 'ComponentRealization',
@@ -228,13 +235,20 @@
        namespaces that point at model elements with base_* attributes -->
   <xsl:key name="fp:stereotype-by-base"
       match="/x:XMI/*[not(namespace-uri() = ($U, $X))][@*[starts-with(local-name(), 'base_')]]"
-      use="@*[starts-with(local-name(), 'base_')]/tokenize(.)"/>
+      use="fp:base-ids(.)"/>
   <!-- every id either key above holds (and maybe a few more): one look-up
        tells tp:decoration that an element has no stereotype and no
        annotating comment, most elements of a model -->
   <xsl:key name="fp:decorated"
       match="/x:XMI/*[not(namespace-uri() = ($U, $X))][@*[starts-with(local-name(), 'base_')]] | ownedComment"
-      use="fp:ref-ids(., 'annotatedElement'), @*[starts-with(local-name(), 'base_')]/tokenize(.)"/>
+      use="fp:ref-ids(., 'annotatedElement'), fp:base-ids(.)"/>
+
+  <!-- the ids of the elements stereotype application $app extends (its
+       base_* attributes), each as fp:ref-id makes it -->
+  <xsl:function name="fp:base-ids" as="xs:string*">
+    <xsl:param name="app" as="element()"/>
+    <xsl:sequence select="$app/@*[starts-with(local-name(), 'base_')]/tokenize(.) ! fp:ref-id($app, .)"/>
+  </xsl:function>
 
   <!-- the UML model element of a normalised document (a bare uml:Model or
        uml:Package, else the first uml:Model, else uml:Package, of xmi:XMI) -->
@@ -249,11 +263,13 @@
   </xsl:function>
 
   <!-- =================================================== ids, metaclass -->
-  <!-- the element's xmi:id, or a deterministic synthetic id "robomda.<path>"
-       anchored at the nearest ancestor that has an xmi:id -->
+  <!-- the element's xmi:id ("FILE#id" when several files of the model use
+       it: x:qid, files.xsl), or a deterministic synthetic id
+       "robomda.<path>" anchored at the nearest ancestor that has an xmi:id -->
   <xsl:function name="fp:id" as="xs:string">
     <xsl:param name="element" as="element()"/>
-    <xsl:sequence select="if ($element/@x:id) then string($element/@x:id) else fp:synthetic-id($element)"/>
+    <xsl:sequence select="if ($element/@x:id) then string(($element/@x:qid, $element/@x:id)[1])
+                          else fp:synthetic-id($element)"/>
   </xsl:function>
 
   <xsl:function name="fp:synthetic-id" as="xs:string">
@@ -261,7 +277,7 @@
     <xsl:variable name="anchor" as="element()?" select="$element/ancestor::*[@x:id][1]"/>
     <xsl:variable name="steps" as="element()*"
         select="$element/ancestor-or-self::*[empty($anchor) or . >> $anchor]"/>
-    <xsl:sequence select="string-join(('robomda', $anchor/@x:id/string(),
+    <xsl:sequence select="string-join(('robomda', $anchor ! fp:id(.),
                                        $steps ! fp:step(.)), '.')"/>
   </xsl:function>
 
@@ -309,19 +325,31 @@
 
   <!-- ===================================================== references -->
   <!-- ids referenced by property $prop: an attribute (an id list) or child
-       elements with xmi:idref -->
+       elements with xmi:idref; each as fp:ref-id makes it -->
   <xsl:function name="fp:ref-ids" as="xs:string*">
     <xsl:param name="element" as="element()"/>
     <xsl:param name="prop" as="xs:string"/>
     <xsl:sequence select="($element/@Q{}*[local-name() eq $prop]/tokenize(.),
-                           $element/Q{}*[local-name() eq $prop]/@x:idref/string())"/>
+                           $element/Q{}*[local-name() eq $prop]/@x:idref/string()) ! fp:ref-id($element, .)"/>
   </xsl:function>
 
-  <!-- the element with xmi:id $id in the document of $ctx -->
+  <!-- the id that identifies the element a reference $id written in the
+       file of $ctx names (the key of fp:by-id, the fp:id of that element):
+       $id itself, unless several files of the model use that xmi:id
+       (files.xsl): then "FILE#id", FILE the file of $ctx (ids are per file) -->
+  <xsl:function name="fp:ref-id" as="xs:string">
+    <xsl:param name="ctx" as="node()"/>
+    <xsl:param name="id" as="xs:string"/>
+    <xsl:sequence select="if (empty(key('fp:shared-id', $id, root($ctx)))) then $id
+                          else string($ctx/ancestor-or-self::*[@x:file][1]/@x:file) || '#' || $id"/>
+  </xsl:function>
+
+  <!-- the element with xmi:id $id (a reference written in the file of
+       $ctx: fp:ref-id) in the document of $ctx -->
   <xsl:function name="fp:element" as="element()?">
     <xsl:param name="ctx" as="node()"/>
     <xsl:param name="id" as="xs:string?"/>
-    <xsl:sequence select="if ($id) then key('fp:by-id', $id, root($ctx))[1] else ()"/>
+    <xsl:sequence select="if ($id) then key('fp:by-id', fp:ref-id($ctx, $id), root($ctx))[1] else ()"/>
   </xsl:function>
 
   <!-- the local elements referenced by property $prop (hrefs and unknown
@@ -432,16 +460,67 @@
   </xsl:function>
 
   <!-- the name of a type referenced by href: the dialect's name for it
-       (mp:normalise-extra, x:referent-path), else the fragment's last step,
-       else the last path step of the document -->
+       (mp:normalise-extra, x:referent-path), else the last step of the
+       readable path of an RSA fragment ("#id?Path/Name?"), else the
+       fragment's last step, else the last path step of the document;
+       URL-decoded -->
   <xsl:function name="fp:href-name" as="xs:string">
     <xsl:param name="href" as="xs:string"/>
     <xsl:param name="el" as="element()?"/>
     <xsl:variable name="fragment" as="xs:string" select="substring-after($href, '#')"/>
+    <xsl:variable name="path" as="xs:string" select="replace(substring-after($fragment, '?'), '\?$', '')"/>
     <xsl:sequence select="
         if ($el/@x:referent-path) then tokenize($el/@x:referent-path, '::')[last()]
-        else if ($fragment) then tokenize(replace($fragment, '/+$', ''), '/')[last()]
-        else replace(tokenize(replace($href, '/+$', ''), '/')[last()], '\.[^.]*$', '')"/>
+        else if ($path) then fp:uri-decode(tokenize(replace($path, '/+$', ''), '/')[last()])
+        else if ($fragment) then fp:uri-decode(tokenize(replace($fragment, '/+$', ''), '/')[last()])
+        else fp:uri-decode(replace(tokenize(replace($href, '/+$', ''), '/')[last()], '\.[^.]*$', ''))"/>
+  </xsl:function>
+
+  <!-- $text with its %XX escapes (UTF-8 bytes) decoded; a run of escapes
+       that is not UTF-8 is kept as written -->
+  <xsl:function name="fp:uri-decode" as="xs:string">
+    <xsl:param name="text" as="xs:string"/>
+    <xsl:sequence select="if (not(contains($text, '%'))) then $text
+        else string-join(analyze-string($text, '(%[0-9A-Fa-f]{2})+')/*
+            ! (if (self::fn:match) then fp:utf8(tokenize(substring(., 2), '%') ! fp:hex(.), string(.)) else string(.)))"
+        xmlns:fn="http://www.w3.org/2005/xpath-functions"/>
+  </xsl:function>
+
+  <!-- the number two hex digits write -->
+  <xsl:function name="fp:hex" as="xs:integer">
+    <xsl:param name="digits" as="xs:string"/>
+    <xsl:sequence select="16 * string-length(substring-before('0123456789abcdef', lower-case(substring($digits, 1, 1))))
+                          + string-length(substring-before('0123456789abcdef', lower-case(substring($digits, 2, 1))))"/>
+  </xsl:function>
+
+  <!-- the characters UTF-8 bytes $bytes encode, else $raw -->
+  <xsl:function name="fp:utf8" as="xs:string">
+    <xsl:param name="bytes" as="xs:integer*"/>
+    <xsl:param name="raw" as="xs:string"/>
+    <xsl:variable name="codes" as="xs:integer*" select="fp:utf8-codes($bytes)"/>
+    <xsl:sequence select="if (some $c in $codes satisfies $c lt 0) then $raw else codepoints-to-string($codes)"/>
+  </xsl:function>
+
+  <!-- the code points of UTF-8 bytes $bytes; -1 where they are not UTF-8 -->
+  <xsl:function name="fp:utf8-codes" as="xs:integer*">
+    <xsl:param name="bytes" as="xs:integer*"/>
+    <xsl:variable name="b" as="xs:integer?" select="head($bytes)"/>
+    <xsl:variable name="n" as="xs:integer"
+        select="if (empty($b)) then 0 else if ($b lt 128) then 1 else if ($b lt 194) then -1
+                else if ($b lt 224) then 2 else if ($b lt 240) then 3 else if ($b lt 245) then 4 else -1"/>
+    <xsl:variable name="tail" as="xs:integer*" select="subsequence($bytes, 2, $n - 1)"/>
+    <xsl:sequence select="
+        if (empty($b)) then ()
+        else if ($n lt 0 or count($tail) ne $n - 1 or (some $t in $tail satisfies ($t lt 128 or $t ge 192))) then -1
+        else if ($n eq 1) then ($b, fp:utf8-codes(tail($bytes)))
+        else (fp:fold-bits($b - (if ($n eq 2) then 192 else if ($n eq 3) then 224 else 240), $tail),
+              fp:utf8-codes(subsequence($bytes, $n + 1)))"/>
+  </xsl:function>
+
+  <xsl:function name="fp:fold-bits" as="xs:integer">
+    <xsl:param name="acc" as="xs:integer"/>
+    <xsl:param name="tail" as="xs:integer*"/>
+    <xsl:sequence select="if (empty($tail)) then $acc else fp:fold-bits($acc * 64 + head($tail) - 128, tail($tail))"/>
   </xsl:function>
 
   <!-- a local type that robomda may treat as a primitive: a PrimitiveType,
