@@ -39,7 +39,9 @@
     Collaboration, gives provided = the interfaces it realizes, required =
     those it uses, swapped when conjugated), explicit provided / required
     (EA children; Usage or InterfaceRealization whose client is the port;
-    @via names the dependencies), isConjugated, isService, isBehavior.
+    @via names the dependencies and the EA children), isConjugated,
+    isService, isBehavior. An EA exposed interface that names no interface
+    of the model is not imported (IMP119, report.xsl).
   - Typed elements: a type that is an element of the model the PIM has no
     element for (a behaviour, an actor ...) gives type-name and
     type-metaclass, no @type; warnings IMP101 (no type), IMP102 (not a
@@ -84,12 +86,14 @@
       select="('Package', 'Model', 'PrimitiveType', 'DataType', 'Signal', 'Enumeration', 'Class',
                'Interface', 'Component', 'Dependency')"/>
   <!-- what never holds a packageable element robomda reads: features,
-       relationships, values, profiles -->
+       relationships, values, profiles, template signatures and bindings
+       (their placeholders, x:type TemplateParameter, are no classes) -->
   <xsl:variable name="leaf-metas" as="xs:string+"
       select="('Property', 'Port', 'Operation', 'Parameter', 'Connector', 'ConnectorEnd', 'Generalization',
                'Comment', 'Constraint', 'EnumerationLiteral', 'Association', 'Profile', 'Stereotype',
                'Extension', 'ProfileApplication', 'PackageImport', 'ElementImport', 'CommunicationPath',
-               $dependency-metas, 'Abstraction', 'Dependency', 'InstanceSpecification', 'Slot')"/>
+               $dependency-metas, 'Abstraction', 'Dependency', 'InstanceSpecification', 'Slot',
+               'TemplateSignature', 'RedefinableTemplateSignature', 'TemplateBinding', 'TemplateParameter')"/>
 
   <!-- the two lists as maps: one look-up per child element -->
   <xsl:variable name="packageable-map" as="map(xs:string, xs:boolean)"
@@ -106,7 +110,9 @@
        Nodes), which keep their qualified name under that owner -->
   <xsl:function name="fp:owned-packageables" as="element()*">
     <xsl:param name="element" as="element()"/>
-    <xsl:for-each select="$element/*[@x:type][not(@href or @x:idref)]">
+    <!-- an EA exposed interface (<provided>, <required>) is no interface
+         of its own, whatever its xmi:type (dialect-ea.xsl) -->
+    <xsl:for-each select="$element/*[@x:type][not(@href or @x:idref)][not(self::provided or self::required)]">
       <xsl:variable name="meta" as="xs:string" select="@x:type"/>
       <xsl:choose>
         <xsl:when test="map:contains($packageable-map, $meta)">
@@ -205,8 +211,13 @@
                     then fp:targets(., 'realizingClassifier')
                     else (fp:targets(., 'client') except $classifier,
                           fp:targets(., 'supplier') except $classifier)[1]"/>
+        <!-- a realization of several components: each its own ids -->
+        <xsl:variable name="id" as="xs:string" select="fp:id($classifier)"/>
+        <xsl:variable name="sides" as="xs:string*"
+            select="if (fp:ref-ids(., 'supplier') = $id) then fp:ref-ids(., 'supplier') else fp:ref-ids(., 'client')"/>
+        <xsl:variable name="count" as="xs:integer" select="max((count(fp:ref-ids(., 'realizingClassifier')), 1))"/>
         <xsl:for-each select="$classifiers">
-          <pim:realization id="{fp:nth-id($realization, position())}" classifier="{fp:id(.)}"/>
+          <pim:realization id="{fp:pair-id($realization, $sides, $id, $count, position())}" classifier="{fp:id(.)}"/>
         </xsl:for-each>
       </xsl:for-each>
       <xsl:call-template name="tp:classifier-body">
@@ -240,9 +251,14 @@
                 | key('fp:dep-by-client', $id)[@x:type = ('InterfaceRealization', 'Realization')]"/>
     <xsl:for-each select="$realizations">
       <xsl:variable name="realization" as="element()" select="."/>
+      <!-- a realization with several clients gives each its own ids -->
+      <xsl:variable name="count" as="xs:integer"
+          select="count((fp:ref-ids(., 'contract'), fp:ref-ids(.,'supplier')[empty(fp:ref-ids($realization, 'contract'))]))"/>
       <xsl:for-each select="fp:realized-interfaces(.)">
-        <pim:provides id="{fp:nth-id($realization, position())}" interface="{fp:id(.)}">
-          <xsl:if test="position() eq 1">
+        <xsl:variable name="pair-id" as="xs:string"
+            select="fp:pair-id($realization, fp:ref-ids($realization, 'client'), $id, $count, position())"/>
+        <pim:provides id="{$pair-id}" interface="{fp:id(.)}">
+          <xsl:if test="$pair-id eq fp:id($realization)">
             <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="$realization"/></xsl:call-template>
           </xsl:if>
         </pim:provides>
@@ -263,12 +279,12 @@
     <xsl:param name="id" as="xs:string"/>
     <xsl:for-each select="key('fp:dep-by-client', $id)[@x:type eq 'Usage']">
       <xsl:variable name="usage" as="element()" select="."/>
-      <xsl:variable name="clients" as="xs:string*" select="distinct-values(fp:ref-ids(., 'client'))"/>
-      <xsl:variable name="offset" as="xs:integer"
-          select="(index-of($clients, $id)[1] - 1) * count(fp:ref-ids(., 'supplier'))"/>
+      <xsl:variable name="count" as="xs:integer" select="count(fp:ref-ids(., 'supplier'))"/>
       <xsl:for-each select="fp:used-interfaces(.)">
-        <pim:requires id="{fp:nth-id($usage, $offset + position())}" interface="{fp:id(.)}">
-          <xsl:if test="position() eq 1 and $offset eq 0">
+        <xsl:variable name="pair-id" as="xs:string"
+            select="fp:pair-id($usage, fp:ref-ids($usage, 'client'), $id, $count, position())"/>
+        <pim:requires id="{$pair-id}" interface="{fp:id(.)}">
+          <xsl:if test="$pair-id eq fp:id($usage)">
             <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="$usage"/></xsl:call-template>
           </xsl:if>
         </pim:requires>
@@ -506,6 +522,7 @@
         select="$own-realized | (if ($conjugated) then $protocol-used else $protocol-realized)"/>
     <xsl:variable name="required-deps" as="element()*"
         select="$own-used | (if ($conjugated) then $protocol-realized else $protocol-used)"/>
+    <xsl:variable name="port" as="element()" select="."/>
     <pim:port id="{$id}" name="{@name}" qualified-name="{fp:qname(., $root)}">
       <xsl:sequence select="$typed"/>
       <xsl:attribute name="visibility" select="fp:visibility(.)"/>
@@ -521,7 +538,8 @@
         <xsl:variable name="interface" as="xs:string" select="."/>
         <pim:provided interface="{$interface}">
           <xsl:call-template name="tp:via">
-            <xsl:with-param name="deps" select="$provided-deps[fp:realized-interfaces(.) ! fp:id(.) = $interface]"/>
+            <xsl:with-param name="deps" select="fp:exposed($port, 'provided')[fp:interface-of(.) ! fp:id(.) = $interface],
+                $provided-deps[fp:realized-interfaces(.) ! fp:id(.) = $interface]"/>
           </xsl:call-template>
         </pim:provided>
       </xsl:for-each>
@@ -533,7 +551,8 @@
         <xsl:variable name="interface" as="xs:string" select="."/>
         <pim:required interface="{$interface}">
           <xsl:call-template name="tp:via">
-            <xsl:with-param name="deps" select="$required-deps[fp:used-interfaces(.) ! fp:id(.) = $interface]"/>
+            <xsl:with-param name="deps" select="fp:exposed($port, 'required')[fp:interface-of(.) ! fp:id(.) = $interface],
+                $required-deps[fp:used-interfaces(.) ! fp:id(.) = $interface]"/>
           </xsl:call-template>
         </pim:required>
       </xsl:for-each>
@@ -567,7 +586,8 @@
   </xsl:template>
 
   <!-- @via: the ids of the dependencies $deps that give a port its
-       provided or required interface -->
+       provided or required interface, and of its EA exposed interfaces
+       (<provided>, <required>) that name it -->
   <xsl:template name="tp:via" as="attribute()?">
     <xsl:param name="deps" as="element()*"/>
     <xsl:if test="exists($deps)">
