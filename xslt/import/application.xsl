@@ -50,8 +50,11 @@
     parts of the classifier: fp:connector-owner): kind from @kind, else
     delegation when an end has no
     partWithPort and its role is a port of the connector's owner; ends with
-    role and part (partWithPort). A connector with an end outside the model
-    (href role) is not written.
+    role and part (partWithPort), and the path of parts down to that part
+    when it is a part of a part (SysML NestedConnectorEnd propertyPath, or
+    the one chain of parts to a partWithPort: connector-ends.xsl). A
+    connector with an end outside the model (href role), or with an end
+    whose path cannot be followed, is not written.
   - Dependency (exactly xmi:type uml:Dependency, not Usage / Realization ...)
     marked as a deployment-sequence constraint (fp:is-start-after: the
     robomda stereotype StartAfter, else the name "startAfter", case-
@@ -349,12 +352,12 @@
       use="fp:connector-owner(.)"/>
 
   <!-- the id of the classifier a connector belongs to: the owner of the
-       part (partWithPort) of its first end that has one, else of the first
-       end's role -->
+       first part of its ends (the first step of a SysML propertyPath, else
+       partWithPort: fp:path-start), else of the first end's role -->
   <xsl:function name="fp:connector-owner" as="xs:string?">
     <xsl:param name="connection" as="element()"/>
     <xsl:variable name="owner" as="element()?"
-        select="($connection/end ! fp:targets(., 'partWithPort'), $connection/end ! fp:targets(., 'role'))[1]/.."/>
+        select="($connection/end ! fp:path-start(.), $connection/end ! fp:targets(., 'role'))[1]/.."/>
     <xsl:sequence select="$owner[@x:type = ('Class', 'Component', 'Interface')] ! fp:id(.)"/>
   </xsl:function>
 
@@ -600,7 +603,10 @@
     <!-- the classifier the connector belongs to -->
     <xsl:param name="owner" as="element()" select=".."/>
     <xsl:variable name="ends" as="element()*" select="end[exists(fp:targets(., 'role'))]"/>
-    <xsl:if test="count($ends) ge 2">
+    <!-- the path of parts of each end (connector-ends.xsl): a connector
+         with an end whose path cannot be followed is not imported (IMP110) -->
+    <xsl:variable name="paths" as="map(*)*" select="$ends ! fp:end-path(., $owner)"/>
+    <xsl:if test="count($ends) ge 2 and empty($paths?problem)">
       <xsl:variable name="kind" as="xs:string" select="
           if (@kind = ('assembly', 'delegation')) then string(@kind)
           else if (some $end in $ends satisfies
@@ -611,9 +617,18 @@
       <pim:connector id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}" kind="{$kind}">
         <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
         <xsl:for-each select="$ends">
+          <xsl:variable name="i" as="xs:integer" select="position()"/>
+          <xsl:variable name="steps" as="element()*" select="$paths[$i]?steps"/>
           <pim:end id="{fp:id(.)}" role="{fp:id(fp:targets(., 'role')[1])}">
-            <xsl:for-each select="fp:targets(., 'partWithPort')[1]">
+            <xsl:for-each select="$steps[last()]">
               <xsl:attribute name="part" select="fp:id(.)"/>
+            </xsl:for-each>
+            <xsl:if test="count($steps) gt 1">
+              <xsl:attribute name="path" select="$steps ! fp:id(.)"/>
+            </xsl:if>
+            <!-- the SysML NestedConnectorEnd that gave the path: read -->
+            <xsl:for-each select="fp:nested-end(.)[@x:id]">
+              <xsl:attribute name="via" select="@x:id"/>
             </xsl:for-each>
           </pim:end>
         </xsl:for-each>

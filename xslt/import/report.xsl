@@ -15,7 +15,8 @@
             leaving out the contents of the profiles it defines.
     IMP110  a connector that is not imported (an end in another file, fewer
             than two ends in the model, no class or component owns the
-            parts it joins).
+            parts it joins, the path of parts of a nested end cannot be
+            followed: connector-ends.xsl).
     IMP111  a Dependency or Abstraction that is not imported (only a
             deployment-sequence StartAfter one means something; or such a
             one without client or supplier in the model).
@@ -272,7 +273,13 @@
         <xsl:sequence select="map { 'code': 'IMP110', 'message': $what || ' is not imported: ' || (
             if ($element/end/(role | partWithPort)/@href) then 'an end is in another model'
             else if (count($element/end[exists(fp:targets(., 'role'))]) lt 2) then 'it has fewer than two ends in the model'
-            else 'no class or component owns the parts it joins') }"/>
+            else (let $owner := if ($element/self::ownedConnector and $element/../@x:type = ('Class', 'Component', 'Interface'))
+                                then $element/.. else fp:element($element, fp:connector-owner($element)),
+                      $problems := $element/end[exists(fp:targets(., 'role'))]
+                                   ! (let $end := . return fp:end-path($end, $owner)?problem
+                                      ! ('its end on ' || fp:label(fp:targets($end, 'role')[1]) || ' cannot be followed: ' || .))
+                  return if (exists($problems)) then string-join($problems, '; ')
+                         else 'no class or component owns the parts it joins')) }"/>
       </xsl:when>
       <xsl:when test="$meta = ('Dependency', 'Abstraction')">
         <xsl:sequence select="map { 'code': 'IMP111', 'message': $what || ' is not imported: ' || (
