@@ -129,9 +129,10 @@
       <xsl:sequence select="f:warn($why?code, string(@x:id), $why?message)"/>
     </xsl:for-each>
     <xsl:sequence select="fp:template-warnings($norm, $pim)"/>
-    <xsl:sequence select="fp:pair-warnings(($understood except $left-out)
+    <xsl:sequence select="fp:pair-warnings($understood
         [@x:type = ('Usage', 'Realization', 'InterfaceRealization', 'ComponentRealization')]
-        [count(fp:ref-ids(., 'client')) gt 1 or count(fp:ref-ids(., 'supplier')) gt 1], $pim)"/>
+        [count(fp:ref-ids(., 'client')) gt 1 or count(fp:ref-ids(., 'supplier')) gt 1]
+        [exists(key('fp:in-pim', string(@x:id), $pim))], $pim)"/>
     <xsl:for-each-group select="$unbased" group-by="name()">
       <xsl:sequence select="f:warn('IMP115', string(@x:id), 'stereotype ' || local-name() || ' is applied '
           || count(current-group()) || ' time(s) to no element of the model (a tool''s own element, such as a'
@@ -189,7 +190,7 @@
   <xsl:function name="fp:template-warnings" as="empty-sequence()">
     <xsl:param name="norm" as="document-node()"/>
     <xsl:param name="pim" as="document-node()"/>
-    <xsl:for-each select="($norm/descendant::ownedTemplateSignature | $norm/descendant::templateBinding)/..
+    <xsl:for-each select="$norm/descendant::*[self::ownedTemplateSignature or self::templateBinding]/..
                           [exists(key('fp:in-pim', fp:id(.), $pim))]">
       <xsl:variable name="parameters" as="xs:string*"
           select="ownedTemplateSignature/ownedParameter
