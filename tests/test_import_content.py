@@ -244,16 +244,22 @@ def test_imp030_says_when_the_file_holds_components_it_does_not_import(
 
 # ------------------------------------------- class 6: several clients
 def _multi_model(x: Xmi, clients: str) -> str:
+    def rel(meta: str, xid: str, **refs: str) -> str:
+        """Client, supplier ... as id lists, or (MagicDraw) as one child element per id."""
+        if x.d == "magicdraw":
+            kids = "".join(f'<{p} xmi:idref="{i}"/>' for p, ids in refs.items() for i in ids.split())
+            return f'<packagedElement {x.t(meta)} xmi:id="{xid}">{kids}</packagedElement>'
+        return f'<packagedElement {x.t(meta)} xmi:id="{xid}"' + "".join(f' {p}="{v}"' for p, v in refs.items()) + "/>"
+
     return x.document(
         x.interface("ifA", "A") + x.interface("ifB", "B")
         + f'<packagedElement {x.t("Class")} xmi:id="impl" name="Impl"/>'
         + f'<packagedElement {x.t("Package")} xmi:id="pkg" name="pk"/>'
         + x.component("cmp", "Cmp", x.port("prt", "p", "ifA"))
         + x.component("cmp2", "Cmp2", x.port("prt2", "q", "ifA", conjugated=True))
-        + f'<packagedElement {x.t("InterfaceRealization")} xmi:id="ir" client="{clients}" supplier="ifA ifB" '
-          f'contract="ifA ifB"/>'
-        + f'<packagedElement {x.t("Realization")} xmi:id="rl" client="{clients}" supplier="ifA"/>'
-        + f'<packagedElement {x.t("Usage")} xmi:id="us" client="cmp2 pkg" supplier="ifA ifB"/>')
+        + rel("InterfaceRealization", "ir", client=clients, supplier="ifA ifB", contract="ifA ifB")
+        + rel("Realization", "rl", client=clients, supplier="ifA")
+        + rel("Usage", "us", client="cmp2 pkg", supplier="ifA ifB"))
 
 
 @pytest.mark.parametrize("dialect", ["eclipse", "xsi", "magicdraw"])
