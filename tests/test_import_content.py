@@ -356,9 +356,10 @@ def test_a_nested_connector_end_joins_the_nested_instance(dialect: str, pwp: boo
     assert not [d for d in found if d.code == "IMP115"]
 
 
-def test_a_part_of_a_part_without_sysml_is_followed_when_there_is_one_way(tmp_path: Path) -> None:
-    text, _ = _nested_model(Xmi("eclipse"), nested="uml")
-    path = _write(tmp_path, "eclipse", text)
+@pytest.mark.parametrize("dialect", ["eclipse", "xsi", "ea"])
+def test_a_part_of_a_part_without_sysml_is_followed_when_there_is_one_way(dialect: str, tmp_path: Path) -> None:
+    text, _ = _nested_model(Xmi(dialect), nested="uml")
+    path = _write(tmp_path, dialect, text)
     doc, found = _import(path)
     assert doc.xpath("//p:end[@id='e1']/@path", namespaces=NS) == ["a s"]
     assert _connections(doc) == [("a_s", "b")]
