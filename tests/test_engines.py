@@ -177,3 +177,31 @@ def _assert_same_package(package: Path, case: Path) -> None:
     assert sorted(got) == sorted(expected)
     for path, data in expected.items():
         assert got[path] == data, path
+
+
+# ------------------------------------------------------------------------------------------------
+# The shapes of real exports that no fixture case holds (issue 30: xsi:type, template
+# placeholders, several clients, nested connector ends, EA exposed interfaces), built by the
+# builders of tests/test_import_content.py: the import reads them alike on every engine.
+def _export_shapes() -> dict[str, str]:
+    import test_import_content as shapes
+
+    return {
+        "templates-xsi.uml": shapes._template_model(shapes.Xmi("xsi")),
+        "several-clients.uml": shapes._multi_model(shapes.Xmi("eclipse"), "impl prt cmp pkg"),
+        "nested-end.xmi": shapes._nested_model(shapes.Xmi("magicdraw"), nested="sysml", second=True)[0],
+    }
+
+
+@pytest.mark.parametrize("engine", ENGINES)
+def test_the_import_reads_real_export_shapes_alike(engine: Cli, workdir: Path) -> None:
+    from robomda.api import import_model
+
+    for name, text in _export_shapes().items():
+        model = workdir / f"{engine.name}-shapes" / name
+        model.parent.mkdir(exist_ok=True)
+        model.write_text(text, encoding="utf-8")
+        out = workdir / f"{engine.name}-shapes-{name}.pim.xml"
+        engine.run(ROOT / "xslt/util/run-pipeline.xsl", ROOT / "pipelines/import.xml", out,
+                   {"model": model.resolve().as_uri()}, workdir)
+        assert out.read_text(encoding="utf-8") == import_model(model), name

@@ -6,10 +6,15 @@ behaviours, actors, components with ports, parts and connectors,
 dependencies of every kind, nodes, devices, execution environments,
 artifacts, deployments, manifestations, communication paths, stereotype
 applications), written in the dialects of Eclipse UML2 / Papyrus,
-Enterprise Architect and MagicDraw, with optional attributes left out, types
+Enterprise Architect, MagicDraw and GenMyModel (xsi:type), with optional
+attributes left out, types
 missing or of unexpected metaclasses, references to ids that are not in the
 file, and elements in unusual owners (components in nodes, Visual Paradigm
-style deployment-components, connectors under the model). For each model:
+style deployment-components, connectors under the model), and the shapes of
+real exports of issue 30 (template signatures, nested connector ends with a
+SysML propertyPath, relationships with several clients, EA exposed
+interfaces without an interface, Collaboration roles, a partial export's
+dangling relationship). For each model:
 
 - the import never ends with INTERNAL: exit code 0, 1 or 2 only;
 - every code it prints is listed in docs/errors.md;
@@ -58,10 +63,14 @@ DIALECTS = {
                version="2.1", exporter="Enterprise Architect"),
     "magicdraw": dict(xmi="http://www.omg.org/spec/XMI/20131001", uml="http://www.omg.org/spec/UML/20131001",
                       version="20131001", exporter="MagicDraw Clean XMI Exporter"),
+    # GenMyModel-style: the Eclipse namespaces, every xmi:type written as xsi:type (issue 30)
+    "xsi": dict(xmi="http://www.omg.org/spec/XMI/20131001", uml="http://www.eclipse.org/uml2/5.0.0/UML",
+                version="20131001", exporter=None),
 }
 LIBRARY = {
     "eclipse": 'href="pathmap://UML_LIBRARIES/UMLPrimitiveTypes.library.uml#{}"',
     "magicdraw": 'href="http://www.omg.org/spec/UML/20131001/PrimitiveTypes.xmi#{}"',
+    "xsi": 'href="pathmap://UML_LIBRARIES/UMLPrimitiveTypes.library.uml#{}"',
 }
 PRIMITIVES = ["Integer", "Real", "Boolean", "String"]
 EA_BUILTINS = ["EAJava_int", "EAJava_double", "EAJava_boolean", "EAnone_float"]
@@ -98,6 +107,7 @@ class Model:
         self.ids: dict[str, list[str]] = {}  # metaclass -> ids
         self.stereotypes: list[str] = []
         self.stray: list[str] = []  # elements written under the model root
+        self.composites: list[tuple[str, list[str]]] = []  # (composite id, its part ids)
         # a second model file the model references (models split over
         # several files): beside it, missing, or outside the sandbox
         self.lib = draw(st.sampled_from(["none", "present", "missing", "outside"]))
@@ -288,6 +298,7 @@ class Model:
                 self.stray.append(f'<packagedElement xmi:type="uml:Connector" xmi:id="{kid}"{self.name()}>{ends}</packagedElement>')
             else:
                 body += f'<ownedConnector xmi:type="uml:Connector" xmi:id="{kid}"{self.name()}>{ends}</ownedConnector>'
+        self.composites.append((xid, parts))
         if len(parts) >= 2 and self.maybe(0.4):
             dname = ' name="startAfter"' if self.maybe() else self.name()
             self.stray.append(f'<packagedElement xmi:type="uml:Dependency" xmi:id="{self.new_id("Dependency")}"{dname} '
@@ -343,6 +354,100 @@ class Model:
             ends += f'<ownedEnd xmi:type="uml:Property" xmi:id="{self.new_id("End")}" type="{target}"/>'
         return f'<packagedElement xmi:type="uml:CommunicationPath" xmi:id="{xid}"{self.name()}>{ends}</packagedElement>'
 
+    # ---------------------------------- issue 30: shapes of real exports
+    def template_class(self) -> str:
+        """A class template (its parameters' placeholders are no classes), and a class bound to it."""
+        xid, sig, tp, pe = (self.new_id("Class"), self.new_id("Signature"), self.new_id("TemplateParameter"),
+                            self.new_id("Placeholder"))
+        default = (f'<ownedDefault xmi:type="uml:Class" xmi:id="{self.new_id("Placeholder")}" name="D"/>'
+                   if self.maybe() else "")
+        typed = (f'<ownedAttribute xmi:id="{self.new_id("Property")}" name="item" type="{pe}"/>'
+                 if self.maybe(0.7) else "")
+        text = (f'<packagedElement xmi:type="uml:Class" xmi:id="{xid}"{self.name()}>'
+                f'<ownedTemplateSignature xmi:type="uml:RedefinableTemplateSignature" xmi:id="{sig}" parameter="{tp}">'
+                f'<ownedParameter xmi:type="uml:ClassifierTemplateParameter" xmi:id="{tp}" parameteredElement="{pe}">'
+                f'<ownedParameteredElement xmi:type="uml:Class" xmi:id="{pe}" name="TemplateParameter1" '
+                f'templateParameter="{tp}"/>{default}</ownedParameter></ownedTemplateSignature>{typed}</packagedElement>')
+        if self.maybe():
+            text += (f'<packagedElement xmi:type="uml:Class" xmi:id="{self.new_id("Class")}"{self.name()}>'
+                     f'<templateBinding xmi:id="{self.new_id("Binding")}" signature="{sig}">'
+                     f'<parameterSubstitution xmi:id="{self.new_id("Substitution")}" formal="{tp}">'
+                     f'<ownedActual xmi:type="uml:Class" xmi:id="{self.new_id("Placeholder")}" name="A"/>'
+                     f'</parameterSubstitution></templateBinding></packagedElement>')
+        return text
+
+    def nested_composite(self) -> str:
+        """A composite with a part typed by a composite, and a connector to a port of a part of that part.
+
+        The end's path is a SysML NestedConnectorEnd (propertyPath as ids or child elements; right,
+        broken or dangling), or only a partWithPort that is a part of a part (UML without SysML).
+        """
+        inner, parts = self.composites[-1]
+        ports = self.ids.get("Port", [])
+        if not parts or not ports:
+            return ""
+        xid, outer = self.new_id("Component"), self.new_id("Property")
+        twin = self.new_id("Property") if self.maybe(0.3) else None  # a second part of the same type
+        body = f'<ownedAttribute xmi:id="{outer}" name="o" aggregation="composite" type="{inner}"/>'
+        if twin:
+            body += f'<ownedAttribute xmi:id="{twin}" name="o2" aggregation="composite" type="{inner}"/>'
+        kid, e1, e2 = self.new_id("Connector"), self.new_id("ConnectorEnd"), self.new_id("ConnectorEnd")
+        inner_part = self.pick(parts)
+        pwp = f' partWithPort="{inner_part}"' if self.maybe(0.8) else ""
+        body += (f'<ownedConnector xmi:type="uml:Connector" xmi:id="{kid}"{self.name()}>'
+                 f'<end xmi:type="uml:ConnectorEnd" xmi:id="{e1}" role="{self.pick(ports)}"{pwp}/>'
+                 f'<end xmi:type="uml:ConnectorEnd" xmi:id="{e2}" role="{self.pick(ports)}" partWithPort="{outer}"/>'
+                 f'</ownedConnector>')
+        if self.maybe(0.7):
+            path = self.pick([[outer, inner_part], [outer, inner_part], [inner_part, outer], [outer, "_nopath"]])
+            if self.maybe():
+                steps = "".join(f'<propertyPath xmi:idref="{p}"/>' for p in path)
+                self.stereotypes.append(f'<sysml:NestedConnectorEnd xmi:id="{self.new_id("Stereotype")}" '
+                                        f'base_ConnectorEnd="{e1}">{steps}</sysml:NestedConnectorEnd>')
+            else:
+                self.stereotypes.append(f'<sysml:NestedConnectorEnd xmi:id="{self.new_id("Stereotype")}" '
+                                        f'base_ConnectorEnd="{e1}" propertyPath="{" ".join(path)}"/>')
+        return f'<packagedElement xmi:type="uml:Component" xmi:id="{xid}"{self.name()}>{body}</packagedElement>'
+
+    def several_clients(self) -> str:
+        """A relationship with several clients and suppliers (UML Designer: client="class port component")."""
+        every = [i for v in self.ids.values() for i in v]
+        meta = self.pick(["InterfaceRealization", "Realization", "Usage", "ComponentRealization"])
+        clients = " ".join(self.pick(every) for _ in range(self.draw(st.integers(2, 4))))
+        targets = self.ids.get("Interface", []) + self.ids.get("Class", []) + every[:1]
+        suppliers = " ".join(self.pick(targets) for _ in range(self.draw(st.integers(1, 2))))
+        contract = f' contract="{suppliers}"' if meta == "InterfaceRealization" and self.maybe() else ""
+        return (f'<packagedElement xmi:type="uml:{meta}" xmi:id="{self.new_id(meta)}" client="{clients}" '
+                f'supplier="{suppliers}"{contract}/>')
+
+    def shapes_of_real_exports(self) -> list[str]:
+        """The issue-30 shapes: templates, nested ends, several clients, EA exposed interfaces, roles."""
+        body = []
+        if self.maybe(0.3):
+            body.append(self.template_class())
+        if self.composites and self.maybe(0.5):
+            body.append(self.nested_composite())
+        if self.ids and self.maybe(0.3):
+            body.append(self.several_clients())
+        if self.d == "ea" and self.ids.get("Component") and self.maybe(0.4):
+            # exposed interfaces EA leaves unclassified, or classified by a class
+            which = self.pick(["provided", "required"])
+            idref = f' xmi:idref="{self.some("Class")}"' if self.ids.get("Class") and self.maybe() else ""
+            body.append(f'<packagedElement xmi:type="uml:Component" xmi:id="{self.new_id("Component")}" name="x">'
+                        f'<{which} xmi:id="{self.new_id("Exposed")}" name="e"{idref}/></packagedElement>')
+        if self.ids.get("Component") and self.maybe(0.2):
+            # a Collaboration as an interaction's context: its roles
+            body.append(f'<packagedElement xmi:type="uml:Collaboration" xmi:id="{self.new_id("Collaboration")}" '
+                        f'name="ctx"><ownedAttribute xmi:id="{self.new_id("Property")}" name="r" '
+                        f'type="{self.some("Component")}"/></packagedElement>')
+        if self.maybe(0.15):
+            # a partial export: a Realization between packages whose supplier is not in the file
+            pkg = self.new_id("Package")
+            body.append(f'<packagedElement xmi:type="uml:Package" xmi:id="{pkg}" name="p"/>'
+                        f'<packagedElement xmi:type="uml:Realization" xmi:id="{self.new_id("Realization")}" '
+                        f'client="{pkg}" supplier="_notInThisFile"/>')
+        return body
+
     # ------------------------------------------------------------ model
     def write(self) -> str:
         body = []
@@ -368,6 +473,7 @@ class Model:
             body.append(f'<packagedElement xmi:type="uml:{dep}" xmi:id="{self.new_id(dep)}" '
                         f'client="{self.pick(every)}" supplier="{self.pick(every)}"/>')
         body += [self.artifact() for _ in range(self.draw(st.integers(0, 1)))]
+        body += self.shapes_of_real_exports()
         body += [self.node() for _ in range(self.draw(st.integers(1 if self.sound else 0, 2)))]
         if self.maybe(0.3):
             body.append(self.path())
@@ -390,10 +496,15 @@ class Model:
         else:
             model = f'<uml:Model xmi:type="uml:Model" xmi:id="_root" name="gen">{content}</uml:Model>'
         doc = f'<xmi:Documentation exporter="{ns["exporter"]}"/>' if ns["exporter"] else ""
-        return (f'<?xml version="1.0" encoding="UTF-8"?>\n<xmi:XMI xmi:version="{ns["version"]}" '
+        text = (f'<?xml version="1.0" encoding="UTF-8"?>\n<xmi:XMI xmi:version="{ns["version"]}" '
                 f'xmlns:xmi="{ns["xmi"]}" xmlns:uml="{ns["uml"]}" '
-                f'xmlns:robomda="http://robomda.org/profile/robomda/1" xmlns:other="http://example.org/other">'
+                f'xmlns:robomda="http://robomda.org/profile/robomda/1" xmlns:other="http://example.org/other" '
+                f'xmlns:sysml="http://www.omg.org/spec/SysML/20181001/SysML">'
                 f'{doc}{model}{"".join(self.stereotypes)}</xmi:XMI>\n')
+        if self.d == "xsi":  # GenMyModel writes xsi:type where the others write xmi:type
+            text = text.replace(' xmi:type="', ' xsi:type="').replace(
+                "<xmi:XMI ", '<xmi:XMI xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" ', 1)
+        return text
 
 
 @st.composite
@@ -409,7 +520,7 @@ def models(draw) -> tuple[str, str, str]:
 def test_random_models_never_crash_and_drop_nothing_in_silence(model: tuple[str, str, str]) -> None:
     dialect, text, lib = model
     with tempfile.TemporaryDirectory() as tmp:
-        path = Path(tmp) / "m" / ("model.xmi" if dialect != "eclipse" else "model.uml")
+        path = Path(tmp) / "m" / ("model.xmi" if dialect not in ("eclipse", "xsi") else "model.uml")
         path.parent.mkdir()
         path.write_text(text, encoding="utf-8")
         if lib in ("present", "outside"):

@@ -25,7 +25,9 @@ DEPENDENCIES = {"Dependency", "Usage", "Realization", "InterfaceRealization", "C
                 "Abstraction", "Deployment", "Manifestation"}
 KINDS = CLASSIFIERS | DEPENDENCIES | {"Port", "Property", "Operation", "Connector", "CommunicationPath"}
 # the owners whose Properties and Operations are features robomda reads
-FEATURE_OWNERS = CLASSIFIERS | {"DataType", "Signal"}
+FEATURE_OWNERS = CLASSIFIERS | {"DataType", "Signal", "Collaboration"}
+# Enterprise Architect's exposed interfaces: <provided> / <required> of these
+EXPOSING = {"Component", "Class", "Port"}
 
 # what XMI lets a tool leave out: the declared type of the feature
 _DEFAULT_META = {
@@ -34,6 +36,11 @@ _DEFAULT_META = {
     "deployment": "Deployment", "manifestation": "Manifestation", "ownedConnector": "Connector",
     "nestedNode": "Node", "nestedArtifact": "Artifact", "ownedEnd": "Property",
 }
+
+
+# tool annotations, and the placeholders of template parameters (no element
+# of the user's model: a templated classifier is named by IMP118 instead)
+_NOT_THE_MODEL = {"eAnnotations", "ownedParameteredElement", "ownedDefault", "ownedActual"}
 
 
 def _is_xmi(uri: str | None) -> bool:
@@ -54,7 +61,7 @@ def _xmi_attr(el: etree._Element, name: str) -> str | None:
 
 def meta(el: etree._Element) -> str:
     """The UML metaclass of an XMI element ('' when unknown)."""
-    t = _xmi_attr(el, "type")
+    t = _xmi_attr(el, "type") or el.get("{http://www.w3.org/2001/XMLSchema-instance}type")
     if t:
         return t.split(":")[-1]
     q = etree.QName(el)
@@ -73,7 +80,7 @@ def understood_ids(xmi: Path) -> dict[str, str]:
 
     def skip(el: etree._Element) -> bool:
         q = etree.QName(el)
-        return (q.localname == "Extension" and _is_xmi(q.namespace)) or q.localname == "eAnnotations" \
+        return (q.localname == "Extension" and _is_xmi(q.namespace)) or q.localname in _NOT_THE_MODEL \
             or meta(el) in ("Profile", "Stereotype")
 
     def walk(el: etree._Element, owner_meta: str) -> None:
@@ -82,7 +89,9 @@ def understood_ids(xmi: Path) -> dict[str, str]:
                 continue
             m = meta(child)
             xid = _xmi_attr(child, "id")
-            if xid and m in KINDS and child.get("href") is None and _xmi_attr(child, "idref") is None:
+            if xid and child.tag in ("provided", "required") and owner_meta in EXPOSING:
+                found.setdefault(xid, "exposed " + child.tag)
+            elif xid and m in KINDS and child.get("href") is None and _xmi_attr(child, "idref") is None:
                 if m not in ("Property", "Operation") or owner_meta in FEATURE_OWNERS:
                     # a Property / Operation counts as a feature of a classifier
                     if not (m == "Property" and etree.QName(child).localname == "ownedEnd"):
@@ -111,11 +120,16 @@ def pim_ids(pim: etree._Element) -> set[str]:
     for el in pim.iter(etree.Element):
         if el.get("id"):
             ids.add(el.get("id"))
+            # a pair of a relationship with several clients: robomda.<ID>.<n>
+            pair = _PAIR.match(el.get("id"))
+            if pair:
+                ids.add(pair.group(1))
         if el.get("via"):
             ids.update(el.get("via").split())
     return ids
 
 
+_PAIR = re.compile(r"^robomda\.(.+)\.[0-9]+$")
 _NAMED = re.compile(r"\[xmi:id=([^\]]*)\]")
 
 

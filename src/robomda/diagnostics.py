@@ -389,10 +389,15 @@ def _xmi_id(el: etree._Element) -> str | None:
     return None
 
 
+_XSI_TYPE = "{http://www.w3.org/2001/XMLSchema-instance}type"
+
+
 def _kind(el: etree._Element) -> str:
     for key, value in el.attrib.items():
         if key.startswith("{") and key.endswith("}type") and "xmi" in key.lower():
             return value
+    if el.get(_XSI_TYPE):  # EMF and GenMyModel may write xsi:type instead
+        return el.get(_XSI_TYPE, "")
     qname = etree.QName(el)
     prefix = el.prefix
     return f"{prefix}:{qname.localname}" if prefix else qname.localname

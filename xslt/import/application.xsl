@@ -39,7 +39,9 @@
     Collaboration, gives provided = the interfaces it realizes, required =
     those it uses, swapped when conjugated), explicit provided / required
     (EA children; Usage or InterfaceRealization whose client is the port;
-    @via names the dependencies), isConjugated, isService, isBehavior.
+    @via names the dependencies and the EA children), isConjugated,
+    isService, isBehavior. An EA exposed interface that names no interface
+    of the model is not imported (IMP119, report.xsl).
   - Typed elements: a type that is an element of the model the PIM has no
     element for (a behaviour, an actor ...) gives type-name and
     type-metaclass, no @type; warnings IMP101 (no type), IMP102 (not a
@@ -48,8 +50,11 @@
     parts of the classifier: fp:connector-owner): kind from @kind, else
     delegation when an end has no
     partWithPort and its role is a port of the connector's owner; ends with
-    role and part (partWithPort). A connector with an end outside the model
-    (href role) is not written.
+    role and part (partWithPort), and the path of parts down to that part
+    when it is a part of a part (SysML NestedConnectorEnd propertyPath, or
+    the one chain of parts to a partWithPort: connector-ends.xsl). A
+    connector with an end outside the model (href role), or with an end
+    whose path cannot be followed, is not written.
   - Dependency (exactly xmi:type uml:Dependency, not Usage / Realization ...)
     marked as a deployment-sequence constraint (fp:is-start-after: the
     robomda stereotype StartAfter, else the name "startAfter", case-
@@ -84,12 +89,14 @@
       select="('Package', 'Model', 'PrimitiveType', 'DataType', 'Signal', 'Enumeration', 'Class',
                'Interface', 'Component', 'Dependency')"/>
   <!-- what never holds a packageable element robomda reads: features,
-       relationships, values, profiles -->
+       relationships, values, profiles, template signatures and bindings
+       (their placeholders, x:type TemplateParameter, are no classes) -->
   <xsl:variable name="leaf-metas" as="xs:string+"
       select="('Property', 'Port', 'Operation', 'Parameter', 'Connector', 'ConnectorEnd', 'Generalization',
                'Comment', 'Constraint', 'EnumerationLiteral', 'Association', 'Profile', 'Stereotype',
                'Extension', 'ProfileApplication', 'PackageImport', 'ElementImport', 'CommunicationPath',
-               $dependency-metas, 'Abstraction', 'Dependency', 'InstanceSpecification', 'Slot')"/>
+               $dependency-metas, 'Abstraction', 'Dependency', 'InstanceSpecification', 'Slot',
+               'TemplateSignature', 'RedefinableTemplateSignature', 'TemplateBinding', 'TemplateParameter')"/>
 
   <!-- the two lists as maps: one look-up per child element -->
   <xsl:variable name="packageable-map" as="map(xs:string, xs:boolean)"
@@ -106,7 +113,9 @@
        Nodes), which keep their qualified name under that owner -->
   <xsl:function name="fp:owned-packageables" as="element()*">
     <xsl:param name="element" as="element()"/>
-    <xsl:for-each select="$element/*[@x:type][not(@href or @x:idref)]">
+    <!-- an EA exposed interface (<provided>, <required>) is no interface
+         of its own, whatever its xmi:type (dialect-ea.xsl) -->
+    <xsl:for-each select="$element/*[@x:type][not(@href or @x:idref)][not(self::provided or self::required)]">
       <xsl:variable name="meta" as="xs:string" select="@x:type"/>
       <xsl:choose>
         <xsl:when test="map:contains($packageable-map, $meta)">
@@ -205,8 +214,13 @@
                     then fp:targets(., 'realizingClassifier')
                     else (fp:targets(., 'client') except $classifier,
                           fp:targets(., 'supplier') except $classifier)[1]"/>
+        <!-- a realization of several components: each its own ids -->
+        <xsl:variable name="id" as="xs:string" select="fp:id($classifier)"/>
+        <xsl:variable name="sides" as="xs:string*"
+            select="if (fp:ref-ids(., 'supplier') = $id) then fp:ref-ids(., 'supplier') else fp:ref-ids(., 'client')"/>
+        <xsl:variable name="count" as="xs:integer" select="max((count(fp:ref-ids(., 'realizingClassifier')), 1))"/>
         <xsl:for-each select="$classifiers">
-          <pim:realization id="{fp:nth-id($realization, position())}" classifier="{fp:id(.)}"/>
+          <pim:realization id="{fp:pair-id($realization, $sides, $id, $count, position())}" classifier="{fp:id(.)}"/>
         </xsl:for-each>
       </xsl:for-each>
       <xsl:call-template name="tp:classifier-body">
@@ -240,9 +254,14 @@
                 | key('fp:dep-by-client', $id)[@x:type = ('InterfaceRealization', 'Realization')]"/>
     <xsl:for-each select="$realizations">
       <xsl:variable name="realization" as="element()" select="."/>
+      <!-- a realization with several clients gives each its own ids -->
+      <xsl:variable name="count" as="xs:integer"
+          select="count((fp:ref-ids(., 'contract'), fp:ref-ids(.,'supplier')[empty(fp:ref-ids($realization, 'contract'))]))"/>
       <xsl:for-each select="fp:realized-interfaces(.)">
-        <pim:provides id="{fp:nth-id($realization, position())}" interface="{fp:id(.)}">
-          <xsl:if test="position() eq 1">
+        <xsl:variable name="pair-id" as="xs:string"
+            select="fp:pair-id($realization, fp:ref-ids($realization, 'client'), $id, $count, position())"/>
+        <pim:provides id="{$pair-id}" interface="{fp:id(.)}">
+          <xsl:if test="$pair-id eq fp:id($realization)">
             <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="$realization"/></xsl:call-template>
           </xsl:if>
         </pim:provides>
@@ -263,12 +282,12 @@
     <xsl:param name="id" as="xs:string"/>
     <xsl:for-each select="key('fp:dep-by-client', $id)[@x:type eq 'Usage']">
       <xsl:variable name="usage" as="element()" select="."/>
-      <xsl:variable name="clients" as="xs:string*" select="distinct-values(fp:ref-ids(., 'client'))"/>
-      <xsl:variable name="offset" as="xs:integer"
-          select="(index-of($clients, $id)[1] - 1) * count(fp:ref-ids(., 'supplier'))"/>
+      <xsl:variable name="count" as="xs:integer" select="count(fp:ref-ids(., 'supplier'))"/>
       <xsl:for-each select="fp:used-interfaces(.)">
-        <pim:requires id="{fp:nth-id($usage, $offset + position())}" interface="{fp:id(.)}">
-          <xsl:if test="position() eq 1 and $offset eq 0">
+        <xsl:variable name="pair-id" as="xs:string"
+            select="fp:pair-id($usage, fp:ref-ids($usage, 'client'), $id, $count, position())"/>
+        <pim:requires id="{$pair-id}" interface="{fp:id(.)}">
+          <xsl:if test="$pair-id eq fp:id($usage)">
             <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="$usage"/></xsl:call-template>
           </xsl:if>
         </pim:requires>
@@ -333,12 +352,12 @@
       use="fp:connector-owner(.)"/>
 
   <!-- the id of the classifier a connector belongs to: the owner of the
-       part (partWithPort) of its first end that has one, else of the first
-       end's role -->
+       first part of its ends (the first step of a SysML propertyPath, else
+       partWithPort: fp:path-start), else of the first end's role -->
   <xsl:function name="fp:connector-owner" as="xs:string?">
     <xsl:param name="connection" as="element()"/>
     <xsl:variable name="owner" as="element()?"
-        select="($connection/end ! fp:targets(., 'partWithPort'), $connection/end ! fp:targets(., 'role'))[1]/.."/>
+        select="($connection/end ! fp:path-start(.), $connection/end ! fp:targets(., 'role'))[1]/.."/>
     <xsl:sequence select="$owner[@x:type = ('Class', 'Component', 'Interface')] ! fp:id(.)"/>
   </xsl:function>
 
@@ -506,6 +525,7 @@
         select="$own-realized | (if ($conjugated) then $protocol-used else $protocol-realized)"/>
     <xsl:variable name="required-deps" as="element()*"
         select="$own-used | (if ($conjugated) then $protocol-realized else $protocol-used)"/>
+    <xsl:variable name="port" as="element()" select="."/>
     <pim:port id="{$id}" name="{@name}" qualified-name="{fp:qname(., $root)}">
       <xsl:sequence select="$typed"/>
       <xsl:attribute name="visibility" select="fp:visibility(.)"/>
@@ -521,7 +541,8 @@
         <xsl:variable name="interface" as="xs:string" select="."/>
         <pim:provided interface="{$interface}">
           <xsl:call-template name="tp:via">
-            <xsl:with-param name="deps" select="$provided-deps[fp:realized-interfaces(.) ! fp:id(.) = $interface]"/>
+            <xsl:with-param name="deps" select="fp:exposed($port, 'provided')[fp:interface-of(.) ! fp:id(.) = $interface],
+                $provided-deps[fp:realized-interfaces(.) ! fp:id(.) = $interface]"/>
           </xsl:call-template>
         </pim:provided>
       </xsl:for-each>
@@ -533,7 +554,8 @@
         <xsl:variable name="interface" as="xs:string" select="."/>
         <pim:required interface="{$interface}">
           <xsl:call-template name="tp:via">
-            <xsl:with-param name="deps" select="$required-deps[fp:used-interfaces(.) ! fp:id(.) = $interface]"/>
+            <xsl:with-param name="deps" select="fp:exposed($port, 'required')[fp:interface-of(.) ! fp:id(.) = $interface],
+                $required-deps[fp:used-interfaces(.) ! fp:id(.) = $interface]"/>
           </xsl:call-template>
         </pim:required>
       </xsl:for-each>
@@ -567,7 +589,8 @@
   </xsl:template>
 
   <!-- @via: the ids of the dependencies $deps that give a port its
-       provided or required interface -->
+       provided or required interface, and of its EA exposed interfaces
+       (<provided>, <required>) that name it -->
   <xsl:template name="tp:via" as="attribute()?">
     <xsl:param name="deps" as="element()*"/>
     <xsl:if test="exists($deps)">
@@ -580,7 +603,10 @@
     <!-- the classifier the connector belongs to -->
     <xsl:param name="owner" as="element()" select=".."/>
     <xsl:variable name="ends" as="element()*" select="end[exists(fp:targets(., 'role'))]"/>
-    <xsl:if test="count($ends) ge 2">
+    <!-- the path of parts of each end (connector-ends.xsl): a connector
+         with an end whose path cannot be followed is not imported (IMP110) -->
+    <xsl:variable name="paths" as="map(*)*" select="$ends ! fp:end-path(., $owner)"/>
+    <xsl:if test="count($ends) ge 2 and empty($paths?problem)">
       <xsl:variable name="kind" as="xs:string" select="
           if (@kind = ('assembly', 'delegation')) then string(@kind)
           else if (some $end in $ends satisfies
@@ -591,9 +617,18 @@
       <pim:connector id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}" kind="{$kind}">
         <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
         <xsl:for-each select="$ends">
+          <xsl:variable name="i" as="xs:integer" select="position()"/>
+          <xsl:variable name="steps" as="element()*" select="$paths[$i]?steps"/>
           <pim:end id="{fp:id(.)}" role="{fp:id(fp:targets(., 'role')[1])}">
-            <xsl:for-each select="fp:targets(., 'partWithPort')[1]">
+            <xsl:for-each select="$steps[last()]">
               <xsl:attribute name="part" select="fp:id(.)"/>
+            </xsl:for-each>
+            <xsl:if test="count($steps) gt 1">
+              <xsl:attribute name="path" select="$steps ! fp:id(.)"/>
+            </xsl:if>
+            <!-- the SysML NestedConnectorEnd that gave the path: read -->
+            <xsl:for-each select="fp:nested-end(.)[@x:id]">
+              <xsl:attribute name="via" select="@x:id"/>
             </xsl:for-each>
           </pim:end>
         </xsl:for-each>

@@ -14,7 +14,11 @@
            import.xsl). A reference is dangling when it is an id that no
            element of the file (outside xmi:Extension) carries and that is
            not a tool built-in type (EAJava_int ...). An href into another
-           file is never dangling.
+           file is never dangling. A relationship robomda would not import
+           whatever its missing ends are (its clients in the file, or its
+           suppliers, are none of a classifier, port, protocol or EA
+           exposed interface: fp:unused-anyway) is not checked: a partial
+           export leaves such ends out, and report.xsl names it (IMP112).
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -66,8 +70,12 @@
     <xsl:variable name="meta" as="xs:string" select="fp:meta($element)"/>
     <!-- a plain Dependency is checked only when it is a deployment-sequence
          constraint (StartAfter): every other one is not imported -->
+    <!-- nor is a relationship that robomda would not import whatever its
+         missing ends are (a Realization between packages in a partial
+         export): report.xsl names it and its missing ends (IMP112) -->
     <xsl:variable name="rule" as="map(*)?"
         select="if ($meta eq 'Dependency' and not(fp:is-start-after($element))) then ()
+                else if (fp:unused-anyway($element, $meta)) then ()
                 else $checked-references($meta)"/>
     <xsl:if test="exists($rule)">
       <xsl:for-each select="$rule?refs">
@@ -92,6 +100,29 @@
                      || '): remove one generalization of the cycle'
         }"/>
     </xsl:if>
+  </xsl:function>
+
+  <!-- true when $rel (a Usage, Realization, InterfaceRealization or
+       ComponentRealization) has clients in the file and none robomda can
+       use as one, or suppliers in the file and none it can use as one
+       (a package, a comment, a use case ...): it is not imported, whatever
+       its references that are not in the file would be -->
+  <xsl:function name="fp:unused-anyway" as="xs:boolean">
+    <xsl:param name="rel" as="element()"/>
+    <xsl:param name="meta" as="xs:string"/>
+    <xsl:variable name="clients" as="element()*" select="fp:targets($rel, 'client')"/>
+    <xsl:variable name="suppliers" as="element()*" select="fp:targets($rel, 'supplier')"/>
+    <xsl:sequence select="$meta = ('Usage', 'Realization', 'InterfaceRealization', 'ComponentRealization')
+        and ((exists($clients) and (every $c in $clients satisfies not(fp:usable-end($c))))
+             or (exists($suppliers) and (every $s in $suppliers satisfies not(fp:usable-end($s)))))"/>
+  </xsl:function>
+
+  <!-- an element robomda can read at an end of a Usage or Realization: a
+       classifier, port or protocol it imports, or an EA exposed interface -->
+  <xsl:function name="fp:usable-end" as="xs:boolean">
+    <xsl:param name="end" as="element()"/>
+    <xsl:sequence select="fp:meta($end) = ('Class', 'Component', 'Interface', 'Port', 'Collaboration')
+                          or local-name($end) = ('provided', 'required')"/>
   </xsl:function>
 
   <!-- true when going up the generalizations from the general of $g comes

@@ -24,7 +24,10 @@
     (absent when the exposed interface is not classified; an xmi:type
     uml:Interface on it does not make it an interface of its own). A Usage or
     Dependency may connect such exposed elements; fp:interface-of sees
-    through them to the interface.
+    through them to the interface. An exposed element without xmi:idref
+    (EA leaves it unclassified) or naming no interface is not an
+    interface, even with xmi:type uml:Interface (application.xsl leaves it
+    out of the packageable elements); report.xsl names it (IMP119).
   - Component realization: EA writes a generic uml:Realization from the
     realizing class (client) to the component (supplier).
   - Dependencies between parts (a deployment-sequence StartAfter): a

@@ -22,6 +22,17 @@
     packagedElements of the package Papyrus creates them in, client and
     supplier as id attributes; the stereotype application is a top-level
     robomda:StartAfter with base_Dependency (application.xsl reads both).
+  - EMF reads xsi:type as well as xmi:type, and some exporters
+    (GenMyModel) write only xsi:type: the normalisation reads it as
+    xmi:type (xmi-common.xsl). UML Designer writes a relationship with
+    several clients as one id list (client="class port component"):
+    application.xsl imports each pair (fp:pair-id).
+  - Papyrus' SysML NestedConnectorEnd (propertyPath as an id list) gives
+    the path of a connector end on a port of a part of a part
+    (connector-ends.xsl).
+  - Template signatures: the placeholders Papyrus writes for template
+    parameters (ownedParameteredElement "TemplateParameter1") are no
+    classes (xmi-common.xsl; IMP118, report.xsl).
   - Empty default values are written <defaultValue xmi:type=
     "uml:LiteralString"><value xsi:nil="true"/></defaultValue>: no default.
   - Tool: Papyrus when a namespace, href or exporter names Papyrus (its

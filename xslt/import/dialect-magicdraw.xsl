@@ -17,6 +17,10 @@
     real name (last segment of the path).
   - Comments carry the text in a body attribute, not a body element
     (handled by fp:doc for every tool).
+  - A connector end on a port of a part of a part carries the SysML
+    NestedConnectorEnd stereotype, propertyPath as child elements
+    (xmi:idref) or an id list, its last step also written as partWithPort
+    (connector-ends.xsl reads every form).
   - Tool: xmi:Documentation/xmi:exporter "MagicDraw" / "Cameo" / "No Magic",
     or the magicdraw.com namespaces.
 -->

@@ -30,7 +30,8 @@
            urdf.xsl (the kinematic chains of robot Devices, counted in
            the URDF files their Robot stereotype names: IMP040,
            IMP042-IMP048),
-           check.xsl (dangling references), application.xsl, platform.xsl,
+           check.xsl (dangling references), application.xsl,
+           connector-ends.xsl (nested connector ends), platform.xsl,
            stereotypes.xsl, dialect-*.xsl, ../common/profile.xsl (the
            robomda profile URI); data:
            ../common/primitive-types.xml.
@@ -108,6 +109,7 @@
   <xsl:include href="check.xsl"/>
   <xsl:include href="stereotypes.xsl"/>
   <xsl:include href="application.xsl"/>
+  <xsl:include href="connector-ends.xsl"/>
   <xsl:include href="platform.xsl"/>
   <xsl:include href="report.xsl"/>
   <xsl:include href="dialect-eclipse.xsl"/>

@@ -11,7 +11,8 @@
            - mode mp:normalise: a copy of the XMI in fixed namespaces
              (UML elements in urn:robomda:import:uml, XMI elements and
              attributes in urn:robomda:import:xmi, xmi:type reduced to the
-             UML metaclass name), without xmi:Extension / eAnnotations
+             UML metaclass name; an xsi:type, as EMF accepts and GenMyModel
+             writes, read as xmi:type when there is none), without xmi:Extension / eAnnotations
              blocks, and with x:type on every element whose metaclass is
              known (written or implied: fp:meta), so rules and keys test
              @x:type instead of calling a function. Every later step reads
@@ -46,6 +47,7 @@
   <!-- ===================================================== namespaces -->
   <xsl:variable name="U" as="xs:string" select="'urn:robomda:import:uml'"/>
   <xsl:variable name="X" as="xs:string" select="'urn:robomda:import:xmi'"/>
+  <xsl:variable name="XSI" as="xs:string" select="'http://www.w3.org/2001/XMLSchema-instance'"/>
 
   <!-- UML metamodel namespaces (not profiles such as .../StandardProfile) -->
   <xsl:function name="fp:is-uml-ns" as="xs:boolean">
@@ -115,12 +117,28 @@
       <!-- x:type of an element without xmi:type: the declared type of its
            feature -->
       <xsl:variable name="meta" as="xs:string?" select="$default-metas(local-name())"/>
-      <xsl:if test="exists($meta) and not(@*:type[namespace-uri()][fp:xmi-ns(namespace-uri())])">
+      <xsl:if test="exists($meta) and not(@*:type[namespace-uri()][fp:type-ns(namespace-uri())])">
         <xsl:attribute name="x:type" select="$meta"/>
       </xsl:if>
       <xsl:if test="@href">
         <xsl:apply-templates select="." mode="mp:normalise-extra"/>
       </xsl:if>
+      <xsl:apply-templates select="node()" mode="mp:normalise"/>
+    </xsl:copy>
+  </xsl:template>
+
+  <!-- the placeholders of a template: the element a template parameter
+       owns (ownedParameteredElement, ownedDefault) and the actual a
+       template binding owns (ownedActual). They are no element of the
+       user's model (Papyrus writes a Class "TemplateParameter1" for each
+       parameter): x:type TemplateParameter, so no rule imports one as a
+       classifier and a type reference to one names it (type-metaclass),
+       never a class of the application. -->
+  <xsl:template match="ownedParameteredElement | ownedDefault | ownedActual" mode="mp:normalise" priority="3"
+                as="element()">
+    <xsl:copy copy-namespaces="no">
+      <xsl:call-template name="tp:normalise-attributes"/>
+      <xsl:attribute name="x:type" select="'TemplateParameter'"/>
       <xsl:apply-templates select="node()" mode="mp:normalise"/>
     </xsl:copy>
   </xsl:template>
@@ -132,7 +150,7 @@
       <xsl:when test="fp:uml-ns($ns)">
         <xsl:element name="u:{local-name()}" namespace="{$U}">
           <xsl:call-template name="tp:normalise-attributes"/>
-          <xsl:if test="not(@*:type[fp:xmi-ns(namespace-uri())])">
+          <xsl:if test="not(@*:type[fp:type-ns(namespace-uri())])">
             <xsl:attribute name="x:type" namespace="{$X}" select="local-name()"/>
           </xsl:if>
           <xsl:if test="@href">
@@ -150,7 +168,7 @@
       <xsl:otherwise>
         <xsl:element name="{name()}" namespace="{$ns}">
           <xsl:call-template name="tp:normalise-attributes"/>
-          <xsl:if test="$ns eq $U and not(@*:type[fp:is-xmi-ns(namespace-uri())])">
+          <xsl:if test="$ns eq $U and not(@*:type[fp:type-ns(namespace-uri())])">
             <xsl:attribute name="x:type" namespace="{$X}" select="local-name()"/>
           </xsl:if>
           <xsl:if test="@href">
@@ -190,12 +208,25 @@
             </xsl:otherwise>
           </xsl:choose>
         </xsl:when>
+        <!-- xsi:type (EMF accepts it, GenMyModel writes it): the
+             metaclass as xmi:type gives it, unless xmi:type is there too -->
+        <xsl:when test="local-name() eq 'type' and namespace-uri() eq $XSI
+                        and not(../@*:type[fp:xmi-ns(namespace-uri())])">
+          <xsl:attribute name="x:type" select="fp:norm-type(.)"/>
+        </xsl:when>
         <xsl:otherwise>
           <xsl:copy-of select="."/>
         </xsl:otherwise>
       </xsl:choose>
     </xsl:for-each>
   </xsl:template>
+
+  <!-- a namespace whose "type" attribute gives an element's metaclass:
+       XMI's (xmi:type) or XML Schema instance's (xsi:type) -->
+  <xsl:function name="fp:type-ns" as="xs:boolean">
+    <xsl:param name="uri" as="xs:string"/>
+    <xsl:sequence select="$uri eq $XSI or fp:xmi-ns($uri)"/>
+  </xsl:function>
 
   <!-- xmi:type="uml:Class" -> "Class"; a non-UML type -> "{uri}local".
        The UML namespace is looked up first, the pattern runs only for
@@ -296,6 +327,24 @@
     <xsl:param name="element" as="element()"/>
     <xsl:param name="name" as="xs:integer"/>
     <xsl:sequence select="if ($name eq 1) then fp:id($element) else 'robomda.' || fp:id($element) || '.' || $name"/>
+  </xsl:function>
+
+  <!-- the id of the PIM element made for one pair of a relationship with
+       several clients or suppliers (UML Designer: client="class port
+       component"): $rel's ids are numbered in blocks of $count, one block
+       per id of $sides (the relationship's ids at the end where $side is:
+       its clients, say), in their order; $n is the pair's place in
+       $side's block. The first pair keeps $rel's own id, each other one
+       gets a deterministic id of its own (fp:nth-id). A $side that is not
+       among $sides (an interfaceRealization owned by its client, which
+       it does not name) takes the first block. -->
+  <xsl:function name="fp:pair-id" as="xs:string">
+    <xsl:param name="rel" as="element()"/>
+    <xsl:param name="sides" as="xs:string*"/>
+    <xsl:param name="side" as="xs:string"/>
+    <xsl:param name="count" as="xs:integer"/>
+    <xsl:param name="n" as="xs:integer"/>
+    <xsl:sequence select="fp:nth-id($rel, (max((index-of(distinct-values($sides), $side)[1], 1)) - 1) * $count + $n)"/>
   </xsl:function>
 
   <!-- the UML metaclass: xmi:type, else the element name (root uml:Model),

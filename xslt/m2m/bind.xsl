@@ -285,6 +285,13 @@
               'message': 'dangling reference ' || name(.) || '=''' || . || ''' on ' || local-name(..) }"/>
         </xsl:if>
       </xsl:for-each>
+      <xsl:for-each select="$model//pim:connector/pim:end[@path]">
+        <xsl:variable name="end" as="element()" select="."/>
+        <xsl:for-each select="tokenize(@path)[empty(key('fp:id', ., $root))]">
+          <xsl:sequence select="map { 'code': 'BND001', 'id': string($end/../@id), 'message':
+              'dangling reference path=''' || . || ''' on end' }"/>
+        </xsl:for-each>
+      </xsl:for-each>
       <xsl:for-each select="$model//pim:deployment">
         <xsl:variable name="deployment" as="element(pim:deployment)" select="."/>
         <xsl:for-each select="tokenize(@deployed)[empty(key('fp:id', ., $root))]">

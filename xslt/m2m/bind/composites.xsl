@@ -31,6 +31,11 @@
   A composite that is a part of itself at any depth is refused before the
   walk (BND013), so the walk ends.
 
+  Nested ends: an end with @path (the import's SysML NestedConnectorEnd
+  propertyPath) joins the port of the part at that path below the
+  connector's composite: "a.b" of a connector drawn in the composite at
+  path "top" is the instance "top.a.b".
+
   Delegation: a connector of a composite with kind delegation, or with an
   end on a port of the composite itself (no partWithPort), promotes the
   inner ports it joins: a connector end on port q of a part typed by a
@@ -193,7 +198,8 @@
   </xsl:function>
 
   <!-- the instance ports connector end $end stands for, drawn in the
-       composite at path $segments: the port of the part's instance, or,
+       composite at path $segments: the port of the part's instance (of
+       the part at the end's @path, for a nested end), or,
        for a part typed by a composite, the inner ports that the
        composite's delegations from the end's port reach (any depth); an
        fp:unresolved for a promoted port delegated to nothing -->
@@ -202,8 +208,15 @@
     <xsl:param name="segments" as="xs:string*"/>
     <xsl:variable name="root" as="document-node()" select="root($end)"/>
     <xsl:variable name="part" as="element(pim:part)?" select="key('fp:id', $end/@part, $root)[self::pim:part]"/>
-    <xsl:variable name="type" as="element(pim:component)?" select="$part ! fp:part-component(.)"/>
-    <xsl:variable name="path" as="xs:string*" select="$type ! ($segments, fp:segment($part, .))"/>
+    <!-- a nested end (@path): the parts above @part, each typed by a composite -->
+    <xsl:variable name="outer" as="element(pim:part)*"
+        select="tokenize($end/@path)[position() lt last()] ! key('fp:id', ., $root)[self::pim:part]"/>
+    <xsl:variable name="type" as="element(pim:component)?"
+        select="if (count($outer) ne max((count(tokenize($end/@path)) - 1, 0))
+                    or (some $o in $outer satisfies not(fp:is-composite(fp:part-component($o))))) then ()
+                else $part ! fp:part-component(.)"/>
+    <xsl:variable name="path" as="xs:string*"
+        select="$type ! ($segments, $outer ! fp:segment(., fp:part-component(.)), fp:segment($part, .))"/>
     <xsl:choose>
       <xsl:when test="empty($type)"/>
       <xsl:when test="fp:is-composite($type)">

@@ -146,7 +146,8 @@
     <xsl:variable name="data" as="element()*" select="if (exists($interfaces)) then $interfaces/pim:attribute else $port"/>
     <xsl:variable name="labels" as="xs:string*"
         select="distinct-values($data ! (string((@type-name, @primitive, '?')[1]) || fp:multiplicity-label(.)))"/>
-    <xsl:sequence select="string-join((key('fp:id', $end/@part, $root)/@name, $port/@name), '.') || ': '
+    <xsl:sequence select="string-join(((if ($end/@path) then tokenize($end/@path) else $end/@part) ! key('fp:id', ., $root)/@name,
+                                       $port/@name), '.') || ': '
         || (if (empty($labels)) then 'no data' else string-join($labels, ' / '))"/>
   </xsl:function>
 
