@@ -233,8 +233,7 @@ def _check_order(hosts: Hosts, slow: bool) -> None:
     vision, control = hosts.lines("vision_pc"), hosts.lines("control_pc")
     camera_up = _when(vision, "camera Running")
     assert _when(vision, "starting process 2 'rttVision'") >= camera_up
-    vision_up = _when(vision, "vision Running") if "vision Running" in [l for _, l in vision] else None
-    vision_up = vision_up or _when(control, "vision Running")
+    vision_up = _when(vision, "vision Running")
     assert _when(control, "starting process 3 'rttControl'") >= vision_up
     assert _when(control, "controller Running") > vision_up
     if slow:  # vision took its 3 s to configure, and the control process waited for it
