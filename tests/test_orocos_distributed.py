@@ -57,9 +57,9 @@ pytestmark = [
                        reason="no omniNames / nameclt (Debian omniorb-nameserver, omniorb; toolchains/orocos/build.sh)"),
 ]
 
-INSTANCES = ["camera", "vision", "controlLoop", "arm", "controller"]
+INSTANCES = ["camera", "vision", "forceSensor", "controlLoop", "arm", "controller"]
 INPUTS = [("vision", "visionValue"), ("vision", "toolPose"), ("controller", "channelPosition"),
-          ("controller", "armState"), ("arm", "armCommand")]
+          ("controller", "wrench"), ("controller", "armState"), ("arm", "armCommand")]
 BAD = re.compile(r"\[ *(ERROR|CRITICAL|FATAL) *\]|\bERROR\b|CRITICAL|FATAL")
 STAMP = re.compile(r"\[(\d+\.\d+)\]: (.*)$")
 
@@ -154,17 +154,20 @@ class Hosts:
         self.scripts: dict[str, subprocess.Popen] = {}
         self.outputs: dict[str, Path] = {}
 
-    def start(self, host: str) -> None:
-        """Start deploy/start_HOST.sh and wait until it says every process of the host started."""
-        out = self.tmp / f"start_{host}.out"
-        self.outputs[host] = out
-        with out.open("w") as f:
-            self.scripts[host] = subprocess.Popen(["bash", "-c", self.prefix + f"exec ./start_{host}.sh {self.fmt}"],
-                                                  cwd=self.deploy, env=self.env, stdout=f, stderr=subprocess.STDOUT,
-                                                  stdin=subprocess.DEVNULL)
-        deadline = time.monotonic() + 150
-        while "started; Ctrl-C stops them" not in out.read_text(errors="replace"):
-            assert self.scripts[host].poll() is None, self.report()
+    def start(self, *hosts: str) -> None:
+        """Start deploy/start_HOST.sh of each host, in this order, and wait until each says every
+        process of its host started (the processes of the two hosts alternate in the start order)."""
+        for host in hosts:
+            out = self.tmp / f"start_{host}.out"
+            self.outputs[host] = out
+            with out.open("w") as f:
+                self.scripts[host] = subprocess.Popen(["bash", "-c", self.prefix + f"exec ./start_{host}.sh {self.fmt}"],
+                                                      cwd=self.deploy, env=self.env, stdout=f, stderr=subprocess.STDOUT,
+                                                      stdin=subprocess.DEVNULL)
+            time.sleep(1)
+        deadline = time.monotonic() + 180
+        while not all("started; Ctrl-C stops them" in self.outputs[h].read_text(errors="replace") for h in hosts):
+            assert all(self.scripts[h].poll() is None for h in hosts), self.report()
             assert time.monotonic() < deadline, self.report()
             time.sleep(0.2)
 
@@ -214,32 +217,36 @@ def _run_two_hosts(built: Path, tmp: Path, fmt: str) -> Hosts:
     order; every log clean."""
     hosts = Hosts(built, tmp, fmt)
     try:
-        hosts.start("vision_pc")
-        hosts.start("control_pc")
+        hosts.start("vision_pc", "control_pc")
         _probe(built, hosts)
         assert hosts.stop("control_pc") == 0, hosts.report()
         assert hosts.stop("vision_pc") == 0, hosts.report()
     finally:
         hosts.stop_all()
     logs = hosts.logs()
-    assert {"vision_pc_rtt_camera.log", "vision_pc_rtt_vision.log", "control_pc_rtt_control.log"} <= set(logs)
+    assert {"vision_pc_rtt_camera.log", "vision_pc_rtt_vision.log", "control_pc_ros_sensor.log",
+            "control_pc_rtt_control.log"} <= set(logs)
     bad = [f"{name}: {line}" for name, text in logs.items() for line in text.splitlines() if BAD.search(line)]
     assert not bad, "\n".join(bad[:20])
     return hosts
 
 
 def _check_order(hosts: Hosts, slow: bool) -> None:
-    """Each process started once the components before it were Running, in the modelled order."""
+    """Each process started once the components of the processes before it were Running, in the
+    modelled order (1 rttCamera, 2 rosSensor on the control host, 3 rttVision, 4 rttControl), and
+    stopped in the reverse order, each process's components first."""
     vision, control = hosts.lines("vision_pc"), hosts.lines("control_pc")
     camera_up = _when(vision, "camera Running")
-    assert _when(vision, "starting process 2 'rttVision'") >= camera_up
+    assert _when(control, "starting process 2 'rosSensor'") >= camera_up
+    sensor_up = _when(control, "forceSensor Running")
+    assert _when(vision, "starting process 3 'rttVision'") >= max(camera_up, sensor_up)
     vision_up = _when(vision, "vision Running")
-    assert _when(control, "starting process 3 'rttControl'") >= vision_up
+    assert _when(control, "starting process 4 'rttControl'") >= vision_up
     assert _when(control, "controller Running") > vision_up
     if slow:  # vision took its 3 s to configure, and the control process waited for it
-        assert vision_up - _when(vision, "starting process 2 'rttVision'") >= 3.0
-    # stopped in the reverse order, each process's components before the process
-    assert _when(control, "stopping control_pc_rtt_control controller arm controlLoop")
+        assert vision_up - _when(vision, "starting process 3 'rttVision'") >= 3.0
+    assert _when(control, "stopping control_pc_rtt_control controller arm controlLoop") \
+        < _when(control, "stopping control_pc_ros_sensor forceSensor")
     assert _when(vision, "stopping vision_pc_rtt_vision vision") < _when(vision, "stopping vision_pc_rtt_camera camera")
 
 
@@ -274,7 +281,8 @@ def test_check_scripts_reach_a_verdict_and_exit(built: Path, tmp_path: Path) -> 
         names.terminate()
         names.wait(timeout=30)
     try:
-        hosts.start("vision_pc")
+        hosts.start("vision_pc", "control_pc")
+        hosts.stop("control_pc")
         control = _bash(prefix + f"timeout -s KILL 60 rttlua-corba control_pc_rtt_control-check.lua {orb} </dev/null",
                         tmp_path, 120)
         assert control.returncode == 0 and "DEPLOY-RESULT: OK" in control.stdout, control.stdout + control.stderr
