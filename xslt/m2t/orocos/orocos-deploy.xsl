@@ -717,7 +717,8 @@
           '-- the ORB goes down first: os.exit with it running never returns',
           'local depl = rtt.getTC():getPeer(&quot;Deployer&quot;)',
           'depl:getProperty(&quot;AutoUnload&quot;):set(false)',
-          'depl:getOperation(&quot;shutdown&quot;)()') else (),
+          'depl:getOperation(&quot;shutdown&quot;)()',
+          'rtt.sleep(0, 500000000)  -- its thread ends (os.exit right after shutdown may crash)') else (),
         '-- rttlua always exits 0 by itself; os.exit propagates the verdict.',
         'os.exit(ok and 0 or 1)'))"/>
   </xsl:function>
