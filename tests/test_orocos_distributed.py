@@ -234,17 +234,19 @@ def _run_two_hosts(built: Path, tmp: Path, fmt: str) -> Hosts:
 def _check_order(hosts: Hosts, slow: bool) -> None:
     """Each process started once the components of the processes before it were Running, in the
     modelled order (1 rttCamera, 2 rosSensor on the control host, 3 rttVision, 4 rttControl), and
-    stopped in the reverse order, each process's components first."""
+    stopped in the reverse order, each process's components first. A component is Running from the
+    first time either host's script saw it so."""
     vision, control = hosts.lines("vision_pc"), hosts.lines("control_pc")
-    camera_up = _when(vision, "camera Running")
-    assert _when(control, "starting process 2 'rosSensor'") >= camera_up
-    sensor_up = _when(control, "forceSensor Running")
-    assert _when(vision, "starting process 3 'rttVision'") >= max(camera_up, sensor_up)
-    vision_up = _when(vision, "vision Running")
-    assert _when(control, "starting process 4 'rttControl'") >= vision_up
-    assert _when(control, "controller Running") > vision_up
+
+    def up(name: str) -> float:
+        return min(t for t, line in vision + control if line == f"{name} Running")
+
+    assert _when(control, "starting process 2 'rosSensor'") >= up("camera")
+    assert _when(vision, "starting process 3 'rttVision'") >= max(up("camera"), up("forceSensor"))
+    assert _when(control, "starting process 4 'rttControl'") >= up("vision")
+    assert up("controller") > up("vision")
     if slow:  # vision took its 3 s to configure, and the control process waited for it
-        assert vision_up - _when(vision, "starting process 3 'rttVision'") >= 3.0
+        assert up("vision") - _when(vision, "starting process 3 'rttVision'") >= 3.0
     assert _when(control, "stopping control_pc_rtt_control controller arm controlLoop") \
         < _when(control, "stopping control_pc_ros_sensor forceSensor")
     assert _when(vision, "stopping vision_pc_rtt_vision vision") < _when(vision, "stopping vision_pc_rtt_camera camera")
@@ -262,11 +264,13 @@ def test_a_slow_configure_keeps_the_order(fmt: str, built_slow: Path, tmp_path: 
 
 def test_check_scripts_reach_a_verdict_and_exit(built: Path, tmp_path: Path) -> None:
     """The camera process's check with only the naming service up, the control process's with the
-    vision host up: each prints DEPLOY-RESULT: OK and exits 0 under rttlua-corba; under rttlua
-    (no CORBA) it fails at once, saying what to run."""
+    processes before it up (the vision host, and the control host's rosSensor process run by hand):
+    each prints DEPLOY-RESULT: OK and exits 0 under rttlua-corba, and leaves no error behind in the
+    processes it talked to; under rttlua (no CORBA) it fails at once, saying what to run."""
     hosts = Hosts(built, tmp_path, "lua")
-    orb = f"-- -ORBInitRef NameService=corbaname::127.0.0.1:{hosts.port} -ORBendPoint giop:tcp:127.0.0.1:"
-    prefix = f"oro_add_prefix {built}/install && cd {hosts.deploy} && ORO_LOGFILE={tmp_path}/check.log "
+    orb = f"-ORBInitRef NameService=corbaname::127.0.0.1:{hosts.port} -ORBendPoint giop:tcp:127.0.0.1:"
+    prefix = f"oro_add_prefix {built}/install && cd {hosts.deploy} && ORO_LOGFILE={tmp_path}/logs/check.log "
+    (tmp_path / "logs").mkdir()
     plain = _bash(prefix + "timeout -s KILL 60 rttlua control_pc_rtt_control-check.lua </dev/null", tmp_path, 120)
     assert plain.returncode == 1 and "no CORBA deployer: run rttlua-corba" in plain.stdout, plain.stdout + plain.stderr
     names = subprocess.Popen(["omniNames", "-start", str(hosts.port), "-ignoreport", "-ORBendPoint",
@@ -274,21 +278,27 @@ def test_check_scripts_reach_a_verdict_and_exit(built: Path, tmp_path: Path) -> 
                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     try:
         time.sleep(1)
-        camera = _bash(prefix + f"timeout -s KILL 60 rttlua-corba vision_pc_rtt_camera-check.lua {orb} </dev/null",
+        camera = _bash(prefix + f"timeout -s KILL 60 rttlua-corba vision_pc_rtt_camera-check.lua -- {orb} </dev/null",
                        tmp_path, 120)
         assert camera.returncode == 0 and "DEPLOY-RESULT: OK" in camera.stdout, camera.stdout + camera.stderr
     finally:
         names.terminate()
         names.wait(timeout=30)
+    sensor = subprocess.Popen(["bash", "-c", hosts.prefix + f"sleep 3 && ORO_LOGFILE={tmp_path}/logs/sensor.log exec "
+                               f"deployer-corba --DeployerName control_pc_ros_sensor -s control_pc_ros_sensor.lua -- {orb}"],
+                              cwd=hosts.deploy, env=hosts.env, stdout=subprocess.DEVNULL, stderr=subprocess.STDOUT,
+                              stdin=subprocess.DEVNULL)
     try:
-        hosts.start("vision_pc", "control_pc")
-        hosts.stop("control_pc")
-        control = _bash(prefix + f"timeout -s KILL 60 rttlua-corba control_pc_rtt_control-check.lua {orb} </dev/null",
+        hosts.start("vision_pc")
+        control = _bash(prefix + f"timeout -s KILL 60 rttlua-corba control_pc_rtt_control-check.lua -- {orb} </dev/null",
                         tmp_path, 120)
         assert control.returncode == 0 and "DEPLOY-RESULT: OK" in control.stdout, control.stdout + control.stderr
+        time.sleep(2)  # vision writes on: any channel the check left behind would fail now
     finally:
+        sensor.send_signal(signal.SIGINT)
+        sensor.wait(timeout=60)
         hosts.stop_all()
-    bad = [line for line in (tmp_path / "check.log").read_text(errors="replace").splitlines() if BAD.search(line)]
+    bad = [f"{name}: {line}" for name, text in hosts.logs().items() for line in text.splitlines() if BAD.search(line)]
     assert not bad, bad[:10]
 
 
