@@ -108,7 +108,8 @@ check_runs() {
   source "$HERE/env.sh" >/dev/null
   local tmp port
   tmp=$(mktemp -d "${TMPDIR:-/tmp}/oro-check.XXXXXX")
-  _run "deployer --version" "OROCOS Toolchain version" deployer --version
+  # (OCL's deployer exits 1 after printing its version: only the output counts)
+  _run "deployer --version" "OROCOS Toolchain version '2.10" sh -c 'deployer --version; exit 0'
   cat > "$tmp/tiny.lua" <<'LUA'
 require("rttlib")
 local depl = rtt.getTC():getPeer("Deployer")

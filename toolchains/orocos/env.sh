@@ -22,7 +22,7 @@ export OROCOS_TARGET=gnulinux
 
 _oro_prepend() {  # _oro_prepend VAR DIR: put DIR first in the :-separated VAR, once
   local var=$1 dir=$2 cur
-  cur=${!var}
+  cur=${!var:-}
   case ":$cur:" in
     *":$dir:"*) cur=$(printf '%s' ":$cur:" | sed "s#:$dir:#:#g; s#^:##; s#:\$##") ;;
   esac
