@@ -13,7 +13,9 @@
              components use, src/typekit.cpp (their RTT typekit)
              src/components.cpp, CMakeLists.txt, package.xml
              deploy/<model>.xml, deploy/<model>.ops, deploy/<model>.lua,
-             deploy/<model>-check.lua
+             deploy/<model>-check.lua (several processes: these four per
+             process, deploy/<host>_<process>.*, and per host
+             deploy/start_<host>.sh, with deploy/start-helper.lua)
              deploy/<instance>.user.cpf (mode user) per instance with
              properties: the user's tuned values, loaded after the model's
            One fs:file a line, as f:indent (common/indent.xsl) would indent

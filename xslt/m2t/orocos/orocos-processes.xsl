@@ -8,7 +8,11 @@
   Writes:  fp:process-view: the deployment of one process, an o:deployment
            that orocos-deploy.xsl writes as it writes a whole one (never
            validated, never written out); fp:start-script: the text of
-           deploy/start_<host>.sh.
+           deploy/start_<host>.sh (processes in start order, each once the
+           components before it are Running; stopped in reverse order);
+           fp:start-helper: deploy/start-helper.lua, the rttlua-corba
+           client those scripts run to wait for a component's Running
+           state and to stop a process's components before it ends.
   Params:  none.  Errors: none.
 
   The view of process P: @deploy-name its file; the library and typekit;
