@@ -92,6 +92,7 @@ check(seen >= 3, "vision.channelPosition changes (" .. seen .. " new values)")
 ip:disconnect()
 print(ok and "PROBE-RESULT: OK" or "PROBE-RESULT: FAILED")
 depl:getOperation("shutdown")()
+rtt.sleep(0, 500000000)
 os.exit(ok and 0 or 1)
 """
 
