@@ -8,7 +8,7 @@ On a developer's machine the same tests skip and say what is missing.
 Two exceptions, for toolchains built from public sources that CI cannot
 fetch: tests marked ``orocos_toolchain`` build and deploy generated packages
 on a real Orocos RTT / OCL 2.10 toolchain
-(../shared/orocos-reference/toolchain/), and tests marked ``ros2_toolchain``
+(toolchains/orocos/), and tests marked ``ros2_toolchain``
 build and launch generated packages on a minimal ROS 2 Jazzy
 (toolchains/ros2/). CI deselects them, and says so in the summary; developers
 run them where the toolchain is installed.
@@ -25,7 +25,7 @@ _CI = os.environ.get("CI", "").lower() not in ("", "0", "false", "no")
 
 def pytest_configure(config: pytest.Config) -> None:
     config.addinivalue_line("markers", "orocos_toolchain: needs a real Orocos RTT / OCL 2.10 toolchain "
-                            "(not in CI: it is built from fetched sources)")
+                            "built by toolchains/orocos/build.sh (not in CI: it is built from fetched sources)")
     config.addinivalue_line("markers", "ros2_toolchain: needs a minimal ROS 2 Jazzy built by toolchains/ros2/build.sh "
                             "(not in CI: it is built from fetched sources)")
 

@@ -447,3 +447,19 @@ def test_tuned_values_survive_regeneration_and_misspelt_ones_are_named(tmp_path)
          (tuned.splitlines().index('  <simple name="damping" type="double"><value>3.5</value></simple>') + 1, False, True)]
     assert all(w.file == str(cpf) for w in out005)
     assert "'long'" in out005[1].message and "refuses" in out005[1].message
+
+
+def test_a_process_named_rtt_keeps_its_name(tmp_path):
+    """RTT is kept out of C++ identifiers (a class RTT would hide RTT's namespace), not out of
+    process names: a process named RTT is 'RTT' in the PSM and messages, 'rtt' in its files."""
+    from edits import distributed_variant
+    from robomda.api import generate
+    model = distributed_variant(tmp_path, ('name="rttControl"', 'name="RTT"', 1))
+    out = tmp_path / "out"
+    generate(model, out, "orocos")
+    deploy = out / "deploy"
+    assert (deploy / "control_pc_rtt.xml").is_file() and not list(deploy.glob("*rtt_.*"))
+    lua = (deploy / "control_pc_rtt.lua").read_text()
+    assert "-- Process 'RTT' of host 'controlPC'" in lua and "'RTT_'" not in lua
+    start = (deploy / "start_control_pc.sh").read_text()
+    assert "# 3. process 'RTT'" in start and "stop_process \"$pid_3\" control_pc_rtt controller arm controlLoop" in start

@@ -1,10 +1,10 @@
 """Build and deploy generated Orocos packages on a real RTT / OCL 2.10 toolchain.
 
 Not in CI (marker ``orocos_toolchain``, deselected there by conftest.py): the
-toolchain is built from fetched public sources with
-../shared/orocos-reference/toolchain/build.sh, which CI cannot do. Where the
-toolchain is installed (``$OROCOS_INSTALL``, default ``~/orocos/install``)
-these tests run every fixture through the helpers of that folder's env.sh:
+toolchain is built from public sources with the project's
+toolchains/orocos/build.sh, which CI cannot do. Where the toolchain is
+installed (``$OROCOS_INSTALL``, default ``~/orocos/install``) these tests run
+every fixture through the helpers of toolchains/orocos/env.sh:
 
 - build the package (``oro_build_pkg``, cmake + make + install);
 - deploy its XML, .ops and Lua files with ``oro_deploy_verify`` (every
@@ -34,16 +34,14 @@ import pytest
 from robomda.api import generate
 
 ROOT = Path(__file__).resolve().parents[1]
-SHARED = Path(os.environ.get("ROBOMDA_SHARED", ROOT.parent / "shared"))
-ENV_SH = SHARED / "orocos-reference" / "toolchain" / "env.sh"
+ENV_SH = ROOT / "toolchains" / "orocos" / "env.sh"
 INSTALL = Path(os.environ.get("OROCOS_INSTALL", Path.home() / "orocos" / "install"))
 CASES = ROOT / "fixtures" / "cases"
 
 pytestmark = [
     pytest.mark.orocos_toolchain,
-    pytest.mark.skipif(not ENV_SH.is_file(), reason=f"no {ENV_SH} (../shared beside the checkout)"),
     pytest.mark.skipif(not (INSTALL / "bin" / "deployer").exists(),
-                       reason=f"no Orocos toolchain in {INSTALL} (build it with {ENV_SH.parent}/build.sh)"),
+                       reason=f"no Orocos toolchain in {INSTALL}: build it with toolchains/orocos/build.sh"),
 ]
 
 MODELS = ["headlamp/model.xmi", "headlamp/model.ea.xmi", "meka/model.xmi", "meka/model.ea.xmi",

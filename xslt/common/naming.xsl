@@ -15,6 +15,9 @@
     f:cpp-identifier($name)   a valid C++ identifier keeping the name's case:
                               invalid characters -> "_", leading digit -> "n",
                               empty -> "unnamed", C++ keyword -> keyword + "_"
+    f:name-identifier($name)  the same without the keyword escape, for names that
+                              never become C++ (a process: its files, its deployer
+                              name): "RTT" stays "RTT"
     f:snake-case($name)       lower snake_case identifier ("visionValue" -> vision_value)
     f:upper-camel($name)      UpperCamelCase identifier ("vision value" -> VisionValue)
     f:upper-first($s)         first letter upper-cased, rest unchanged
@@ -76,13 +79,16 @@
 
   <xsl:function name="fp:cpp-identifier-any" as="xs:string">
     <xsl:param name="name" as="xs:string?"/>
+    <xsl:sequence select="f:escape-cpp-keyword(f:name-identifier($name))"/>
+  </xsl:function>
+
+  <xsl:function name="f:name-identifier" as="xs:string">
+    <xsl:param name="name" as="xs:string?"/>
     <xsl:variable name="clean" as="xs:string"
         select="replace(replace(normalize-space(string($name)), '[^A-Za-z0-9_]', '_'), '_{2,}', '_')"/>
-    <xsl:variable name="lead" as="xs:string"
-        select="if ($clean = ('', '_')) then 'unnamed'
-                else if (matches($clean, '^[0-9]')) then 'n' || $clean
-                else $clean"/>
-    <xsl:sequence select="f:escape-cpp-keyword($lead)"/>
+    <xsl:sequence select="if ($clean = ('', '_')) then 'unnamed'
+                          else if (matches($clean, '^[0-9]')) then 'n' || $clean
+                          else $clean"/>
   </xsl:function>
 
   <xsl:function name="f:snake-case" as="xs:string">

@@ -191,7 +191,7 @@
       <xsl:variable name="ee" as="element(pim:node)" select="."/>
       <xsl:variable name="mine" as="element(pim:instance)*" select="$instances[@execution-environment eq $ee/@id]"/>
       <xsl:variable name="managed" as="xs:string?" select="fp:tag(., 'Middleware', 'managed')[normalize-space(.)]"/>
-      <pim:process xmi-id="{@id}" name="{f:cpp-identifier(@name)}" middleware="{$mine[1]/@middleware}"
+      <pim:process xmi-id="{@id}" name="{f:name-identifier(@name)}" middleware="{$mine[1]/@middleware}"
                    managed="{if (exists($managed)) then fp:boolean($managed, 'managed', string(@id)) else false()}">
         <xsl:sequence select="$mine[1]/@host"/>
         <xsl:for-each select="fp:execution-environments($root)[@id = $mine/@thread]">

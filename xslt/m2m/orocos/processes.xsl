@@ -75,7 +75,9 @@
 
   <!-- o:process per process of $instances (the Orocos ones), with its
        host's name, its file, its place in the start order and whether it
-       takes part in CORBA ($corba: the package uses CORBA at all) -->
+       takes part in CORBA ($corba: the package has several processes or
+       a CORBA link: the start scripts read every component's state over
+       CORBA) -->
   <xsl:function name="fp:oro-processes" as="element(o:process)*">
     <xsl:param name="instances" as="element(pim:instance)*"/>
     <xsl:param name="corba" as="xs:boolean"/>

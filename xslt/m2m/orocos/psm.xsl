@@ -168,7 +168,7 @@
     <xsl:variable name="connections" as="element(o:connection)*"
         select="$binding/pim:connection[fp:kept-connection(., $binding, $targets)]
                 ! fp:oro-connection(., $targets, $order ! string(@xmi-id), $files, $package)"/>
-    <xsl:variable name="corba" as="xs:boolean" select="exists($connections/o:remote)"/>
+    <xsl:variable name="corba" as="xs:boolean" select="exists($connections/o:remote) or not(fp:oro-single-process($instances))"/>
     <xsl:variable name="processes" as="element(o:process)*"
         select="fp:oro-processes($instances, $corba, $order[map:get($files, string(@xmi-id)) = $connections/o:stream[@transport eq 'ros']/@process]/@name)"/>
     <o:deployment xmi-id="{@id}" model-name="{@name}" deploy-name="{f:snake-case(@name)}"

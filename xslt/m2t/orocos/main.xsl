@@ -13,7 +13,9 @@
              components use, src/typekit.cpp (their RTT typekit)
              src/components.cpp, CMakeLists.txt, package.xml
              deploy/<model>.xml, deploy/<model>.ops, deploy/<model>.lua,
-             deploy/<model>-check.lua
+             deploy/<model>-check.lua (several processes: these four per
+             process, deploy/<host>_<process>.*, and per host
+             deploy/start_<host>.sh, with deploy/start-helper.lua)
              deploy/<instance>.user.cpf (mode user) per instance with
              properties: the user's tuned values, loaded after the model's
            One fs:file a line, as f:indent (common/indent.xsl) would indent
@@ -100,6 +102,7 @@
       </xsl:for-each>
       <!-- several processes: a start script per host -->
       <xsl:if test="count(o:process) gt 1">
+        <xsl:sequence select="$fp:file-margin, fp:file('deploy/start-helper.lua', 'generated', $fp:deploy-xsl, fp:start-helper(.))"/>
         <xsl:for-each-group select="o:process" group-by="string(@host)">
           <xsl:variable name="host" as="element(o:host)?" select="$deployment/o:host[@name eq current-grouping-key()]"/>
           <xsl:sequence select="$fp:file-margin, fp:file('deploy/' || current-group()[1]/@start-script, 'generated', $fp:deploy-xsl,

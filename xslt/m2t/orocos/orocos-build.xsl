@@ -136,6 +136,13 @@
         '  &lt;buildtool_depend&gt;cmake&lt;/buildtool_depend&gt;',
         '  &lt;depend&gt;rtt&lt;/depend&gt;',
         '  &lt;exec_depend&gt;ocl&lt;/exec_depend&gt;',
+        if ($deployment/o:process/@corba = 'true') then (
+          '  &lt;!-- CORBA between processes: omniORB (RTT''s CORBA transport; the start scripts use omniNames and nameclt,',
+          '       Debian omniorb-nameserver and omniorb) --&gt;',
+          '  &lt;exec_depend&gt;omniorb&lt;/exec_depend&gt;') else (),
+        if ($deployment/(o:connection[@transport eq 'ros'] | o:connection/o:stream[@transport eq 'ros'])) then (
+          '  &lt;!-- streams to ROS topics: the rtt_ros_integration packages the deployment imports --&gt;',
+          fp:deploy-imports-ros() ! ('  &lt;exec_depend&gt;' || . || '&lt;/exec_depend&gt;')) else (),
         '',
         '  &lt;export&gt;',
         '    &lt;build_type&gt;cmake&lt;/build_type&gt;',

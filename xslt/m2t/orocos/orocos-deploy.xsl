@@ -165,7 +165,11 @@
        to ROS topics -->
   <xsl:function name="fp:deploy-imports" as="xs:string*">
     <xsl:param name="deployment" as="element(o:deployment)"/>
-    <xsl:sequence select="if ($deployment/o:connection[@transport eq 'ros']) then ('rtt_rosnode', 'rtt_roscomm', 'rtt_std_msgs') else ()"/>
+    <xsl:sequence select="if ($deployment/o:connection[@transport eq 'ros']) then fp:deploy-imports-ros() else ()"/>
+  </xsl:function>
+  <!-- those packages (also the package.xml's dependencies, orocos-build.xsl) -->
+  <xsl:function name="fp:deploy-imports-ros" as="xs:string+">
+    <xsl:sequence select="('rtt_rosnode', 'rtt_roscomm', 'rtt_std_msgs')"/>
   </xsl:function>
 
   <!-- "process 'P' of host 'H': one of N" for the deployment of one of
@@ -235,7 +239,7 @@
         '&lt;?xml version=&quot;1.0&quot; encoding=&quot;UTF-8&quot;?&gt;',
         '&lt;!--',
         fp:indent(2, fp:banner('', $fp:deploy-xsl, concat('the deployment of model ''', fp:xml-text($deployment/@model-name), ''''), false())),
-        concat('  Run: ', fp:deployer-command($deployment, $deployment/@deploy-name || '.xml', fp:naming-address($deployment)),
+        concat('  Run: ', fp:deployer-command($deployment, $deployment/@deploy-name || '.xml', fp:naming-address($deployment), string($deployment/@address)),
                ' (add the check option to load, connect and configure only)'),
         fp:process-note($deployment) ! ('  ' || .),
         if ($deployment/o:instance/o:property-value)
@@ -321,7 +325,7 @@
     <xsl:sequence select="fp:lines((
         fp:banner('// ', $fp:deploy-xsl, concat('the deployment of model ''', $deployment/@model-name, ''''), false()),
         fp:process-note($deployment) ! ('// ' || .),
-        concat('// Run: ', fp:deployer-command($deployment, $file, fp:naming-address($deployment)), if ($deployment/o:instance/o:property-value)
+        concat('// Run: ', fp:deployer-command($deployment, $file, fp:naming-address($deployment), string($deployment/@address)), if ($deployment/o:instance/o:property-value)
                then ' from this folder (the tuned values, *.user.cpf, are read from the working directory);'
                else ' (from any folder;'),
         '// RTT_COMPONENT_PATH must hold the installed package.',
@@ -536,7 +540,7 @@
         fp:banner('-- ', $fp:deploy-xsl, concat('the deployment of model ''', $deployment/@model-name, ''''), false()),
         fp:process-note($deployment) ! ('-- ' || .),
         if ($deployment/@corba = 'true')
-        then concat('-- Run: ', fp:deployer-command($deployment, $file, fp:naming-address($deployment)))
+        then concat('-- Run: ', fp:deployer-command($deployment, $file, fp:naming-address($deployment), string($deployment/@address)))
         else concat('-- Run: deployer -s ', $file, '   or   rttlua -i ', $file),
         '-- (from any folder; RTT_COMPONENT_PATH must hold the installed package). The components keep',
         concat('-- running until the deployer is stopped (Ctrl-C). ', $deployment/@deploy-name, '-check.lua runs this deployment'),
@@ -652,15 +656,28 @@
   <xsl:function name="fp:deploy-check-lua" as="xs:string">
     <xsl:param name="deployment" as="element(o:deployment)"/>
     <xsl:variable name="file" as="xs:string" select="concat($deployment/@deploy-name, '-check.lua')"/>
+    <xsl:variable name="corba" as="xs:boolean" select="$deployment/@corba = 'true'"/>
     <xsl:sequence select="fp:lines((
         fp:banner('-- ', $fp:deploy-xsl, concat('the self-check of the deployment of model ''', $deployment/@model-name, ''''), false()),
-        concat('-- Run: rttlua ', $file, '   (or deployer -s ', $file, ')'),
+        if ($corba) then (
+          concat('-- Run: rttlua-corba ', $file, ' -- -ORBInitRef NameService=corbaname::', fp:naming-address($deployment),
+                 $deployment/@address[. ne ''] ! (' -ORBendPoint giop:tcp:' || . || ':')),
+          concat('-- instead of this process (', $deployment/@start-script, ' starts it), with the processes before it running.'))
+        else concat('-- Run: rttlua ', $file, '   (or deployer -s ', $file, ')'),
         concat('-- Runs ', $deployment/@deploy-name, '.lua (beside this file) for one second, checks that every component is Running'),
         '-- with the modelled period, CPU affinity and property values, stops and unloads everything, and',
         '-- exits 0 when all is as modelled, 1 otherwise.',
         'require(&quot;rttlib&quot;)',
         'rttlib.color = false',
         '',
+        if ($corba) then (
+          '-- a process of several: its components are CORBA servers, the deployer must be rttlua-corba''s',
+          'if not rtt.getTC():getPeer(&quot;Deployer&quot;):hasOperation(&quot;server&quot;) then',
+          concat('  print(&quot;DEPLOY-CHECK FAILED: no CORBA deployer: run rttlua-corba ', $file,
+                 ' -- -ORBInitRef NameService=corbaname::', fp:naming-address($deployment), '&quot;)'),
+          '  print(&quot;DEPLOY-RESULT: FAILED&quot;)',
+          '  os.exit(1)',
+          'end') else (),
         $fp:lua-here,
         concat('local loaded, deployment = pcall(dofile, here .. ', fp:cpp-string(concat('/', $deployment/@deploy-name, '.lua')), ')'),
         'local ok = loaded',
@@ -686,12 +703,42 @@
         then '  local function enum_int(v) local i = rtt.Variable(&quot;int&quot;); i:assign(v); return i:tolua() end' else (),
         fp:lua-tuned-values(exists($deployment/o:instance/o:property-value/o:value)),
         $deployment/o:instance ! fp:lua-instance-checks(.),
-        '  for _, n in ipairs(names) do comps[n]:stop() end',
-        '  for _, n in ipairs(names) do comps[n]:cleanup() end',
+        $deployment/o:proxy ! concat('  check(depl:getPeer(', fp:cpp-string(@name), '):getState() == &quot;Running&quot;, &quot;', @name,
+                 ' (a component of another process) Running&quot;)'),
+        '  -- in the reverse start order',
+        '  for i = #names, 1, -1 do comps[names[i]]:stop() end',
+        if ($corba) then (
+          '  -- every port disconnected before the unload: RTT 2.10 unloads a component''s CORBA server first, and',
+          '  -- then never returns from disconnecting a port connected to another process',
+          '  for i = #names, 1, -1 do',
+          '    for _, p in ipairs(comps[names[i]]:getPortNames()) do comps[names[i]]:getPort(p):disconnect() end',
+          '  end') else (),
+        '  for i = #names, 1, -1 do comps[names[i]]:cleanup() end',
         '  for i = #names, 1, -1 do depl:unloadComponent(names[i]) end',
         'end',
         '',
+        if ($corba) then (
+          'if not loaded then',
+          '  -- what the failed deployment loaded goes all the same (its connections to other processes with it)',
+          '  local depl = rtt.getTC():getPeer(&quot;Deployer&quot;)',
+          concat('  local names = {', string-join($deployment/o:instance/@name ! fp:cpp-string(.), ', '), '}'),
+          '  for i = #names, 1, -1 do',
+          '    local there, c = pcall(depl.getPeer, depl, names[i])',
+          '    if there then',
+          '      pcall(function() c:stop() end)',
+          '      for _, p in ipairs(c:getPortNames()) do pcall(function() c:getPort(p):disconnect() end) end',
+          '      pcall(function() c:cleanup(); depl:unloadComponent(names[i]) end)',
+          '    end',
+          '  end',
+          'end') else (),
         'print(ok and &quot;DEPLOY-RESULT: OK&quot; or &quot;DEPLOY-RESULT: FAILED&quot;)',
+        if ($corba) then (
+          '-- the proxies of the other processes'' components stay (they cannot be unloaded while those run);',
+          '-- the ORB goes down first: os.exit with it running never returns',
+          'local depl = rtt.getTC():getPeer(&quot;Deployer&quot;)',
+          'depl:getProperty(&quot;AutoUnload&quot;):set(false)',
+          'depl:getOperation(&quot;shutdown&quot;)()',
+          'rtt.sleep(0, 500000000)  -- its thread ends (os.exit right after shutdown may crash)') else (),
         '-- rttlua always exits 0 by itself; os.exit propagates the verdict.',
         'os.exit(ok and 0 or 1)'))"/>
   </xsl:function>
