@@ -60,8 +60,9 @@ if loaded then
   check(near(comps["controller"]:getPeriod(), 0.003), "controller period 0.003 (is " .. tostring(comps["controller"]:getPeriod()) .. ")")
   check(comps["controller"]:getProperty("stiffness"):get() == want("controller", "stiffness", 500), "property controller.stiffness = " .. tostring(want("controller", "stiffness", 500)) .. " (is " .. tostring(comps["controller"]:getProperty("stiffness"):get()) .. ")")
   check(comps["controller"]:getProperty("damping"):get() == want("controller", "damping", 20), "property controller.damping = " .. tostring(want("controller", "damping", 20)) .. " (is " .. tostring(comps["controller"]:getProperty("damping"):get()) .. ")")
-  for _, n in ipairs(names) do comps[n]:stop() end
-  for _, n in ipairs(names) do comps[n]:cleanup() end
+  -- in the reverse start order
+  for i = #names, 1, -1 do comps[names[i]]:stop() end
+  for i = #names, 1, -1 do comps[names[i]]:cleanup() end
   for i = #names, 1, -1 do depl:unloadComponent(names[i]) end
 end
 
