@@ -158,6 +158,8 @@
 
   <xsl:key name="fp:id" match="*[@id]" use="@id"/>
   <xsl:key name="fp:part-by-type" match="pim:part" use="@type"/>
+  <!-- a connector by the port of its own composite it ends on (an end without part) -->
+  <xsl:key name="fp:connector-by-own-port" match="pim:connector" use="pim:end[not(@part)]/@role"/>
   <xsl:key name="fp:deployment-by-deployed" match="pim:deployment" use="tokenize(@deployed)"/>
   <xsl:key name="fp:manifestation-by-element" match="pim:manifestation" use="@element"/>
   <!-- the artifacts that manifest a part (component sets, bind/runtime.xsl) -->
