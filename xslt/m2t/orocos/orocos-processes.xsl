@@ -10,6 +10,9 @@
            validated, never written out); fp:start-script: the text of
            deploy/start_<host>.sh.
   Params:  none.  Errors: none.
+  Keys:    fp:view-end (on a view's connections), fp:instance-in and
+           fp:connection-in (on the PSM: a process's instances and
+           connections, so that each view reads only its own).
 
   The view of process P: @deploy-name its file; the library and typekit;
   its connections: the part of each connection point inside P (writers
@@ -29,6 +32,12 @@
 
   <!-- the ends of the connections of a view, by instance (fp:port-connections) -->
   <xsl:key name="fp:view-end" match="o:connection/o:writer | o:connection/o:reader" use="@instance"/>
+  <!-- on the PSM: the instances of a process, and the connections with a
+       writer, stream or CORBA link in it (by the process's file), so that
+       a process's view reads its own, not every instance and connection -->
+  <xsl:key name="fp:instance-in" match="o:deployment/o:instance" use="@process"/>
+  <xsl:key name="fp:connection-in" match="o:deployment/o:connection"
+           use="o:writer/@process, o:stream/@process, o:remote/@process"/>
 
   <xsl:function name="fp:process-view" as="element(o:deployment)">
     <xsl:param name="deployment" as="element(o:deployment)"/>
@@ -37,7 +46,7 @@
     <!-- in a document of their own, for key fp:view-end -->
     <xsl:variable name="view-connections" as="document-node()">
       <xsl:document>
-      <xsl:for-each select="$deployment/o:connection">
+      <xsl:for-each select="fp:in-process('fp:connection-in', $deployment, $p)">
         <xsl:if test="o:writer[@process eq $p] and o:reader[@process eq $p]">
           <o:connection>
             <xsl:sequence select="@*, o:writer[@process eq $p], o:reader[@process eq $p]"/>
@@ -66,7 +75,7 @@
       </xsl:document>
     </xsl:variable>
     <xsl:variable name="connections" as="element(o:connection)*" select="$view-connections/o:connection"/>
-    <xsl:variable name="instances" as="element(o:instance)*" select="$deployment/o:instance[@process eq $p]"/>
+    <xsl:variable name="instances" as="element(o:instance)*" select="fp:in-process('fp:instance-in', $deployment, $p)"/>
     <o:deployment>
       <xsl:sequence select="$deployment/@*"/>
       <xsl:attribute name="deploy-name" select="$p"/>
@@ -90,6 +99,19 @@
         </xsl:copy>
       </xsl:for-each>
     </o:deployment>
+  </xsl:function>
+
+  <!-- the children of $deployment that key $key finds for process file $p
+       (fp:instance-in: its instances; fp:connection-in: the connections
+       that may have a part in it), in document order -->
+  <xsl:function name="fp:in-process" as="element()*">
+    <xsl:param name="key" as="xs:string"/>
+    <xsl:param name="deployment" as="element(o:deployment)"/>
+    <xsl:param name="p" as="xs:string"/>
+    <xsl:sequence select="if (root($deployment) instance of document-node())
+                          then key($key, $p, root($deployment))[.. is $deployment]
+                          else if ($key eq 'fp:instance-in') then $deployment/o:instance[@process eq $p]
+                          else $deployment/o:connection"/>
   </xsl:function>
 
   <!-- o:port-connection of each port of instance $name in the connections
@@ -190,14 +212,14 @@
           'fi') else (),
         $processes ! (
           let $process := .,
-              $remote := distinct-values($deployment/o:connection/o:remote[@process eq $process/@file]/@proxy)
+              $remote := distinct-values(fp:in-process('fp:connection-in', $deployment, $process/@file)/o:remote[@process eq $process/@file]/@proxy)
           return (
             '',
             '# ' || @position || '. process ''' || @name || '''',
             if (exists($remote)) then 'wait_for - ' || string-join($remote, ' ') else (),
             fp:deployer-command(fp:process-view($deployment, .), @file || '.$format', '$NAMESERVICE') || ' &lt;/dev/null &amp;',
             'pids=&quot;$pids $!&quot;',
-            if ($corba) then 'wait_for $! ' || string-join($deployment/o:instance[@process eq $process/@file]/@name, ' ') else ())),
+            if ($corba) then 'wait_for $! ' || string-join(fp:in-process('fp:instance-in', $deployment, $process/@file)/@name, ' ') else ())),
         '',
         'wait'))"/>
   </xsl:function>
