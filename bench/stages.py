@@ -1,15 +1,26 @@
 """Time each stylesheet of a chain alone (no validation, no writing; each
-stage includes writing its result as text, as the pipeline does), by model size.
+stage includes writing its result as text, as the pipeline does), by model
+shape and size.
 
-    python bench/stages.py 500 1000 2000      # sizes of bench/synth.py models
+    python bench/stages.py 2000 4000                        # every shape, Orocos chain
+    python bench/stages.py 2000 4000 --shapes composite nested --target ros2
 
-A quick profile for stylesheet work: if a stage's time does not double when
-the model doubles, that stage has a super-linear step. Stylesheets are
-compiled before timing.
+A quick profile for stylesheet work: for each shape of bench/synth.py, each
+stage's time at each size, then the ratio of each stage's time between
+consecutive sizes beside the ratio of the sizes. A stage whose ratio is
+well above the sizes' (issue 35: t(4,000) / t(2,000) <= 2.2) has a
+super-linear step on that shape. Stylesheets are compiled before timing; one
+engine serves every shape and size, so the ratios are taken in one process.
+The times are this process's CPU seconds (SaxonC runs in it), which other
+work on a shared machine does not stretch as it stretches wall time
+(--wall: wall time). Beside each ratio, that of the identity transform of
+the stage's input in the same run: what the engine's own growth (its
+garbage collector on a larger heap) adds whatever the stylesheet does.
 """
 
 from __future__ import annotations
 
+import argparse
 import sys
 import tempfile
 import time
@@ -19,34 +30,77 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 sys.path.insert(0, str(HERE.parent / "src"))
 
-from synth import write_model  # noqa: E402
+from synth import SHAPES, write_model  # noqa: E402
 
 from robomda import pipeline  # noqa: E402
 from robomda.engine import Engine  # noqa: E402
 from robomda.resources import pipeline_path  # noqa: E402
 
+MIDDLEWARE = {"orocos": "OROCOS", "ros1": "ROS", "ros2": "ROS2"}
+LIMIT = 2.2  # issue 35: t(4,000) / t(2,000) on every stage
 
-def main(sizes: list[int], target: str = "orocos") -> None:
+
+_IDENTITY = """<xsl:stylesheet version="3.0" xmlns:xsl="http://www.w3.org/1999/XSL/Transform">
+<xsl:mode on-no-match="shallow-copy"/></xsl:stylesheet>"""
+
+
+def _time_stages(engine: Engine, chain: pipeline.Pipeline, model: Path, clock,
+                 identity: Path) -> list[tuple[str, float, int, float]]:
+    """Each step's name, seconds on ``clock``, output size and the seconds of the identity transform of its input
+    on ``model``, as the pipeline hands trees on."""
+    context = {"model-file-name": model.name, "model-dir-from-output": ".", "package-name": ""}
+    source: object = model
+    row = []
+    for index, step in enumerate(chain.steps):
+        params = {p.name: p.value if p.value is not None else context.get(p.source or "", "") for p in step.params}
+        started = clock()
+        engine.run(identity, {}, source, keep_tree=False)
+        floor = clock() - started
+        started = clock()
+        text, tree = engine.run(step.stylesheet, params, source, keep_tree=index < len(chain.steps) - 1)
+        row.append((step.name, clock() - started, len(text), floor))
+        source = tree if tree is not None else text
+    return row
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("sizes", type=int, nargs="*", default=[500, 1000, 2000])
+    parser.add_argument("--shapes", nargs="+", choices=SHAPES, default=list(SHAPES))
+    parser.add_argument("--target", choices=sorted(MIDDLEWARE), default="orocos")
+    parser.add_argument("--wall", action="store_true",
+                        help="wall time instead of this process's CPU time (SaxonC runs in it): CPU time is what "
+                             "a busy shared machine leaves steady")
+    args = parser.parse_args(argv)
+    clock = time.perf_counter if args.wall else time.process_time
     engine = Engine()
-    chain = pipeline.load(pipeline_path(target))
-    context = {"model-file-name": "synth.xmi", "model-dir-from-output": ".", "package-name": ""}
+    chain = pipeline.load(pipeline_path(args.target))
     for step in chain.steps:
         engine.compile(step.stylesheet)
+    worst = 0.0
+    unit = "" if args.wall else " CPU"
     with tempfile.TemporaryDirectory() as tmp:
-        for size in sizes:
-            model = write_model(size, Path(tmp) / f"synth-{size}.xmi")
-            source: object = model
-            row = []
-            for index, step in enumerate(chain.steps):
-                params = {p.name: p.value if p.value is not None else context.get(p.source or "", "")
-                          for p in step.params}
-                started = time.perf_counter()
-                # as the pipeline does: each stage's tree is the next one's source
-                text, tree = engine.run(step.stylesheet, params, source, keep_tree=index < len(chain.steps) - 1)
-                source = tree if tree is not None else text
-                row.append(f"{step.name} {time.perf_counter() - started:.2f}s ({len(text) // 1024} KiB)")
-            print(f"{size:>6}: " + ", ".join(row), flush=True)
+        identity = Path(tmp) / "identity.xsl"
+        identity.write_text(_IDENTITY)
+        engine.compile(identity)
+        for shape in args.shapes:
+            rows = []
+            for size in args.sizes:
+                model = write_model(size, Path(tmp) / f"{shape}-{size}.xmi", shape, MIDDLEWARE[args.target])
+                rows.append(_time_stages(engine, chain, model, clock, identity))
+                print(f"{shape:>10} {size:>6}: " + ", ".join(f"{name} {t:.2f}s{unit} ({n // 1024} KiB)"
+                                                           for name, t, n, _ in rows[-1]), flush=True)
+            for (small, a), (large, b) in zip(zip(args.sizes, rows), list(zip(args.sizes, rows))[1:]):
+                ratios = [tb / max(ta, 1e-3) for (_, ta, _, _), (_, tb, _, _) in zip(a, b)]
+                floors = [fb / max(fa, 1e-3) for (_, _, _, fa), (_, _, _, fb) in zip(a, b)]
+                worst = max([worst, *ratios]) if large == 2 * small else worst
+                print(f"{shape:>10} t({large})/t({small}) (sizes x{large / small:.1f}): "
+                      + ", ".join(f"{name} {r:.2f} (identity {f:.2f})" for (name, _, _, _), r, f in zip(a, ratios, floors)),
+                      flush=True)
+    if worst:
+        print(f"worst stage ratio on a doubling: {worst:.2f} (issue 35's limit: {LIMIT})")
+    return 0
 
 
 if __name__ == "__main__":
-    main([int(a) for a in sys.argv[1:]] or [500, 1000, 2000])
+    sys.exit(main())

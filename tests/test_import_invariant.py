@@ -66,14 +66,16 @@ def test_nothing_is_dropped_in_silence_in_real_samples(model: Path | None) -> No
     _check(model)
 
 
-def test_nothing_is_dropped_in_silence_in_a_benchmark_model(tmp_path: Path) -> None:
-    """The generated models of bench/synth.py (one of 50 components)."""
+@pytest.mark.parametrize("shape", ["ring", "composite", "nested", "datatypes", "deployment", "calls"])
+def test_nothing_is_dropped_in_silence_in_a_benchmark_model(tmp_path: Path, shape: str) -> None:
+    """The generated models of bench/synth.py (one of 50 components), in each shape the bench draws."""
     import importlib.util
 
     spec = importlib.util.spec_from_file_location("synth", ROOT / "bench" / "synth.py")
     synth = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(synth)
-    _check(synth.write_model(50, tmp_path / "synth-50.xmi"))
+    assert shape in synth.SHAPES
+    _check(synth.write_model(50, tmp_path / "synth-50.xmi", shape))
 
 
 def test_the_invariant_can_fail(tmp_path: Path) -> None:

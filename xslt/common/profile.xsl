@@ -6,7 +6,8 @@
   Writes:  nothing (a function module for the model-to-model stages; the
            import uses f:is-robomda-profile on the XMI's stereotype
            applications).
-  Params:  none.  Errors: none.
+  Params:  none.  Errors: none.  Keys: fp:stereotypes (an element's
+           stereotype applications, by the element).
 
   The robomda profile (docs/profile.md) is recognised by its short name
   (the XML prefix, whatever URI a tool gave it) or by its namespace URI
@@ -16,6 +17,7 @@
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
     xmlns:xs="http://www.w3.org/2001/XMLSchema"
     xmlns:f="urn:robomda:xslt:function"
+    xmlns:fp="urn:robomda:xslt:function:private"
     xmlns:pim="urn:robomda:pim:1"
     exclude-result-prefixes="#all">
 
@@ -29,11 +31,19 @@
     <xsl:sequence select="lower-case($prefix) eq 'robomda' or $uri eq $f:profile-uri"/>
   </xsl:function>
 
+  <!-- the stereotypes applied to an element, by the element: a look-up, not
+       a scan of its children (an execution environment or a composite may
+       hold one child per instance, and each instance asks) -->
+  <xsl:key name="fp:stereotypes" match="pim:stereotype" use="generate-id(..)"/>
+
   <!-- the robomda stereotype $name applied to $e (the first, if applied twice) -->
   <xsl:function name="f:stereotype" as="element(pim:stereotype)?">
     <xsl:param name="element" as="element()?"/>
     <xsl:param name="name" as="xs:string"/>
-    <xsl:sequence select="$element/pim:stereotype[@name eq $name][f:is-robomda-profile(@profile, @profile-uri)][1]"/>
+    <xsl:sequence select="(if (empty($element)) then ()
+                           else if (root($element) instance of document-node())
+                           then key('fp:stereotypes', generate-id($element), root($element))
+                           else $element/pim:stereotype)[@name eq $name][f:is-robomda-profile(@profile, @profile-uri)][1]"/>
   </xsl:function>
 
   <!-- a default value as written in a model, without one pair of enclosing

@@ -164,6 +164,8 @@
 
   <xsl:key name="fp:id" match="*[@id]" use="@id"/>
   <xsl:key name="fp:part-by-type" match="pim:part" use="@type"/>
+  <!-- a connector by the port of its own composite it ends on (an end without part) -->
+  <xsl:key name="fp:connector-by-own-port" match="pim:connector" use="pim:end[not(@part)]/@role"/>
   <xsl:key name="fp:deployment-by-deployed" match="pim:deployment" use="tokenize(@deployed)"/>
   <xsl:key name="fp:manifestation-by-element" match="pim:manifestation" use="@element"/>
   <!-- the artifacts that manifest a part (component sets, bind/runtime.xsl) -->
@@ -348,7 +350,12 @@
     <xsl:variable name="work" as="document-node()" select="fp:work($instances, $bound-tree)"/>
     <xsl:variable name="uses" as="element(fp:use)*" select="fp:connector-uses($tops, $expansion)"/>
     <!-- the writer -> reader pairs and the calls each connector makes -->
-    <xsl:variable name="resolved" as="element()*" select="fp:connector-pairs($root, $uses, $work)"/>
+    <!-- in one tree of their own: in document order as made, so that the
+         steps below need not sort a sequence of parentless elements -->
+    <xsl:variable name="resolved-tree" as="document-node()">
+      <xsl:document><xsl:sequence select="fp:connector-pairs($root, $uses, $work)"/></xsl:document>
+    </xsl:variable>
+    <xsl:variable name="resolved" as="element()*" select="$resolved-tree/*"/>
     <xsl:variable name="raw-connections" as="element(pim:connection)*"
         select="if (exists($uses)) then fp:connections-from-connectors($root, $uses, $resolved)
                 else fp:connections-from-interfaces(., $work)"/>

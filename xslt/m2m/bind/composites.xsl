@@ -221,7 +221,7 @@
       <xsl:when test="empty($type)"/>
       <xsl:when test="fp:is-composite($type)">
         <xsl:variable name="inner" as="element()*"
-            select="$type/pim:connector[fp:is-delegation(.)][pim:end[not(@part)]/@role = $end/@role]
+            select="key('fp:connector-by-own-port', $end/@role, $root)[.. is $type][fp:is-delegation(.)]
                     /pim:end[@part] ! fp:end-targets(., $path)"/>
         <xsl:sequence select="if (exists($inner)) then $inner
             else fp:unresolved($end, $part, $type)"/>
@@ -387,7 +387,7 @@
     <xsl:param name="found" as="element()?"/>
     <xsl:variable name="set" as="element(pim:value)?" select="$parts[$level]/pim:value[@attribute eq $property/@id][@value][1]"/>
     <xsl:variable name="promoted" as="element(pim:attribute)?"
-        select="$composites[$level]/pim:attribute[@name eq $property/@name]
+        select="$composites[$level] ! fp:own-features(., 'attribute')[@name eq $property/@name]
                 [fp:promoting-parts(., $composites[$level])[1] is $parts[$level]][1]"/>
     <xsl:variable name="here" as="element()?" select="($promoted[@default], $set, $found)[1]"/>
     <xsl:sequence select="if ($level gt 1 and exists($promoted))

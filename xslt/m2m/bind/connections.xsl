@@ -93,6 +93,10 @@
     <!-- fp:connector-pairs of $uses -->
     <xsl:param name="resolved" as="element()*"/>
     <xsl:variable name="pairs" as="element(fp:pair)*" select="$resolved/self::fp:pair"/>
+    <!-- the connectors that join something, as a set (one look-up per connector) -->
+    <xsl:variable name="joining" as="map(xs:string, xs:boolean)"
+        select="map:merge(distinct-values(($pairs, $resolved/(self::fp:unresolved | self::fp:call-pair))/@connector ! string(.))
+                          ! map:entry(., true()))"/>
     <!-- every promoted port delegated to nothing, every connector that
          joins nothing and every input fed twice, at once -->
     <xsl:variable name="problems" as="map(*)*">
@@ -100,7 +104,7 @@
         <xsl:sequence select="map { 'code': 'BND014', 'id': string(@connector), 'message': string(@message) }"/>
       </xsl:for-each-group>
       <xsl:for-each select="key('fp:id', distinct-values($uses/@connector), $root)
-                            [not(@id = ($pairs/@connector, $resolved/(self::fp:unresolved | self::fp:call-pair)/@connector))]">
+                            [not(map:contains($joining, string(@id)))]">
         <xsl:sequence select="map { 'code': 'BND007', 'id': string(@id), 'message': 'connector ''' || @name
             || ''' joins no output port to an input port of the same data type ('
             || string-join(pim:end ! fp:end-data($root, .), ', ') || ')' }"/>

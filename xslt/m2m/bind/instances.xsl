@@ -276,12 +276,13 @@
 
   <!-- the host of execution environment $ee (the nearest enclosing node
        among $hosts), else the first of the deployment targets $targets that
-       is a host -->
+       is a host ($hosts: fp:hosts; each node is tested with fp:is-host, the
+       same set, so that no instance scans every host) -->
   <xsl:function name="fp:host-of" as="element(pim:node)?">
     <xsl:param name="ee" as="element(pim:node)?"/>
     <xsl:param name="targets" as="element()*"/>
     <xsl:param name="hosts" as="element(pim:node)*"/>
-    <xsl:sequence select="($ee/ancestor::pim:node[. intersect $hosts][1], $targets[. intersect $hosts])[1]"/>
+    <xsl:sequence select="($ee/ancestor::pim:node[fp:is-host(.)][1], $targets[fp:is-host(.)])[1]"/>
   </xsl:function>
 
   <!-- one activity value: (value, source) from stereotype tag, class

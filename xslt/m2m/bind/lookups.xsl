@@ -36,8 +36,15 @@
 
   <xsl:function name="fp:hosts" as="element(pim:node)*">
     <xsl:param name="root" as="document-node()"/>
-    <xsl:sequence select="$root/pim:model/pim:platform//pim:node
-                [@kind eq 'node' or exists(f:stereotype(., 'Host'))]"/>
+    <xsl:sequence select="$root/pim:model/pim:platform//pim:node[fp:is-host(.)]"/>
+  </xsl:function>
+
+  <!-- true when $node, a node of the model's platform, is one of fp:hosts
+       (a test of the node itself: no scan of every host) -->
+  <xsl:function name="fp:is-host" as="xs:boolean">
+    <xsl:param name="node" as="element()"/>
+    <xsl:sequence select="exists($node/self::pim:node[@kind eq 'node' or exists(f:stereotype(., 'Host'))]
+                                 [ancestor::pim:platform[parent::pim:model[parent::document-node()]]])"/>
   </xsl:function>
 
   <!-- the default values of the robomda profile's tags (what a tool that

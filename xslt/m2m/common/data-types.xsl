@@ -12,7 +12,8 @@
            (@type, @primitive, @lower, @upper), pim:datatype,
            pim:enumeration, pim:class, pim:generalization.
   Writes:  nothing but values.
-  Params:  none.  Keys: fp:id (psm-kit.xsl).
+  Params:  none.  Keys: fp:id (psm-kit.xsl), fp:feature (here: a classifier's
+           attributes and operations, by the classifier).
   Errors:  through f:fail, with the code the caller passes:
            fp:data-types       a data type that contains itself
            fp:default-items    a default with more items than the array holds,
@@ -84,9 +85,21 @@
     <xsl:param name="classifier" as="element()"/>
     <xsl:param name="kind" as="xs:string"/>
     <xsl:variable name="lineage" as="element()*" select="fp:lineage($classifier)"/>
-    <xsl:sequence select="if (count($lineage) eq 1) then $classifier/*[local-name() eq $kind]
-        else for $name in distinct-values(reverse($lineage) ! *[local-name() eq $kind]/@name)
-             return ($lineage ! *[local-name() eq $kind][@name eq $name])[1]"/>
+    <xsl:sequence select="if (count($lineage) eq 1) then fp:own-features($classifier, $kind)
+        else for $name in distinct-values(reverse($lineage) ! fp:own-features(., $kind)/@name)
+             return ($lineage ! fp:own-features(., $kind)[@name eq $name])[1]"/>
+  </xsl:function>
+
+  <!-- the features named $kind of $classifier itself, in document order:
+       a look-up, not a scan of its children (a composite holds a part and a
+       connector per instance, and every instance asks for its attributes) -->
+  <xsl:key name="fp:feature" match="*[local-name() = ('attribute', 'operation')]" use="generate-id(..) || '|' || local-name()"/>
+  <xsl:function name="fp:own-features" as="element()*">
+    <xsl:param name="classifier" as="element()"/>
+    <xsl:param name="kind" as="xs:string"/>
+    <xsl:sequence select="if (root($classifier) instance of document-node())
+                          then key('fp:feature', generate-id($classifier) || '|' || $kind, root($classifier))
+                          else $classifier/*[local-name() eq $kind]"/>
   </xsl:function>
 
   <xsl:function name="fp:attributes" as="element(pim:attribute)*">

@@ -62,8 +62,16 @@
   <xsl:function name="fp:oro-process-order" as="element(pim:process)*">
     <xsl:param name="instances" as="element(pim:instance)*"/>
     <xsl:variable name="binding" as="element(pim:binding)?" select="$instances[1]/.."/>
-    <xsl:perform-sort select="$binding/pim:process[@xmi-id = $instances/@execution-environment]">
-      <xsl:sort select="min($instances[@execution-environment eq current()/@xmi-id]/xs:integer((@start-order, 999999)[1]))"/>
+    <!-- process id -> the earliest start order of its instances (one pass, not a scan per process) -->
+    <xsl:variable name="first" as="map(xs:string, xs:integer)">
+      <xsl:map>
+        <xsl:for-each-group select="$instances" group-by="@execution-environment">
+          <xsl:map-entry key="string(current-grouping-key())" select="min(current-group()/xs:integer((@start-order, 999999)[1]))"/>
+        </xsl:for-each-group>
+      </xsl:map>
+    </xsl:variable>
+    <xsl:perform-sort select="$binding/pim:process[map:contains($first, string(@xmi-id))]">
+      <xsl:sort select="$first(string(@xmi-id))"/>
     </xsl:perform-sort>
   </xsl:function>
 
@@ -83,6 +91,14 @@
     <xsl:param name="corba" as="xs:boolean"/>
     <xsl:param name="ros" as="xs:string*"/><!-- names of the processes with a ROS stream -->
     <xsl:variable name="single" as="xs:boolean" select="fp:oro-single-process($instances)"/>
+    <!-- thread id -> its instances (one pass, not a scan per thread) -->
+    <xsl:variable name="members" as="map(xs:string, element(pim:instance)+)">
+      <xsl:map>
+        <xsl:for-each-group select="$instances" group-by="@thread">
+          <xsl:map-entry key="string(current-grouping-key())" select="current-group()"/>
+        </xsl:for-each-group>
+      </xsl:map>
+    </xsl:variable>
     <xsl:for-each select="fp:oro-process-order($instances)">
       <xsl:variable name="host" as="element(pim:host)?" select="key('fp:host', @host, root(.))"/>
       <o:process xmi-id="{@xmi-id}" name="{@name}" position="{position()}"
@@ -94,7 +110,7 @@
         </xsl:if>
         <xsl:for-each select="pim:thread">
           <o:thread xmi-id="{@xmi-id}" name="{@name}"
-                    members="{fp:in-start-order($instances[@thread eq current()/@xmi-id]) ! string(@name)}"/>
+                    members="{fp:in-start-order($members(string(@xmi-id))) ! string(@name)}"/>
         </xsl:for-each>
       </o:process>
     </xsl:for-each>

@@ -179,8 +179,10 @@
         <xsl:sequence select="$task-contexts/o:task-context, fp:oro-thread-task-context($processes, $package)"/>
         <xsl:sequence select="$binding/pim:host ! fp:oro-host(.)"/>
         <xsl:sequence select="$processes, $connections"/>
+        <xsl:variable name="process-by-id" as="map(xs:string, element(o:process))"
+            select="map:merge($processes ! map:entry(string(@xmi-id), .))"/>
         <xsl:for-each select="fp:in-start-order($instances)">
-          <xsl:variable name="process" as="element(o:process)" select="$processes[@xmi-id eq current()/@execution-environment]"/>
+          <xsl:variable name="process" as="element(o:process)" select="$process-by-id(string(@execution-environment))"/>
           <xsl:variable name="thread" as="element(o:thread)?" select="$process/o:thread[@xmi-id eq current()/@thread]"/>
           <!-- a thread starts just before its first member -->
           <xsl:if test="$thread and tokenize($thread/@members)[1] eq @name">

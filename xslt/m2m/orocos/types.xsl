@@ -37,6 +37,7 @@
     xmlns:ty="urn:robomda:orocos-types:1"
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:map="http://www.w3.org/2005/xpath-functions/map"
     exclude-result-prefixes="#all">
 
   <!-- the type of $typed, or () when Orocos cannot carry it -->
@@ -112,7 +113,10 @@
     <xsl:variable name="typed" as="element()*" select="$task-contexts//*[@type-kind]"/>
     <xsl:variable name="defs" as="element()*"
         select="fp:data-types(distinct-values($typed/@type-ref[. ne '']) ! key('fp:id', ., $root), 'ORO012')"/>
-    <xsl:variable name="fields" as="element(o:field)*" select="$defs/self::pim:datatype ! fp:oro-fields(.)"/>
+    <!-- each struct's fields, by the data type's id (a look-up, not a scan of every field) -->
+    <xsl:variable name="fields-of" as="map(xs:string, element(o:field)*)"
+        select="map:merge($defs/self::pim:datatype ! map:entry(string(@id), fp:oro-fields(.)))"/>
+    <xsl:variable name="fields" as="element(o:field)*" select="$defs/self::pim:datatype ! $fields-of(string(@id))"/>
     <xsl:if test="exists($defs) or exists($typed[@type-kind eq 'sequence'])">
       <o:types typekit="{$package}-typekit">
         <xsl:for-each select="$defs">
@@ -129,7 +133,7 @@
             <xsl:otherwise>
               <o:struct xmi-id="{@id}" name="{@name}" cpp-name="{$type/@cpp}" rtt-name="{$type/@rtt}" header="{$type/@header}">
                 <xsl:sequence select="fp:psm-doc(.)"/>
-                <xsl:sequence select="$fields[@owner eq current()/@id]"/>
+                <xsl:sequence select="$fields-of(string(@id))"/>
               </o:struct>
             </xsl:otherwise>
           </xsl:choose>

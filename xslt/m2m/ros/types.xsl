@@ -41,6 +41,7 @@
     xmlns:ty="urn:robomda:ros-types:1"
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:map="http://www.w3.org/2005/xpath-functions/map"
     exclude-result-prefixes="#all">
 
   <!-- the type of $typed, or () when the ROS targets cannot carry it -->
@@ -108,7 +109,9 @@
     <xsl:variable name="defs" as="element()*" select="fp:data-types($typed ! fp:type-def(.), 'ROS010')"/>
     <xsl:variable name="carried" as="element()*"
         select="fp:type-closure(distinct-values($ports/r:message[@generated eq 'true']/@type) ! key('fp:id', ., $root))"/>
-    <xsl:variable name="declared" as="element()*" select="$defs[exists(. intersect $carried) or fp:declarable(.)]"/>
+    <!-- the carried types as a set: whether a type is carried is one look-up, not a scan of them all -->
+    <xsl:variable name="carried-set" as="map(xs:string, xs:boolean)" select="map:merge($carried ! map:entry(generate-id(.), true()))"/>
+    <xsl:variable name="declared" as="element()*" select="$defs[map:contains($carried-set, generate-id(.)) or fp:declarable(.)]"/>
     <xsl:for-each select="$defs except $declared">
       <xsl:sequence select="f:warn('ROS109', string(@id), 'no header is generated for data type ''' || @name
           || ''': an attribute of it, at some depth, has a type the ROS type map cannot map; the atomic code must declare ::'
@@ -118,7 +121,7 @@
       <r:types>
         <xsl:for-each select="$declared">
           <xsl:variable name="type" as="element(ty:type)?" select="fp:def-type(.)"/>
-          <xsl:variable name="message" as="xs:boolean" select="exists(. intersect $carried)"/>
+          <xsl:variable name="message" as="xs:boolean" select="map:contains($carried-set, generate-id(.))"/>
           <xsl:element name="{if (self::pim:enumeration) then 'r:enum' else 'r:struct'}" namespace="urn:robomda:psm-ros:1">
             <xsl:attribute name="xmi-id" select="@id"/>
             <xsl:attribute name="name" select="@name"/>

@@ -13,6 +13,7 @@
            or *:literal elements (an enumeration: @member).
   Writes:  strings (file contents).
   Params:  none.  Errors: none.
+  Keys:    fp:type-definition (a type definition by @xmi-id).
   Uses:    fp:lines, fp:banner, fp:doc-of (text.xsl).
 -->
 <xsl:stylesheet version="3.0"
@@ -20,6 +21,18 @@
     xmlns:xs="http://www.w3.org/2001/XMLSchema"
     xmlns:fp="urn:robomda:xslt:function:private"
     exclude-result-prefixes="#all">
+
+  <!-- the definitions among $definitions (siblings, in document order) with
+       an @xmi-id of $ids, in document order: a look-up, not a scan of every
+       definition for every type -->
+  <xsl:key name="fp:type-definition" match="*[@xmi-id][@header]" use="@xmi-id"/>
+  <xsl:function name="fp:definitions-of" as="element()*">
+    <xsl:param name="ids" as="attribute()*"/>
+    <xsl:param name="definitions" as="element()*"/>
+    <xsl:sequence select="if (empty($definitions) or not(root($definitions[1]) instance of document-node()))
+                          then $definitions[@xmi-id = $ids]
+                          else key('fp:type-definition', $ids, root($definitions[1]))[.. is $definitions[1]/..]"/>
+  </xsl:function>
 
   <!-- the header of type $type; $definitions: every type definition of the
        package (the headers of the types its fields use) -->
@@ -34,7 +47,7 @@
     <xsl:variable name="includes" as="xs:string*" select="
         if ($fields[@type-kind eq 'sequence']) then '#include &lt;vector&gt;' else (),
         if ($fields[contains(@cpp-type, 'std::string')]) then '#include &lt;string&gt;' else (),
-        distinct-values($definitions[@xmi-id = $fields/@type-ref]/@header) ! ('#include &quot;' || . || '&quot;')"/>
+        distinct-values(fp:definitions-of($fields/@type-ref, $definitions)/@header) ! ('#include &quot;' || . || '&quot;')"/>
     <xsl:sequence select="fp:lines((
         fp:banner('// ', 'm2t/common/data-types.xsl', (if ($enum) then 'enumeration ''' else 'data type ''') || $type/@name
                   || ''' of model ''' || $model-name || '''', false()),

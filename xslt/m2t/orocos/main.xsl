@@ -83,9 +83,11 @@
           <xsl:sequence select="$fp:file-margin, fp:user-file(concat('src/', @class, '.cpp'), ., fp:user-source(.))"/>
         </xsl:if>
       </xsl:for-each>
-      <xsl:for-each select="o:types/(o:struct | o:enum)">
+      <!-- the definitions, once: not a new sequence of them all for each type -->
+      <xsl:variable name="definitions" as="element()*" select="o:types/(o:struct | o:enum)"/>
+      <xsl:for-each select="$definitions">
         <xsl:sequence select="$fp:file-margin, fp:file('include/' || @header, 'generated', 'm2t/common/data-types.xsl',
-                                      fp:type-header(., ../(o:struct | o:enum), ../../@model-name))"/>
+                                      fp:type-header(., $definitions, ../../@model-name))"/>
       </xsl:for-each>
       <xsl:sequence select="o:types ! ($fp:file-margin, fp:file('src/typekit.cpp', 'generated', $fp:typekit-xsl, fp:typekit-cpp(.)))"/>
       <xsl:sequence select="$fp:file-margin, fp:file('src/components.cpp', 'generated', $fp:cpp-xsl, fp:components-cpp(.))"/>

@@ -41,7 +41,7 @@
         if ($tc/o:required-service) then ('#include &lt;rtt/Logger.hpp&gt;', '#include &lt;rtt/OperationCaller.hpp&gt;') else (),
         '#include &lt;string&gt;',
         if ($tc//*[@type-kind eq 'sequence']) then '#include &lt;vector&gt;' else (),
-        distinct-values(root($tc)//o:types/*[@xmi-id = $tc//@type-ref]/@header) ! ('#include &quot;' || . || '&quot;')"/>
+        distinct-values(fp:definitions-of($tc//@type-ref, root($tc)//o:types/*)/@header) ! ('#include &quot;' || . || '&quot;')"/>
   </xsl:function>
 
   <xsl:function name="fp:member-decls" as="xs:string*">

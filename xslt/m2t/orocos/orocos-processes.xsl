@@ -14,6 +14,9 @@
            client those scripts run to wait for a component's Running
            state and to stop a process's components before it ends.
   Params:  none.  Errors: none.
+  Keys:    fp:view-end (on a view's connections), fp:instance-in and
+           fp:connection-in (on the PSM: a process's instances and
+           connections, so that each view reads only its own).
 
   The view of process P: @deploy-name its file; the library and typekit;
   its connections: the part of each connection point inside P (writers
@@ -33,6 +36,12 @@
 
   <!-- the ends of the connections of a view, by instance (fp:port-connections) -->
   <xsl:key name="fp:view-end" match="o:connection/o:writer | o:connection/o:reader" use="@instance"/>
+  <!-- on the PSM: the instances of a process, and the connections with a
+       writer, stream or CORBA link in it (by the process's file), so that
+       a process's view reads its own, not every instance and connection -->
+  <xsl:key name="fp:instance-in" match="o:deployment/o:instance" use="@process"/>
+  <xsl:key name="fp:connection-in" match="o:deployment/o:connection"
+           use="o:writer/@process, o:stream/@process, o:remote/@process"/>
 
   <xsl:function name="fp:process-view" as="element(o:deployment)">
     <xsl:param name="deployment" as="element(o:deployment)"/>
@@ -41,7 +50,7 @@
     <!-- in a document of their own, for key fp:view-end -->
     <xsl:variable name="view-connections" as="document-node()">
       <xsl:document>
-      <xsl:for-each select="$deployment/o:connection">
+      <xsl:for-each select="fp:in-process('fp:connection-in', $deployment, $p)">
         <xsl:if test="o:writer[@process eq $p] and o:reader[@process eq $p]">
           <o:connection>
             <xsl:sequence select="@*, o:writer[@process eq $p], o:reader[@process eq $p]"/>
@@ -70,7 +79,7 @@
       </xsl:document>
     </xsl:variable>
     <xsl:variable name="connections" as="element(o:connection)*" select="$view-connections/o:connection"/>
-    <xsl:variable name="instances" as="element(o:instance)*" select="$deployment/o:instance[@process eq $p]"/>
+    <xsl:variable name="instances" as="element(o:instance)*" select="fp:in-process('fp:instance-in', $deployment, $p)"/>
     <o:deployment>
       <xsl:sequence select="$deployment/@*"/>
       <xsl:attribute name="deploy-name" select="$p"/>
@@ -94,6 +103,19 @@
         </xsl:copy>
       </xsl:for-each>
     </o:deployment>
+  </xsl:function>
+
+  <!-- the children of $deployment that key $key finds for process file $p
+       (fp:instance-in: its instances; fp:connection-in: the connections
+       that may have a part in it), in document order -->
+  <xsl:function name="fp:in-process" as="element()*">
+    <xsl:param name="key" as="xs:string"/>
+    <xsl:param name="deployment" as="element(o:deployment)"/>
+    <xsl:param name="p" as="xs:string"/>
+    <xsl:sequence select="if (root($deployment) instance of document-node())
+                          then key($key, $p, root($deployment))[.. is $deployment]
+                          else if ($key eq 'fp:instance-in') then $deployment/o:instance[@process eq $p]
+                          else $deployment/o:connection"/>
   </xsl:function>
 
   <!-- o:port-connection of each port of instance $name in the connections
@@ -321,7 +343,7 @@
         'stop() {',
         '  trap - INT TERM EXIT',
         for $p in reverse($processes) return '  stop_process &quot;$pid_' || $p/@position || '&quot; ' || $p/@file || ' '
-            || string-join(reverse($deployment/o:instance[@process eq $p/@file]/@name), ' '),
+            || string-join(reverse(fp:in-process('fp:instance-in', $deployment, $p/@file)/@name), ' '),
         '  if [ -n &quot;$ns&quot; ]; then kill &quot;$ns&quot; 2&gt;/dev/null || true; wait &quot;$ns&quot; 2&gt;/dev/null || true; fi',
         '  say &quot;stopped&quot;',
         '}',
@@ -342,9 +364,11 @@
         'wait_ns',
         $processes ! (
           let $process := .,
-              $earlier := $deployment/o:process[xs:integer(@position) lt xs:integer($process/@position)][string(@host) ne string($process/@host)],
-              $remote := distinct-values(($deployment/o:instance[@process = $earlier/@file]/@name,
-                                          $deployment/o:connection/o:remote[@process eq $process/@file]/@proxy))
+              $before := $deployment/o:process[xs:integer(@position) eq xs:integer($process/@position) - 1]
+                                             [string(@host) ne string($process/@host)],
+              $remote := distinct-values((fp:in-process('fp:instance-in', $deployment, string($before/@file))/@name,
+                                          fp:in-process('fp:connection-in', $deployment, $process/@file)
+                                            /o:remote[@process eq $process/@file]/@proxy))
           return (
             '',
             '# ' || @position || '. process ''' || @name || '''',
@@ -353,7 +377,7 @@
             'ORO_LOGFILE=&quot;$LOGDIR/' || @file || '.log&quot; setsid '
               || fp:deployer-command(fp:process-view($deployment, .), @file || '.$format', '$NAMESERVICE', '') || ' $ENDPOINT &lt;/dev/null &amp;',
             'pid_' || @position || '=$!',
-            'wait_running $! ' || string-join($deployment/o:instance[@process eq $process/@file]/@name, ' '))),
+            'wait_running $! ' || string-join(fp:in-process('fp:instance-in', $deployment, $process/@file)/@name, ' '))),
         '',
         'say &quot;every process of host ''' || ($host/@name, 'localhost')[1] || ''' started; Ctrl-C stops them&quot;',
         'wait'))"/>

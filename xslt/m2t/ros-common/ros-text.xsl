@@ -31,6 +31,10 @@
                            include/<pkg>/msg_conversions.hpp of the model's types
     fp:msg-file / fp:ros-conversions  their texts
     fp:ros1-type / fp:ros2-type  (header, C++ type) of a message or service
+    fp:on-host / fp:in-set($package, $name)  the instances (sets) of a host, the
+                           members of a set: through keys fp:ros-on-host,
+                           fp:ros-set-on-host and fp:ros-in-set, so that a
+                           launch file does not scan every instance
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -41,6 +45,26 @@
     xmlns:fp="urn:robomda:xslt:function:private"
     xmlns:m="urn:robomda:xslt:mode"
     exclude-result-prefixes="#all">
+
+  <!-- the instances and component sets of a host, the members of a set -->
+  <xsl:key name="fp:ros-on-host" match="r:package/r:instance" use="@host"/>
+  <xsl:key name="fp:ros-set-on-host" match="r:package/r:set" use="@host"/>
+  <xsl:key name="fp:ros-in-set" match="r:package/r:instance" use="@set"/>
+
+  <!-- the children of $package that key $key finds for $value, in document
+       order: $package/r:instance[@host eq $value] (fp:ros-on-host),
+       $package/r:set[@host eq $value] (fp:ros-set-on-host) or
+       $package/r:instance[@set eq $value] (fp:ros-in-set) -->
+  <xsl:function name="fp:ros-children" as="element()*">
+    <xsl:param name="key" as="xs:string"/>
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:param name="value" as="xs:string"/>
+    <xsl:sequence select="if (root($package) instance of document-node())
+                          then key($key, $value, root($package))[.. is $package]
+                          else if ($key eq 'fp:ros-on-host') then $package/r:instance[@host eq $value]
+                          else if ($key eq 'fp:ros-set-on-host') then $package/r:set[@host eq $value]
+                          else $package/r:instance[@set eq $value]"/>
+  </xsl:function>
 
   <!-- the entry of both ROS text stages: their r:package template (mode
        m:emit-files) makes the file set. It comes out as f:indent (common/indent.xsl) would indent
@@ -314,9 +338,11 @@
        for those a port carries msg/<Type>.msg and the conversions -->
   <xsl:function name="fp:ros-type-files" as="element(fs:file)*">
     <xsl:param name="package" as="element(r:package)"/>
-    <xsl:for-each select="$package/r:types/(r:struct | r:enum)">
+    <!-- the definitions, once: not a new sequence of them all for each type -->
+    <xsl:variable name="definitions" as="element()*" select="$package/r:types/(r:struct | r:enum)"/>
+    <xsl:for-each select="$definitions">
       <xsl:sequence select="fp:file('include/' || @header, 'generated', 'm2t/common/data-types.xsl',
-                                    fp:type-header(., ../(r:struct | r:enum), $package/@model-name))"/>
+                                    fp:type-header(., $definitions, $package/@model-name))"/>
       <xsl:if test="@message">
         <xsl:sequence select="fp:file('msg/' || @message || '.msg', 'generated', $fp:build-xsl, fp:msg-file(., $fp:build-xsl))"/>
       </xsl:if>

@@ -75,8 +75,8 @@
         '--&gt;',
         '&lt;launch&gt;',
         fp:ros1-machines($host),
-        for $i in $package/r:instance[@host eq $host/@name][not(@set)] return fp:ros1-node($package, $i),
-        $package/r:set[@host eq $host/@name] ! ('', concat('  &lt;include file=&quot;$(find ', $package/@name, ')/launch/', $package/@deploy-name, '_', @launch, '.launch&quot;/&gt;')),
+        for $i in fp:ros-children('fp:ros-on-host', $package, $host/@name)[not(@set)] return fp:ros1-node($package, $i),
+        fp:ros-children('fp:ros-set-on-host', $package, $host/@name) ! ('', concat('  &lt;include file=&quot;$(find ', $package/@name, ')/launch/', $package/@deploy-name, '_', @launch, '.launch&quot;/&gt;')),
         '&lt;/launch&gt;'))"/>
   </xsl:function>
 
@@ -84,7 +84,7 @@
   <xsl:function name="fp:ros1-set-launch" as="xs:string">
     <xsl:param name="package" as="element(r:package)"/>
     <xsl:param name="set" as="element(r:set)"/>
-    <xsl:variable name="members" as="element(r:instance)*" select="$package/r:instance[@set eq $set/@launch]"/>
+    <xsl:variable name="members" as="element(r:instance)*" select="fp:ros-children('fp:ros-in-set', $package, $set/@launch)"/>
     <xsl:sequence select="fp:lines((
         '&lt;?xml version=&quot;1.0&quot;?&gt;',
         '&lt;!--',

@@ -97,7 +97,7 @@
   <xsl:function name="fp:ros2-host-launch" as="xs:string">
     <xsl:param name="package" as="element(r:package)"/>
     <xsl:param name="host" as="element(r:host)"/>
-    <xsl:variable name="here" as="element(r:instance)*" select="$package/r:instance[@host eq $host/@name]"/>
+    <xsl:variable name="here" as="element(r:instance)*" select="fp:ros-children('fp:ros-on-host', $package, $host/@name)"/>
     <xsl:sequence select="fp:lines((
         '&lt;?xml version=&quot;1.0&quot;?&gt;',
         '&lt;!--',
@@ -112,7 +112,7 @@
         for $p in $package/r:process[@host eq $host/@name][not(@set)]
         return fp:ros2-container($package, $p, $here[@process eq $p/@name][not(@set)]),
         for $i in $here[not(@process)][not(@set)] return fp:ros2-node($package, $i),
-        $package/r:set[@host eq $host/@name] ! concat('  &lt;include file=&quot;$(find-pkg-share ', $package/@name, ')/launch/',
+        fp:ros-children('fp:ros-set-on-host', $package, $host/@name) ! concat('  &lt;include file=&quot;$(find-pkg-share ', $package/@name, ')/launch/',
                                                        $package/@deploy-name, '_', @launch, '.launch.xml&quot;/&gt;'),
         $host/@lifecycle-manager ! fp:ros2-lifecycle-manager-node($package, $host, $here[@managed]),
         '&lt;/launch&gt;'))"/>
@@ -144,7 +144,7 @@
   <xsl:function name="fp:ros2-set-launch" as="xs:string">
     <xsl:param name="package" as="element(r:package)"/>
     <xsl:param name="set" as="element(r:set)"/>
-    <xsl:variable name="members" as="element(r:instance)*" select="$package/r:instance[@set eq $set/@launch]"/>
+    <xsl:variable name="members" as="element(r:instance)*" select="fp:ros-children('fp:ros-in-set', $package, $set/@launch)"/>
     <xsl:sequence select="fp:lines((
         '&lt;?xml version=&quot;1.0&quot;?&gt;',
         '&lt;!--',
