@@ -47,28 +47,11 @@ PROGRAMS=(bin/deployer bin/deployer-corba bin/rttlua bin/rttlua-corba)
 LIBRARIES=(lib/liborocos-rtt-gnulinux.so lib/liborocos-rtt-corba-gnulinux.so lib/liborocos-rtt-mqueue-gnulinux.so
            lib/liborocos-ocl-deployment-corba-gnulinux.so)
 
-MISSING=0
-say() { printf 'build.sh: %s\n' "$*"; }
-missing() { say "MISSING: $*"; MISSING=1; }
+# say, missing, apt_step (toolchains/common.sh)
+source "$HERE/../common.sh"
 
 # --- Debian packages ------------------------------------------------------------------------------
-apt_missing() {
-  local p
-  for p in "${APT_PACKAGES[@]}"; do
-    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || echo "$p"
-  done
-}
-mapfile -t absent < <(apt_missing)
-if [ ${#absent[@]} -eq 0 ]; then
-  say "Debian packages: all ${#APT_PACKAGES[@]} installed"
-elif [ $CHECK = 1 ] || [ $APT = 0 ]; then
-  missing "Debian packages ${absent[*]} (apt-get install them)"
-else
-  SUDO=(); [ "$(id -u)" = 0 ] || SUDO=(sudo)
-  say "installing Debian packages: ${absent[*]}"
-  "${SUDO[@]}" apt-get update -q
-  DEBIAN_FRONTEND=noninteractive "${SUDO[@]}" apt-get install -y -q --no-install-recommends "${absent[@]}"
-fi
+apt_step
 
 # --- sources ----------------------------------------------------------------------------------------
 # From MIRROR/orocos-toolchain+<name>/repo when that exists (fetched bare mirrors), else from the public

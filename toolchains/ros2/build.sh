@@ -53,28 +53,11 @@ STAGE2_UP_TO=(rclpy launch launch_xml launch_yaml launch_ros ros2launch ros2life
               std_msgs std_srvs lifecycle_msgs composition_interfaces type_description_interfaces)
 STAGE2_SKIP=(test_msgs ros2cli_test_interfaces test_launch_ros)
 
-MISSING=0
-say() { printf 'build.sh: %s\n' "$*"; }
-missing() { say "MISSING: $*"; MISSING=1; }
+# say, missing, apt_step (toolchains/common.sh)
+source "$HERE/../common.sh"
 
 # --- Debian packages ------------------------------------------------------------------------------
-apt_missing() {
-  local p
-  for p in "${APT_PACKAGES[@]}"; do
-    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || echo "$p"
-  done
-}
-mapfile -t absent < <(apt_missing)
-if [ ${#absent[@]} -eq 0 ]; then
-  say "Debian packages: all ${#APT_PACKAGES[@]} installed"
-elif [ $CHECK = 1 ] || [ $APT = 0 ]; then
-  missing "Debian packages ${absent[*]} (apt-get install them)"
-else
-  SUDO=(); [ "$(id -u)" = 0 ] || SUDO=(sudo)
-  say "installing Debian packages: ${absent[*]}"
-  "${SUDO[@]}" apt-get update -q
-  DEBIAN_FRONTEND=noninteractive "${SUDO[@]}" apt-get install -y -q --no-install-recommends "${absent[@]}"
-fi
+apt_step
 
 # --- sources ----------------------------------------------------------------------------------------
 # A shallow clone of a branch gets its newest commit; the one verified here is then fetched on its own
