@@ -35,6 +35,7 @@ PID_PIM = CASES / "pid" / "expected" / "bind.xml"
 MEKA_PSM = CASES / "meka" / "expected" / "orocos" / "psm.xml"
 PID_ROS = CASES / "pid" / "expected" / "ros1" / "psm.xml"
 DIST_PIM = CASES / "distributed" / "expected" / "bind.xml"  # seed 002: hosts, processes, a thread, a set
+DIST_PSM = CASES / "distributed" / "expected" / "orocos" / "psm.xml"
 
 _SECOND_HOST = ('<pim:host xmi-id="_pid000node"', '<pim:host xmi-id="_h2" name="robotPC" hostname="robotpc" '
                 'hostname-source="name" address="robotpc" address-source="name"/>\n    <pim:host xmi-id="_pid000node"')
@@ -120,6 +121,8 @@ CASES_BY_RULE: dict[str, tuple[Path, str | None, Path, list[tuple[str, str]]]] =
         (r'<o:port xmi-id="_f6adhiAWMvXuoB0nccZWyl"[^>]*/>\s*', '')]),
     "ORO105": (OROCOS_RULES, None, MEKA_PSM, [('class="GX1050Camera"', 'class="GX1050 Camera"')]),
     "ORO106": (OROCOS_RULES, None, MEKA_PSM, [('class="ATIForceSensor"', 'class="GX1050Camera"')]),
+    # controller starts after vision (StartAfter) but its process rttControl would start first
+    "ORO107": (OROCOS_RULES, None, DIST_PSM, [(r'(name="rttControl" )position="3"', r'\1position="0"')]),
     "ROS201": (ROS_RULES, None, PID_ROS, [('class="PIDController"', 'class="TrajectoryGenerator"')]),
     "ROS202": (ROS_RULES, None, PID_ROS, [('executable="pid_controller_node"', 'executable="trajectory_generator_node"')]),
     "ROS203": (ROS_RULES, None, PID_ROS, [('<r:instance xmi-id="_pid075k" name="PIDController"',
