@@ -126,7 +126,10 @@ def test_a_signal_stops_the_batch_at_once_with_one_line(tmp_path: Path, sig: sig
     out = tmp_path / "out"
     child = subprocess.Popen([sys.executable, "-m", "robomda", "generate", str(src), "-o", str(out), "-j", "2"],
                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, start_new_session=True,
-                             env=dict(os.environ, PYTHONPATH=str(ROOT / "src")))
+                             env=dict(os.environ, PYTHONPATH=str(ROOT / "src")),
+                             # as from a terminal: a run started in the background by a non-interactive shell
+                             # (`.ci/run &`) inherits SIGINT ignored, and the batch then rightly runs on
+                             preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     deadline = time.monotonic() + 60
     while not (out / "m0" / "model.xmi").exists() and not (out / "m1" / "model.xmi").exists() \
             and time.monotonic() < deadline and child.poll() is None:
