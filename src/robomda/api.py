@@ -15,7 +15,7 @@ from lxml import etree
 from robomda import pipeline as pipelines
 from robomda.diagnostics import EXIT_FINDINGS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, Diagnostic, RobomdaError
 from robomda.engine import shared
-from robomda.output import Drift, WriteReport, compare_fileset, user_findings, write_fileset
+from robomda.output import Drift, WriteReport, compare_fileset, recorded_paths, user_findings, write_fileset
 from robomda.resources import available_targets, default_target, pipeline_path, target_of_middleware
 from robomda.validate import stream
 
@@ -420,10 +420,7 @@ def diagram(model: Path | str, out: Path | str | None, *, write: bool = True, re
 def _refuse_package_folder(out: Path) -> None:
     """USAGE when ``out`` holds a package robomda generated: written there, the diagrams alone would
     make every file of the package stale (removed) for the writer."""
-    from robomda.output import _read_state  # the writer's record of what it wrote
-
-    package = sorted(p for part in ("files", "user") for p in _read_state(out.resolve(), part)
-                     if not p.startswith("diagrams/"))
+    package = [p for p in recorded_paths(out.resolve()) if not p.startswith("diagrams/")]
     if package:
         raise RobomdaError([Diagnostic(
             "error", "USAGE", f"{out} holds a package robomda generated ({package[0]} ...): draw its diagrams "

@@ -178,6 +178,11 @@ def _read_state(out: Path, part: str = "files") -> dict:
         return {}
 
 
+def recorded_paths(out: Path) -> list[str]:
+    """Every path the writer's record in ``out`` says it wrote (generated and user files), sorted."""
+    return sorted({path for part in ("files", "user") for path in _read_state(out, part)})
+
+
 def _signature_items(signature: str) -> list[str]:
     """The items of a user file's signature, separated by "; " (by line ends in older states)."""
     return [item for item in re.split(r"; |\n", signature) if item]
