@@ -2,6 +2,7 @@
 # Install robomda with its test dependencies into .venv and run the whole test
 # suite. The README's quick start and .ci/run both call exactly this.
 # Extra arguments go to pytest (e.g. tests/run.sh -k orocos).
+# Tests run on every core (pytest-xdist, -n auto).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -62,4 +63,6 @@ fi
 
 python3 -m venv .venv
 .venv/bin/python -m pip install -q --disable-pip-version-check -e '.[test]'
-exec .venv/bin/python -m pytest "$@"
+# One worker per core (pytest-xdist); ROBOMDA_TEST_JOBS=0 runs in this process
+# (pdb, -x), and a later -n of the caller's wins.
+exec .venv/bin/python -m pytest -n "${ROBOMDA_TEST_JOBS:-auto}" "$@"
