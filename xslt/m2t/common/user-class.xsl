@@ -8,8 +8,8 @@
   Writes:  fs:file elements of mode "user" (schemas/fileset/1/fileset.xsd)
            and the frames of the user's header and source (strings).
   Params:  none.  Errors: none.
-  Uses:    fp:banner, fp:guard, fp:lines of common/text.xsl (included by
-           each target's main.xsl).
+  Uses:    fp:banner, fp:guard, fp:lines, fp:what of common/text.xsl
+           (included by each target's main.xsl).
 
   A file of the user's is written once and never overwritten
   (src/robomda/output.py); its fs:file says which model element it

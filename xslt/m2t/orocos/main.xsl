@@ -24,8 +24,8 @@
   Params:  model-dir-from-output (xslt/m2t/common/text.xsl).
   Errors:  none (the PSM is complete and valid).
   Modules: ../common/text.xsl (the text kit every target shares),
-           ../common/package-manifest.xsl, ../common/user-class.xsl, ../common/data-types.xsl,
-           orocos-cpp.xsl, orocos-build.xsl, orocos-deploy.xsl,
+           ../common/package-manifest.xsl, ../common/user-class.xsl (the
+           user files, shared with ROS), ../common/data-types.xsl, orocos-cpp.xsl, orocos-build.xsl, orocos-deploy.xsl,
            orocos-types.xsl.
 -->
 <xsl:stylesheet version="3.0"
