@@ -48,7 +48,7 @@ COMP_NAMES = ["Arm", "Camera", "Planner", "Gripper"]
 PORT_NAMES = ["cmd", "state", "pose"]
 PROP_NAMES = ["gain", "limit"]
 _FILESETS: dict[tuple[str, str], etree._Element] = {}
-_COUNTS = {"cycles": 0, "runs": 0, "refused": 0, "seconds": 0.0}
+_COUNTS = {"cycles": 0, "runs": 0, "refused": 0}
 
 # ------------------------------------------------------------------ edits
 FIRST = (Comp("1", "Arm", (Port("1", "cmd", "in"), Port("2", "state", "out")), (("1", "gain"),)),)
@@ -199,7 +199,7 @@ def user_edit(out: Path, mine: dict[str, bytes], edit: tuple | None) -> None:
     rel = sorted(mine)[index % len(mine)]
     data = mine[rel]
     cut = int(where * len(data))
-    while cut > 0 and (data[cut] & 0xC0) == 0x80 if cut < len(data) else False:
+    while 0 < cut < len(data) and (data[cut] & 0xC0) == 0x80:  # not inside a character of several bytes
         cut -= 1
     mine[rel] = data[:cut] + text.encode("utf-8") + data[cut:]
     (out / rel).write_bytes(mine[rel])
