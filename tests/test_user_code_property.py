@@ -16,7 +16,7 @@ same pool; each edit kind occurs, which the test checks). A cycle's model edit m
 model of the pool: a neighbour is one edit away, any other several at once, as when a user
 changes a model a lot between two generations. The file set of each (target, model) is made
 once; only the writer runs every cycle. ``ROBOMDA_USER_CYCLES`` (default 340 per target) and
-``ROBOMDA_USER_POOL`` (default 24) ask for more.
+``ROBOMDA_USER_POOL`` (default 16) ask for more.
 """
 
 from __future__ import annotations
@@ -43,7 +43,7 @@ FS = "{urn:robomda:fileset:1}"
 TARGETS = ["orocos", "ros1", "ros2"]
 CYCLES = int(os.environ.get("ROBOMDA_USER_CYCLES", "340"))  # per target: 1,020 in all
 STEPS = 20  # cycles per example (one output folder lives through them)
-POOL = int(os.environ.get("ROBOMDA_USER_POOL", "24"))
+POOL = int(os.environ.get("ROBOMDA_USER_POOL", "16"))
 COMP_NAMES = ["Arm", "Camera", "Planner", "Gripper"]
 PORT_NAMES = ["cmd", "state", "pose"]
 PROP_NAMES = ["gain", "limit"]
@@ -223,7 +223,7 @@ def regenerate(out: Path, files: etree._Element, mine: dict[str, bytes]) -> None
 def test_user_code_survives_random_model_and_user_edits(target: str, tmp_path: Path) -> None:
     start, before = time.monotonic(), _COUNTS["cycles"]
     pool, kinds = model_pool(POOL)
-    assert kinds == set(EDIT_KINDS) or POOL < 24, kinds  # the pool's walk makes every kind of edit
+    assert kinds == set(EDIT_KINDS) or POOL < 16, kinds  # the pool's walk makes every kind of edit
     examples = -(-CYCLES // STEPS)
 
     @settings(max_examples=examples, deadline=None, database=None, derandomize=True,
