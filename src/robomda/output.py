@@ -16,6 +16,9 @@ Rules (the file set's ``mode`` says which applies):
   before anything is written (OUT003): the build would no longer compile it,
   so the user's code would drop out of the robot in silence. The message
   names the file and, for a rename, the new file to move the code into.
+  So does a user file whose path now belongs to another element (its own
+  was removed or renamed and a renamed one took its name) while that
+  element's earlier user file is still there: two codes for one file.
 - a user file whose element changed what the generated code requires of it
   (ports, operations, hooks: the file set's ``signature``) gets a warning
   naming the file and the changes (OUT004); its fresh copy goes beside it.
@@ -188,6 +191,28 @@ def _signature_items(signature: str) -> list[str]:
     return [item for item in re.split(r"; |\n", signature) if item]
 
 
+def _rival(out: Path, before: dict, rel: str, was: dict, node: etree._Element) -> str | None:
+    """The user file of the element that now owns path ``rel`` while ``rel`` holds the work on another one
+    (removed or renamed, and the new element took its name): that element's own earlier user file, still
+    there, which OUT003 asks to move to ``rel``; else None (a new element by an old name takes the file)."""
+    old, new = was.get("implements"), node.get("implements")
+    if not old or not new or old == new:
+        return None
+    return next((path for path, info in sorted(before.items()) if path != rel and isinstance(info, dict)
+                 and info.get("implements") == new and Path(path).suffix == Path(rel).suffix
+                 and (out / path).is_file()), None)
+
+
+def _taken_over(out: Path, rel: str, was: dict, node: etree._Element, rival: str) -> Diagnostic:
+    """OUT003 for user file ``rel``: its path is now the user file of another element, whose own earlier
+    user file ``rival`` would move there."""
+    return Diagnostic(
+        "error", "OUT003", f"user file {rel} holds your work on {was.get('name')} ({was['implements']}), which the new "
+        f"package no longer uses, and its path is now the user file of {node.get('implements-name')} "
+        f"({node.get('implements')}), whose code is in {rival}: move your work out of {rel} and remove it "
+        f"(then move {rival} there); nothing was written", file=str(out / rel))
+
+
 def _user_drift(out: Path, nodes: list[etree._Element]) -> tuple[list[Diagnostic], list[Diagnostic]]:
     """(OUT003 errors for orphaned user files, OUT004 warnings for user files whose element changed)."""
     before = _read_state(out, "user")
@@ -207,6 +232,10 @@ def _user_drift(out: Path, nodes: list[etree._Element]) -> tuple[list[Diagnostic
             errors.append(Diagnostic(
                 "error", "OUT003", f"user file {rel} holds your work on {what}, which the new package no longer "
                 f"uses: {hint}; nothing was written", file=str(out / rel)))
+            continue
+        rival = _rival(out, before, rel, was, node)
+        if rival:
+            errors.append(_taken_over(out, rel, was, node, rival))
             continue
         old_items = set(_signature_items(str(was.get("signature", ""))))
         new_items = set(_signature_items(node.get("signature") or ""))

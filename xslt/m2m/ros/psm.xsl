@@ -60,6 +60,13 @@
       @managed, and its host a lifecycle manager node (@lifecycle-manager)
       that configures the host's managed nodes, then activates them, in the
       deployment sequence. ROS 1 has no node lifecycle (ROS113).
+  N9  a component without a realizing class (kind "base"): the user's
+      class <Class>Impl, written once, stands where the realizing class
+      would (r:realizing-class user="true"); its hooks are the five
+      lifecycle calls, set<Datum> / get<Datum> of each port, each service's
+      operation; the generated <Class>Base declares them (pure virtual) and
+      holds the parameters' members (r:member), so a hook the model no
+      longer has fails to compile where the user's class overrides it.
 
   Errors (urn:robomda:error, f:fail):
     ROS001  a port, service or Configurable parameter has a type the type
@@ -69,8 +76,8 @@
     ROS004  two component types map to the same C++ class name
     ROS005  a ConnectionPolicy topic is not a valid ROS graph name
     ROS006  parameter ros-version is neither '1' nor '2'
-    ROS007  a component with an instance has no realizing class (the ROS
-            targets do not generate a user base class yet)
+    ROS030  a class a component without a realizing class brings
+            (<Class>Base, <Class>Impl) is the class of another component
     ROS008  nothing to generate: the model has no component instance
     ROS010  a data type that contains itself (types.xsl)
     ROS011  a connection between an instance of the package and one on a
@@ -205,6 +212,7 @@
             some $i in key('fp:instance-of', @component)[map:contains($targets, string(@name))] satisfies fp:managed($i))"/>
       </xsl:document>
     </xsl:variable>
+    <xsl:sequence select="fp:check-user-classes($nodes/r:node)"/>
     <r:package xmi-id="{@id}" model-name="{@name}" name="{$package}" namespace="{$package}" ros-version="{$ros-version}"
                deploy-name="{f:snake-case(@name)}" source="{@source}">
       <xsl:variable name="children" as="element()*">
@@ -446,11 +454,6 @@
     <xsl:variable name="wrapper" as="xs:boolean" select="exists(fp:realization($bc))"/>
     <xsl:variable name="class" as="xs:string" select="f:upper-camel($component/@name)"/>
     <xsl:variable name="instances" as="element(pim:instance)*" select="key('fp:instance-of', $bc/@component, root($bc))"/>
-    <xsl:if test="not($wrapper)">
-      <xsl:sequence select="f:fail('ROS007', $component/@id, 'component ''' || $component/@name
-          || ''' has no realizing class (ComponentRealization):'
-          || ' the ROS targets wrap the atomic code and do not generate a user base class yet')"/>
-    </xsl:if>
     <r:node xmi-id="{$component/@id}" name="{$component/@name}" class="{$class}" namespace="{$package}"
             type-name="{$package}::{$class}" kind="{if ($wrapper) then 'wrapper' else 'base'}"
             generated-class="{if ($wrapper) then $class else $class || 'Base'}"
@@ -460,8 +463,11 @@
         <xsl:attribute name="lifecycle-type-name" select="$package || '::lifecycle::' || $class"/>
       </xsl:if>
       <xsl:sequence select="fp:psm-doc($component)"/>
-      <xsl:sequence select="fp:psm-realizing-class($bc)"/>
-      <xsl:sequence select="fp:psm-hooks($bc)"/>
+      <!-- N9: without a realizing class, the user's class written once
+           (<Class>Impl) stands where the realizing class would, and
+           implements every hook the generated <Class>Base declares -->
+      <xsl:sequence select="if ($wrapper) then (fp:psm-realizing-class($bc), fp:psm-hooks($bc))
+                            else fp:user-class($component, $package, $class)"/>
       <xsl:sequence select="$bc/pim:data-port ! fp:ros-port(., $instances)"/>
       <xsl:sequence select="fp:services($bc)"/>
       <xsl:sequence select="$bc/pim:service-port[@role eq 'required'] ! fp:service-clients(., $bc)"/>
@@ -471,8 +477,65 @@
       <xsl:variable name="typed" as="element(pim:attribute)*"
           select="$convention[fp:param-able(., fp:type(.))]"/>
       <xsl:sequence select="fp:warn-skipped-attributes($convention except $typed, 'ROS107', 'ROS parameter')"/>
-      <xsl:sequence select="($configurable, $typed) ! fp:parameters(., f:cpp-identifier(@name))"/>
+      <xsl:variable name="parameters" as="element(r:parameter)*"
+          select="($configurable, $typed) ! fp:parameters(., f:cpp-identifier(@name))"/>
+      <xsl:sequence select="$parameters"/>
+      <xsl:if test="not($wrapper)">
+        <xsl:sequence select="($configurable, $typed) ! fp:base-member(., $parameters)"/>
+      </xsl:if>
     </r:node>
+  </xsl:function>
+
+  <!-- ROS030 when a class a base node brings (N9: <Class>Base, <Class>Impl)
+       is the class of another node, or one it brings -->
+  <xsl:function name="fp:check-user-classes" as="empty-sequence()">
+    <xsl:param name="nodes" as="element(r:node)*"/>
+    <xsl:variable name="classes" as="map(*)*"
+        select="$nodes ! (map { 'class': string(@class), 'node': . },
+                          .[@kind eq 'base'] ! (map { 'class': @class || 'Base', 'node': . }, map { 'class': @class || 'Impl', 'node': . }))"/>
+    <xsl:for-each-group select="$classes" group-by="?class">
+      <xsl:variable name="nodes" as="element(r:node)+" select="current-group() ! ?node"/>
+      <xsl:if test="count($nodes) gt 1">
+        <xsl:variable name="base" as="element(r:node)" select="($nodes[@kind eq 'base'], $nodes)[1]"/>
+        <xsl:sequence select="f:fail('ROS030', $base/@xmi-id, 'components ''' || string-join($nodes/@name, ''', ''')
+            || ''' both need C++ class ' || current-grouping-key() || ': component ''' || $base/@name
+            || ''' has no realizing class, so its node ' || $base/@class || ' gets a generated ' || $base/@class
+            || 'Base and your ' || $base/@class || 'Impl; rename one of the components')"/>
+      </xsl:if>
+    </xsl:for-each-group>
+  </xsl:function>
+
+  <!-- N9: the user's class of a component without a realizing class,
+       <Class>Impl, written once, in the place of a realizing class (the
+       node derives from it and calls it), and the five hooks, which the
+       generated <Class>Base declares and the user class implements -->
+  <xsl:function name="fp:user-class" as="element()+">
+    <xsl:param name="component" as="element(pim:component)"/>
+    <xsl:param name="package" as="xs:string"/>
+    <xsl:param name="class" as="xs:string"/>
+    <r:realizing-class xmi-id="{$component/@id}" name="{$class}Impl" cpp-name="::{$package}::{$class}Impl"
+                       header="{$package}/{$class}Impl.hpp" user="true"/>
+    <xsl:for-each select="$fp:lifecycle">
+      <r:hook name="{.}" call="{.}" returns-bool="{. = ('configure', 'start')}"/>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- N9: the member of <Class>Base behind attribute $attribute, whose
+       parameters are $parameters (a data type's: one per attribute of it),
+       initialised to the model's default -->
+  <xsl:function name="fp:base-member" as="element(r:member)">
+    <xsl:param name="attribute" as="element(pim:attribute)"/>
+    <xsl:param name="parameters" as="element(r:parameter)*"/>
+    <xsl:variable name="type" as="element(ty:type)" select="fp:type($attribute)"/>
+    <xsl:variable name="parameter" as="element(r:parameter)?" select="$parameters[@xmi-id eq $attribute/@id]"/>
+    <r:member name="{f:cpp-identifier($attribute/@name)}" cpp-type="{$type/@cpp}"
+              init="{if ($type/@kind eq 'struct') then ''
+                     else if ($type/@kind eq 'enum') then $parameter/r:choice[fp:yaml-quoted(@value) eq $parameter/@yaml-default]/@cpp
+                     else $parameter/@cpp-default}">
+      <xsl:if test="$type/@kind = ('struct', 'enum')">
+        <xsl:attribute name="type" select="$type/@type-ref"/>
+      </xsl:if>
+    </r:member>
   </xsl:function>
 
   <!-- N2: a data port of a node; its QoS from the first connection one of
@@ -487,7 +550,7 @@
       <r:port xmi-id="{@port}" direction="{@direction}" name="{@name}" topic="{@name}"
               member="{if (@direction eq 'out') then 'pub_' else 'sub_'}{@name}_"
               interface="{@interface-name}" datum="{@datum-name}"
-              accessor="{$accessor}" accessor-declared="{fp:accessor-declared(.)}">
+              accessor="{$accessor}" accessor-declared="{empty(fp:realization(..)) or fp:accessor-declared(.)}">
         <xsl:sequence select="fp:psm-doc(key('fp:id', @port, root(.)))"/>
         <xsl:sequence select="fp:message(.)"/>
         <xsl:sequence select="fp:qos($connections[1]/pim:policy)"/>

@@ -24,8 +24,8 @@
   Params:  model-dir-from-output (xslt/m2t/common/text.xsl).
   Errors:  none (the PSM is complete and valid).
   Modules: ../common/text.xsl (the text kit every target shares),
-           ../common/package-manifest.xsl, ../common/data-types.xsl,
-           orocos-cpp.xsl, orocos-build.xsl, orocos-deploy.xsl,
+           ../common/package-manifest.xsl, ../common/user-class.xsl (the
+           user files, shared with ROS), ../common/data-types.xsl, orocos-cpp.xsl, orocos-build.xsl, orocos-deploy.xsl,
            orocos-types.xsl.
 -->
 <xsl:stylesheet version="3.0"
@@ -40,6 +40,7 @@
 
   <xsl:include href="../common/text.xsl"/>
   <xsl:include href="../common/package-manifest.xsl"/>
+  <xsl:include href="../common/user-class.xsl"/>
   <xsl:include href="orocos-cpp.xsl"/>
   <xsl:include href="orocos-build.xsl"/>
   <xsl:include href="orocos-deploy.xsl"/>
@@ -124,14 +125,10 @@
     <xsl:param name="path" as="xs:string"/>
     <xsl:param name="tc" as="element(o:task-context)"/>
     <xsl:param name="text" as="xs:string"/>
-    <fs:file path="{$path}" mode="user" stylesheet="{$fp:cpp-xsl}" implements="{$tc/@xmi-id}"
-             implements-name="{$tc/@name}"
-             signature="{string-join((
-                 $tc/o:port ! concat('port ', @name, ' ', @direction, ' ', @cpp-type),
-                 $tc/o:operation ! concat('operation ', @name, '(', string-join(o:parameter/@decl-type, ', '), ') ', @return-type),
-                 $tc/o:hook[@call] ! concat('hook ', @name)), '; ')}">
-      <xsl:value-of select="$text"/>
-    </fs:file>
+    <xsl:sequence select="fp:user-class-file($path, $fp:cpp-xsl, $tc, (
+        $tc/o:port ! concat('port ', @name, ' ', @direction, ' ', @cpp-type),
+        $tc/o:operation ! concat('operation ', @name, '(', string-join(o:parameter/@decl-type, ', '), ') ', @return-type),
+        $tc/o:hook[@call] ! concat('hook ', @name)), $text)"/>
   </xsl:function>
 
   <!-- the user's tuned property values of instance $i: what it implements

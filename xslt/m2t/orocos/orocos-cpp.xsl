@@ -259,21 +259,9 @@
   <!-- ===================================================== user class -->
   <xsl:function name="fp:user-header" as="xs:string">
     <xsl:param name="tc" as="element(o:task-context)"/>
-    <xsl:variable name="cls" as="xs:string" select="$tc/@class"/>
-    <xsl:variable name="guard" as="xs:string" select="fp:guard($tc/@namespace, $cls)"/>
-    <xsl:sequence select="fp:lines((
-        fp:banner('// ', $fp:cpp-xsl, fp:what($tc), true()),
-        concat('#ifndef ', $guard),
-        concat('#define ', $guard),
-        '',
-        concat('#include &lt;', $tc/@namespace, '/', $tc/@generated-class, '.hpp&gt;'),
-        '',
-        concat('namespace ', $tc/@namespace, ' {'),
-        '',
-        concat('class ', $cls, ' : public ', $tc/@generated-class),
-        '{',
+    <xsl:sequence select="fp:user-class-header($fp:cpp-xsl, $tc, $tc/@namespace, $tc/@class, $tc/@generated-class, (
         'public:',
-        concat('  explicit ', $cls, '(const std::string&amp; name);'),
+        concat('  explicit ', $tc/@class, '(const std::string&amp; name);'),
         '',
         '  bool configureHook() override;',
         '  bool startHook() override;',
@@ -284,62 +272,37 @@
           '',
           'protected:',
           $tc/o:operation ! (concat('  ', @return-type, ' ', @name, fp:signature(., true()), ' override;')))
-        else (),
-        '};',
-        '',
-        concat('}  // namespace ', $tc/@namespace),
-        '',
-        concat('#endif  // ', $guard)))"/>
+        else ()))"/>
   </xsl:function>
 
   <xsl:function name="fp:user-source" as="xs:string">
     <xsl:param name="tc" as="element(o:task-context)"/>
     <xsl:variable name="cls" as="xs:string" select="$tc/@class"/>
-    <xsl:sequence select="fp:lines((
-        fp:banner('// ', $fp:cpp-xsl, fp:what($tc), true()),
-        concat('#include &lt;', $tc/@namespace, '/', $cls, '.hpp&gt;'),
-        '',
-        concat('namespace ', $tc/@namespace, ' {'),
-        '',
+    <xsl:sequence select="fp:user-class-source($fp:cpp-xsl, $tc, $tc/@namespace, $cls, (
         concat($cls, '::', $cls, '(const std::string&amp; name)'),
         concat('  : ', $tc/@generated-class, '(name)'),
         '{',
         '}',
         '',
-        concat('bool ', $cls, '::configureHook()'),
-        '{',
-        if ($tc/o:required-service) then concat('  return ', $tc/@generated-class, '::configureHook();  // connects the required interfaces')
-        else '  return true;',
-        '}',
+        fp:definition(concat('bool ', $cls, '::configureHook()'),
+          if ($tc/o:required-service) then concat('  return ', $tc/@generated-class, '::configureHook();  // connects the required interfaces')
+          else '  return true;'),
         '',
-        concat('bool ', $cls, '::startHook()'),
-        '{',
-        '  return true;',
-        '}',
+        fp:definition(concat('bool ', $cls, '::startHook()'), '  return true;'),
         '',
-        concat('void ', $cls, '::updateHook()'),
-        '{',
-        if ($tc/o:port[@direction eq 'in'])
-        then concat('  // read: ', string-join($tc/o:port[@direction eq 'in'] ! (concat(@member, '.read(sample)')), ', ')) else (),
-        if ($tc/o:port[@direction eq 'out'])
-        then concat('  // write: ', string-join($tc/o:port[@direction eq 'out'] ! (concat(@member, '.write(value)')), ', ')) else (),
-        '}',
+        fp:definition(concat('void ', $cls, '::updateHook()'), (
+          if ($tc/o:port[@direction eq 'in'])
+          then concat('  // read: ', string-join($tc/o:port[@direction eq 'in'] ! (concat(@member, '.read(sample)')), ', ')) else (),
+          if ($tc/o:port[@direction eq 'out'])
+          then concat('  // write: ', string-join($tc/o:port[@direction eq 'out'] ! (concat(@member, '.write(value)')), ', ')) else ())),
         '',
-        concat('void ', $cls, '::stopHook()'),
-        '{',
-        '}',
+        fp:definition(concat('void ', $cls, '::stopHook()'), ()),
         '',
-        concat('void ', $cls, '::cleanupHook()'),
-        '{',
-        '}',
+        fp:definition(concat('void ', $cls, '::cleanupHook()'), ()),
         $tc/o:operation ! (
           '',
-          concat(@return-type, ' ', $cls, '::', @name, fp:signature(., false())),
-          '{',
-          if (@return-type ne 'void') then concat('  return ', @return-sample, ';') else (),
-          '}'),
-        '',
-        concat('}  // namespace ', $tc/@namespace)))"/>
+          fp:definition(concat(@return-type, ' ', $cls, '::', @name, fp:signature(., false())),
+            if (@return-type ne 'void') then concat('  return ', @return-sample, ';') else ()))))"/>
   </xsl:function>
 
   <!-- ============================================== component library -->

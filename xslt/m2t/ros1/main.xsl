@@ -6,6 +6,8 @@
            xslt/m2m/ros/psm.xsl with ros-version=1.
   Writes:  urn:robomda:fileset:1 (schemas/fileset/1/fileset.xsd), target "ros1":
              include/<pkg>/<Class>.hpp, src/<Class>.cpp, src/<exe>.cpp  per node
+             include/<pkg>/<Class>Base.hpp, and include/<pkg>/<Class>Impl.hpp,
+             src/<Class>Impl.cpp (mode user) per node without a realizing class
              msg/<Type>.msg          per generated message
              CMakeLists.txt, package.xml
              launch/<model>.launch, launch/<model>_<host>.launch, launch/<model>_<set>.launch
@@ -15,7 +17,8 @@
            all the text).
   Params:  model-dir-from-output (xslt/m2t/ros-common/ros-text.xsl).
   Errors:  none (the PSM is complete and valid).
-  Modules: ../ros-common/ros-text.xsl, ros1-cpp.xsl, ros1-build.xsl, ros1-launch.xsl.
+  Modules: ../ros-common/ros-text.xsl, ../common/user-class.xsl,
+           ../ros-common/ros-user.xsl, ros1-cpp.xsl, ros1-build.xsl, ros1-launch.xsl.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -34,6 +37,8 @@
   <xsl:include href="../common/data-types.xsl"/>
   <xsl:include href="../../common/naming.xsl"/>
   <xsl:include href="../ros-common/ros-text.xsl"/>
+  <xsl:include href="../common/user-class.xsl"/>
+  <xsl:include href="../ros-common/ros-user.xsl"/>
   <xsl:include href="ros1-cpp.xsl"/>
   <xsl:include href="ros1-build.xsl"/>
   <xsl:include href="ros1-launch.xsl"/>
@@ -53,6 +58,8 @@
         <xsl:sequence select="fp:file(concat('include/', $pkg, '/', @class, '.hpp'), 'generated', $fp:cpp-xsl, fp:ros1-header(.))"/>
         <xsl:sequence select="fp:file(concat('src/', @class, '.cpp'), 'generated', $fp:cpp-xsl, fp:ros1-source(.))"/>
         <xsl:sequence select="fp:file(concat('src/', @executable, '.cpp'), 'generated', $fp:cpp-xsl, fp:ros1-main(.))"/>
+        <!-- no realizing class: <Class>Base and the user's <Class>Impl (ros-user.xsl) -->
+        <xsl:sequence select="fp:ros-user-files(.)"/>
       </xsl:for-each>
       <xsl:sequence select="fp:ros-type-files(.)"/>
       <xsl:sequence select="fp:file('CMakeLists.txt', 'generated', $fp:build-xsl, fp:ros1-cmakelists(.))"/>

@@ -7,7 +7,8 @@
   Writes:  strings (file contents), wrapped into fs:file by main.xsl.
   Params:  model-dir-from-output (ros-common/ros-text.xsl).  Errors: none.
 
-  One executable per node (its class source + its main); the atomic-code
+  One executable per node (its class source + its main, + the user's
+  <Class>Impl.cpp without a realizing class); the atomic-code
   library is found as in the Orocos target (cache variable <PKG>_<LIB>_DIR
   defaulting to the model-relative artifact path). Generated messages:
   add_message_files / generate_messages with message_generation.
@@ -55,7 +56,8 @@
         for $n in $package/r:node return (
           '',
           concat('# node of component ', $n/@name, ': executable ', $n/@executable),
-          concat('add_executable(${PROJECT_NAME}_', $n/@executable, ' src/', $n/@class, '.cpp src/', $n/@executable, '.cpp)'),
+          concat('add_executable(${PROJECT_NAME}_', $n/@executable, ' src/', $n/@class, '.cpp src/', $n/@executable, '.cpp',
+                 string-join(fp:ros-user-sources($n) ! (' ' || .)), ')'),
           concat('set_target_properties(${PROJECT_NAME}_', $n/@executable, ' PROPERTIES OUTPUT_NAME ', $n/@executable, ')'),
           concat('add_dependencies(${PROJECT_NAME}_', $n/@executable, ' ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})'),
           fp:library-depends($package, concat('${PROJECT_NAME}_', $n/@executable)),

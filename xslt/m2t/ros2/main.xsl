@@ -6,6 +6,8 @@
            xslt/m2m/ros/psm.xsl with ros-version=2.
   Writes:  urn:robomda:fileset:1 (schemas/fileset/1/fileset.xsd), target "ros2":
              include/<pkg>/<Class>.hpp, src/<Class>.cpp, src/<exe>.cpp  per node
+             include/<pkg>/<Class>Base.hpp, and include/<pkg>/<Class>Impl.hpp,
+             src/<Class>Impl.cpp (mode user) per node without a realizing class
              include/<pkg>/lifecycle/<Class>.hpp, src/lifecycle/<Class>.cpp
                                      per node with a managed instance
              src/lifecycle_manager.cpp  when an instance is managed
@@ -19,7 +21,8 @@
            all the text).
   Params:  model-dir-from-output (xslt/m2t/ros-common/ros-text.xsl).
   Errors:  none (the PSM is complete and valid).
-  Modules: ../../common/sequence.xsl, ../ros-common/ros-text.xsl, ros2-cpp.xsl, ros2-build.xsl, ros2-launch.xsl, ros2-lifecycle.xsl.
+  Modules: ../../common/sequence.xsl, ../ros-common/ros-text.xsl, ../common/user-class.xsl,
+           ../ros-common/ros-user.xsl, ros2-cpp.xsl, ros2-build.xsl, ros2-launch.xsl, ros2-lifecycle.xsl.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -39,6 +42,8 @@
   <xsl:include href="../../common/naming.xsl"/>
   <xsl:include href="../../common/sequence.xsl"/>
   <xsl:include href="../ros-common/ros-text.xsl"/>
+  <xsl:include href="../common/user-class.xsl"/>
+  <xsl:include href="../ros-common/ros-user.xsl"/>
   <xsl:include href="ros2-cpp.xsl"/>
   <xsl:include href="ros2-build.xsl"/>
   <xsl:include href="ros2-launch.xsl"/>
@@ -60,6 +65,8 @@
         <xsl:sequence select="fp:file(concat('include/', $pkg, '/', @class, '.hpp'), 'generated', $fp:cpp-xsl, fp:ros2-header(.))"/>
         <xsl:sequence select="fp:file(concat('src/', @class, '.cpp'), 'generated', $fp:cpp-xsl, fp:ros2-source(.))"/>
         <xsl:sequence select="fp:file(concat('src/', @executable, '.cpp'), 'generated', $fp:cpp-xsl, fp:ros2-main(.))"/>
+        <!-- no realizing class: <Class>Base and the user's <Class>Impl (ros-user.xsl) -->
+        <xsl:sequence select="fp:ros-user-files(.)"/>
       </xsl:for-each>
       <xsl:for-each select="r:node[@lifecycle-type-name]">
         <xsl:sequence select="fp:file(concat('include/', $pkg, '/lifecycle/', @class, '.hpp'), 'generated', $fp:lifecycle-xsl,

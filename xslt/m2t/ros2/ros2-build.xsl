@@ -7,7 +7,8 @@
   Writes:  strings (file contents), wrapped into fs:file by main.xsl.
   Params:  model-dir-from-output (ros-common/ros-text.xsl).  Errors: none.
 
-  One shared library <pkg>_components with every node class (and the
+  One shared library <pkg>_components with every node class (+ the
+  user's <Class>Impl.cpp of a node without a realizing class, and the
   lifecycle class of a node with a managed instance), registered with
   rclcpp_components_register_nodes; one executable per node, and
   lifecycle_manager when a node is managed; the
@@ -52,7 +53,7 @@
         $package/r:library ! fp:library-external-project(.),
         '',
         '# every node class, as rclcpp components',
-        concat('add_library(', $lib, ' SHARED ', string-join(($package/r:node ! concat('src/', @class, '.cpp'),
+        concat('add_library(', $lib, ' SHARED ', string-join(($package/r:node ! (concat('src/', @class, '.cpp'), fp:ros-user-sources(.)),
                                                              $package/r:node[@lifecycle-type-name] ! concat('src/lifecycle/', @class, '.cpp')), ' '), ')'),
         concat('target_include_directories(', $lib, ' PUBLIC'),
         '  $&lt;BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include&gt;',
