@@ -284,3 +284,26 @@ def test_a_data_type_ros_cannot_declare_is_named_not_dropped(model: Path) -> Non
     assert len(said) == 1 and "'Calibration'" in said[0] and "::Calibration" in said[0], said
     files = {n.get("path") for n in etree.fromstring(done.stages["text"].encode()).iter(f"{FS}file")}
     assert "include/Calibration.hpp" not in files and "include/Gains.hpp" in files
+
+
+# ------------------------------------------------- class against ports (issue 37)
+@pytest.mark.parametrize(("type_xml", "label"), [
+    ('<type xmi:type="uml:PrimitiveType" ' + REAL + '/>', "'Real'"),
+    ('<type xmi:type="uml:PrimitiveType" ' + REAL + '/>' + _multiplicity("0", "*"), "'Real[0..*]'"),
+    ('<type xmi:type="uml:DataType" xmi:idref="_qa004t"/>', "'JointTorques'"),
+])
+def test_an_accessor_typed_otherwise_than_its_port_is_a_located_error(model: Path, type_xml: str, label: str) -> None:
+    """CMP020: the arm's getJointState() result against its output port's JointState."""
+    from robomda.api import check
+    edit(model, 'xmi:id="_qa058p" name="return" direction="return">\n          <type xmi:type="uml:DataType" xmi:idref="_qa003t"/>',
+         'xmi:id="_qa058p" name="return" direction="return">' + type_xml)
+    found = [d for d in check(model, "orocos").diagnostics if d.code == "CMP020"]
+    assert len(found) == 1 and found[0].severity == "error", found
+    said = str(found[0])
+    assert "getJointState()" in said and f"type {label}" in said and "carries 'JointState'" in said, said
+    assert "_qa058p" in said and found[0].line is not None
+
+
+def test_an_accessor_of_the_ports_type_passes(model: Path) -> None:
+    from robomda.api import check
+    assert not [d for d in check(model, "orocos").diagnostics if d.code in ("CMP020", "CMP021")]
