@@ -365,7 +365,9 @@
             $deployment/o:instance[o:property-value] ! (
               concat('loadService(', fp:cpp-string(@name), ', &quot;marshalling&quot;)'),
               concat('if ( !', @name, '.marshalling.updateProperties(', fp:cpp-string(fp:user-cpf(.)), ') ) then {'),
-              concat('  print.log(Error, ', fp:cpp-string(concat($file, ': ', fp:user-cpf(.), ' not loaded (run from the folder of ', $file, ')')), ')'),
+              (: .ops cannot tell a missing file from a refused one: both causes, and the deployer's own line says which :)
+              concat('  print.log(Error, ', fp:cpp-string(concat($file, ': ', fp:user-cpf(.), ' not loaded: it is not in the working directory',
+                     ' (run from the folder of ', $file, '), or the deployer refused a value in it (its error above names it)')), ')'),
               '  configured = false',
               '}')) else (),
         $deployment/o:connection ! (
