@@ -15,6 +15,10 @@
   declares them (docs/profile.md, atomic-code conventions). Calls to the
   realizing class are qualified with its C++ name because RTT::TaskContext
   has methods with the same names (configure, start, stop, update, cleanup).
+  Real time (issue 37): updateHook reads an input of a data type, array or
+  string into a member sample made once with the model's sizes (no heap
+  allocation per cycle); configureHook gives an output of a data type or an
+  unbounded array the class's configured value as data sample.
   kind="base": generated <Class>Base (ports, properties, pure virtual
   operations) plus a user class <Class> written once, with empty hooks.
 -->
