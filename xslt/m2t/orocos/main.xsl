@@ -152,9 +152,9 @@
        "desired[] double", "stages[].damping double"), "; "-separated -->
   <xsl:function name="fp:user-cpf-shape" as="xs:string">
     <xsl:param name="instance" as="element(o:instance)"/>
-    <xsl:sequence select="string-join(distinct-values($instance/o:property-value !
+    <xsl:sequence select="string-join(sort(distinct-values($instance/o:property-value !
         (if (o:value) then (for $v in o:value/descendant-or-self::o:value
                             return concat(@name, replace($v/@path, '\[[0-9]+\]', '[]'), ' ', $v/@xml-type))
-         else concat(@name, ' ', @xml-type))), '; ')"/>
+         else concat(@name, ' ', @xml-type)))), '; ')"/>
   </xsl:function>
 </xsl:stylesheet>

@@ -124,7 +124,7 @@
     <xsl:sequence select="
         if ($value/self::o:property-value/o:value) then fp:property-xml($value/o:value, $name)
         else if ($value/@value) then fp:simple($name, $value/@xml-type, $value/@value)
-        else (concat('&lt;struct name=&quot;', fp:xml-text($name), '&quot; type=&quot;', $value/@xml-type, '&quot;&gt;'),
+        else (concat('&lt;struct name=&quot;', fp:xml-text($name), '&quot; type=&quot;', fp:xml-text($value/@xml-type), '&quot;&gt;'),
               fp:indent(2, $value/o:value ! fp:property-xml(., @name)),
               '&lt;/struct&gt;')"/>
   </xsl:function>
@@ -144,8 +144,13 @@
     <xsl:param name="instance" as="element(o:instance)"/>
     <xsl:param name="p" as="element(o:property-value)"/>
     <xsl:param name="step" as="element()"/>
+    <!-- the size of a std.vector<int> as an unsigned literal (7u): with an
+         int, RTT takes the constructor that builds a vector of its
+         arguments ({7}), not the one of 7 elements; every other sequence
+         type takes an int size (its elements are not ints) -->
     <xsl:sequence select="concat($instance/@name, '.', $p/@name, $step/@path, ' = ',
-        if ($step/@script-type) then concat($step/@script-type, '(', $step/@size, ')') else $step/@script-value)"/>
+        if ($step/@script-type) then concat($step/@script-type, '(', $step/@size, if ($step/@script-type eq 'std.vector&lt;int&gt;') then 'u' else '', ')')
+        else $step/@script-value)"/>
   </xsl:function>
 
   <xsl:function name="fp:simple" as="xs:string">
