@@ -473,7 +473,8 @@ def test_a_user_file_is_checked_as_deep_as_the_type_goes(tmp_path):
                                         ("First", "double")]]
     said = [w.message for w in found]
     assert "'stifness' in property 'gains'" in said[0] and "damping, maxTorque, stiffness" in said[0]
-    assert "'gains.damping' type 'long', but it is 'double'" in said[1] and "refuses" in said[1]
+    assert "'gains.damping' type 'long', but it is 'double'" in said[1] and "converts" in said[1]
+    assert "ignores it without a word" in said[0]
     assert "(limit.gains.maxTorq)" in said[2] and "(limit.torque.First)" in said[3]
 
 

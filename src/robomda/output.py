@@ -275,9 +275,10 @@ def _cpf_members(struct: etree._Element, path: str, shape: dict[str, str], what:
                  file: str) -> list[Diagnostic]:
     """OUT005 below a property: members and elements its type does not have, or of another type.
 
-    The deployer's UpdateProperties resets a data type whose file value names a member it lacks to its
-    defaults, without a word, and refuses a member of another type. Elements of an array whose element
-    shape the model does not show (an empty unbounded array) are not checked.
+    The deployer's UpdateProperties ignores a member the type lacks without a word (measured on RTT 2.10:
+    the other members are set, the misspelt one keeps its value) and converts a member of another type
+    where it can. Elements of an array whose element shape the model does not show (an empty unbounded
+    array) are not checked.
     """
     array = shape.get(path, "") == "array" or shape.get(path, "").startswith("/std/vector<")
     found: list[Diagnostic] = []
@@ -293,11 +294,13 @@ def _cpf_members(struct: etree._Element, path: str, shape: dict[str, str], what:
             found.append(Diagnostic(
                 "warning", "OUT005", f"{what} sets '{name}' in property '{path}' ({sub}), which its type "
                 f"'{shape.get(path, '?')}' does not have (its {kind}: {', '.join(has) or 'none'}): the deployer "
-                "leaves the whole property at the model's values without a word", file=file, line=member.sourceline))
+                "ignores it without a word (the member you meant keeps the model's value)", file=file,
+                line=member.sourceline))
         elif member.tag == "simple" and member.get("type") != shape[sub]:
             found.append(Diagnostic(
                 "warning", "OUT005", f"{what} gives '{sub}' type '{member.get('type')}', but it is '{shape[sub]}': "
-                "the deployer refuses the file", file=file, line=member.sourceline))
+                "the deployer converts the value where RTT can (a long to a double) and refuses the file where it "
+                "cannot", file=file, line=member.sourceline))
         elif member.tag != "simple":
             found += _cpf_members(member, sub, shape, what, file)
     return found
