@@ -66,7 +66,7 @@ def test_the_typekit_registers_every_type_the_components_use() -> None:
     files = _files(QUADARM / "model.xmi")
     typekit = files["src/typekit.cpp"]
     for line in ('types->addType(new ControlModeTypeInfo());',
-                 'types->addType(new RTT::types::StructTypeInfo<::JointState>("JointState"));',
+                 'types->addType(new RTT::types::StructTypeInfo<::JointState>("/quadarm/JointState"));',
                  'archive & make_nvp("position", value.position);',  # inherited from JointAngles
                  'to_string[::ControlMode::IMPEDANCE] = "IMPEDANCE";'):
         assert line in typekit
@@ -244,10 +244,20 @@ def test_a_port_carrying_an_array_of_numbers_is_a_multi_array(model: Path) -> No
     edit(model, 'xmi:id="_qa088a" name="torques" visibility="public">\n        <type xmi:type="uml:DataType" xmi:idref="_qa004t"/>',
          f'xmi:id="_qa088a" name="torques" visibility="public"><type xmi:type="uml:PrimitiveType" {REAL}/>'
          + _multiplicity("7", "7"))
+    # the accessors carry the port's type (else CMP020)
+    for key, direction in (("_qa060p", 'name="value"'), ("_qa079p", 'name="return" direction="return"')):
+        edit(model, f'xmi:id="{key}" {direction}>\n          <type xmi:type="uml:DataType" xmi:idref="_qa004t"/>',
+             f'xmi:id="{key}" {direction}><type xmi:type="uml:PrimitiveType" {REAL}/>'
+             + _multiplicity("7", "7").replace('"_tl"', f'"{key}l"').replace('"_tu"', f'"{key}u"'))
     psm = etree.fromstring(generate(model, None, "ros1", write=False).stages["psm"].encode())
     messages = {p.get("name"): p.find("{urn:robomda:psm-ros:1}message") for p in psm.iter("{urn:robomda:psm-ros:1}port")}
     assert messages["torques"].get("msg") == "std_msgs/Float64MultiArray"
     assert messages["torques"].get("cpp-type") == "std::vector<double>"
+    # published with its layout: one dimension named after the port, of the sample's size (issue 37)
+    publisher = _ros_files(model, "ros1")["src/JointPositionController.cpp"]
+    for line in ('msg.layout.dim.resize(1);', 'msg.layout.dim[0].label = "torques";',
+                 'msg.layout.dim[0].size = static_cast<unsigned int>(value.size());', 'msg.layout.data_offset = 0;'):
+        assert line in publisher, line
 
 
 def test_a_ros_data_type_that_contains_itself_is_an_error(model: Path) -> None:
@@ -284,3 +294,26 @@ def test_a_data_type_ros_cannot_declare_is_named_not_dropped(model: Path) -> Non
     assert len(said) == 1 and "'Calibration'" in said[0] and "::Calibration" in said[0], said
     files = {n.get("path") for n in etree.fromstring(done.stages["text"].encode()).iter(f"{FS}file")}
     assert "include/Calibration.hpp" not in files and "include/Gains.hpp" in files
+
+
+# ------------------------------------------------- class against ports (issue 37)
+@pytest.mark.parametrize(("type_xml", "label"), [
+    ('<type xmi:type="uml:PrimitiveType" ' + REAL + '/>', "'Real'"),
+    ('<type xmi:type="uml:PrimitiveType" ' + REAL + '/>' + _multiplicity("0", "*"), "'Real[0..*]'"),
+    ('<type xmi:type="uml:DataType" xmi:idref="_qa004t"/>', "'JointTorques'"),
+])
+def test_an_accessor_typed_otherwise_than_its_port_is_a_located_error(model: Path, type_xml: str, label: str) -> None:
+    """CMP020: the arm's getJointState() result against its output port's JointState."""
+    from robomda.api import check
+    edit(model, 'xmi:id="_qa058p" name="return" direction="return">\n          <type xmi:type="uml:DataType" xmi:idref="_qa003t"/>',
+         'xmi:id="_qa058p" name="return" direction="return">' + type_xml)
+    found = [d for d in check(model, "orocos").diagnostics if d.code == "CMP020"]
+    assert len(found) == 1 and found[0].severity == "error", found
+    said = str(found[0])
+    assert "getJointState()" in said and f"type {label}" in said and "carries 'JointState'" in said, said
+    assert "_qa058p" in said and found[0].line is not None
+
+
+def test_an_accessor_of_the_ports_type_passes(model: Path) -> None:
+    from robomda.api import check
+    assert not [d for d in check(model, "orocos").diagnostics if d.code in ("CMP020", "CMP021")]

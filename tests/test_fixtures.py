@@ -781,10 +781,11 @@ def test_smoke_program(case: str, tmp_path: Path):
 
 
 @pytest.mark.parametrize("script", [CASES_DIR / "tuned" / "make.py", CASES_DIR / "undeployed" / "make.py",
+                                    CASES_DIR / "structured" / "make.py",
                                     ROOT / "fixtures" / "ros" / "jointstate" / "make.py",
                                     ROOT / "fixtures" / "ros" / "managed" / "make.py",
                                     ROOT / "fixtures" / "ros" / "usercode" / "make.py"],
-                         ids=["tuned", "undeployed", "jointstate", "managed", "usercode"])
+                         ids=["tuned", "undeployed", "structured", "jointstate", "managed", "usercode"])
 def test_derived_fixture_is_what_its_make_py_writes(script: Path):
     """A derived fixture is its source model with the edits its make.py lists, and nothing else."""
     import importlib.util

@@ -449,6 +449,35 @@ def test_tuned_values_survive_regeneration_and_misspelt_ones_are_named(tmp_path)
     assert "'long'" in out005[1].message and "refuses" in out005[1].message
 
 
+def test_a_user_file_is_checked_as_deep_as_the_type_goes(tmp_path):
+    """OUT005 below the top level (issue 37): a misspelt member of a data type, a member of another
+    type, a misspelt member of a nested data type, a name no array element has; an element of an
+    array the model leaves empty is not checked (its element shape is unknown)."""
+    from robomda.api import generate
+    model = ROOT / "fixtures" / "cases" / "structured" / "model.xmi"
+    out = tmp_path / "structured"
+    generate(model, out, "orocos")
+    cpf = out / "deploy" / "ctrl1.user.cpf"
+    simple = '<simple name="{}" type="{}"><value>1</value></simple>'
+    cpf.write_text(cpf.read_text().replace("<properties>\n", "<properties>\n" + "\n".join([
+        '<struct name="gains" type="/structured/Gains">', simple.format("stifness", "double"),
+        simple.format("damping", "long"), simple.format("maxTorque", "double"), "</struct>",
+        '<struct name="limit" type="/structured/JointTorques">', '<struct name="gains" type="/structured/Gains">',
+        simple.format("maxTorq", "double"), "</struct>", '<struct name="torque" type="array">',
+        simple.format("Element0", "double"), simple.format("First", "double"), "</struct>", "</struct>",
+        '<struct name="history" type="array">', simple.format("Element0", "double"), "</struct>"]) + "\n"))
+    lines = cpf.read_text().splitlines()
+    found = [w for w in generate(model, out, "orocos").warnings if w.code == "OUT005"]
+    assert [w.line for w in found] == [lines.index(simple.format(n, t)) + 1 for n, t in
+                                       [("stifness", "double"), ("damping", "long"), ("maxTorq", "double"),
+                                        ("First", "double")]]
+    said = [w.message for w in found]
+    assert "'stifness' in property 'gains'" in said[0] and "damping, maxTorque, stiffness" in said[0]
+    assert "'gains.damping' type 'long', but it is 'double'" in said[1] and "converts" in said[1]
+    assert "ignores it without a word" in said[0]
+    assert "(limit.gains.maxTorq)" in said[2] and "(limit.torque.First)" in said[3]
+
+
 def test_a_process_named_rtt_keeps_its_name(tmp_path):
     """RTT is kept out of C++ identifiers (a class RTT would hide RTT's namespace), not out of
     process names: a process named RTT is 'RTT' in the PSM and messages, 'rtt' in its files."""

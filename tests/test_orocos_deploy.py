@@ -47,7 +47,7 @@ pytestmark = [
 MODELS = ["headlamp/model.xmi", "headlamp/model.ea.xmi", "meka/model.xmi", "meka/model.ea.xmi",
           "pid/model.xmi", "tuned/model.xmi", "split/model.xmi", "calligraphy/model.xmi", "learning/model.xmi",
           # structured data: a typekit, struct / enum / array ports and properties
-          "quadarm/model.xmi"]
+          "quadarm/model.xmi", "structured/model.xmi"]
 
 
 def _bash(script: str, cwd: Path, timeout: int = 1200) -> subprocess.CompletedProcess[str]:
@@ -183,6 +183,71 @@ def test_tuned_values_of_the_user_file_win_in_every_format(fmt: str, tmp_root: P
             assert "Running" not in [line.split()[-1] for line in said.splitlines() if line.startswith("READBACK")], said
             assert "Could not load controller.user.cpf" in said, said[-3000:]
             if fmt == "ops":
-                assert "tuned.ops: controller.user.cpf not loaded (run from the folder of tuned.ops)" in said
+                assert ("tuned.ops: controller.user.cpf not loaded: it is not in the working directory "
+                        "(run from the folder of tuned.ops)") in said
     finally:
         cpf.write_text(pristine)
+
+
+# every property of ctrl1 as text, as deep as its type goes (arrays: size, then elements), after
+# running a deployment file the way `deployer -s FILE` does
+_DUMP = """require("rttlib")
+local tc = rtt.getTC()
+local depl = tc:getName() == "Deployer" and tc or tc:getPeer("Deployer")
+local file = os.getenv("DEPLOY_FILE")
+local ok
+if file:match("%.xml$") then ok = depl:kickStart(file) else ok = depl:runScript(file) end
+local function text(v)
+  if type(v) ~= "userdata" then return tostring(v) end
+  local names = v:getMemberNames()
+  local sequence = false
+  for _, n in ipairs(names) do if n == "capacity" then sequence = true end end
+  if sequence then
+    local items = {}
+    for i = 0, v.size - 1 do items[#items + 1] = text(v[i]) end
+    return "[" .. v.size .. ":" .. table.concat(items, ",") .. "]"
+  end
+  if #names == 0 then  -- an enumeration: its number
+    local i = rtt.Variable("int"); i:assign(v); return tostring(i:tolua())
+  end
+  local items = {}
+  for _, n in ipairs(names) do items[#items + 1] = n .. "=" .. text(v[n]) end
+  return "{" .. table.concat(items, ",") .. "}"
+end
+local c = depl:getPeer("ctrl1")
+print("STATE " .. tostring(ok) .. " " .. tostring(c and c:getState()))
+for _, n in ipairs(c:getPropertyNames()) do print("PROPERTY " .. n .. " " .. text(c:getProperty(n):get())) end
+for _, n in ipairs(depl:getPeers()) do local p = depl:getPeer(n); p:stop(); p:cleanup() end
+os.exit(0)
+"""
+
+_GAINS = "{stiffness=300,damping=20,maxTorque=80}"
+_STRUCTURED = {  # ctrl1's model values, as _DUMP writes them
+    "gains": _GAINS,
+    "desired": "[7:0,0.5,0,-1,0,0.5,0]",
+    "fallback": "2",  # TORQUE
+    "offsets": "[7:1,-2,3,0,0,0,7]",
+    "limits": "[2:1.5,2.5]",
+    "history": "[0:]",
+    "stages": "[7:" + ",".join([_GAINS] * 7) + "]",
+    "limit": "{torque=[7:0,0,0,0,0,0,0],gains=" + _GAINS + "}",
+}
+
+
+def test_structured_values_are_the_same_in_every_format(tmp_root: Path) -> None:
+    """Issue 37: a property of each structured kind (struct, enum, fixed and unbounded arrays, an
+    array of structs, a nested struct) has the model's value read back from the running component,
+    the same in XML, .ops and Lua. The atomic class starts its arrays empty (or at other sizes), so
+    a format that sets no array size or leaves a member out shows here."""
+    out, _ = _built("structured/model.xmi", tmp_root)
+    (tmp_root / "dump.lua").write_text(_DUMP)
+    seen = {}
+    for fmt in ("xml", "ops", "lua"):
+        deploy = _deployment(out, fmt)
+        run = _bash(f"oro_add_prefix {out}/install && DEPLOY_FILE={deploy.name} timeout -s INT 120 "
+                    f"rttlua {tmp_root / 'dump.lua'} </dev/null", deploy.parent)
+        assert "STATE true Running" in run.stdout, run.stdout[-3000:] + run.stderr[-2000:]
+        seen[fmt] = dict(line.split(" ", 2)[1:] for line in run.stdout.splitlines() if line.startswith("PROPERTY "))
+        for name, value in _STRUCTURED.items():
+            assert seen[fmt].get(name) == value, (fmt, name, seen[fmt].get(name))
+    assert seen["xml"] == seen["ops"] == seen["lua"]

@@ -275,8 +275,9 @@ def _free_port() -> int:
 
 
 @contextlib.contextmanager
-def _roscore_running(catkin_ws: Path, launch: Path):
-    """A roscore on a free port with ``launch`` running under it; yields the environment of its tools."""
+def _roscore_running(catkin_ws: Path, launch: Path, output: Path | None = None):
+    """A roscore on a free port with ``launch`` running under it; yields the environment of its tools.
+    ``output``: a file for what roslaunch and its nodes print (else it is discarded)."""
     for tool in ("roscore", "roslaunch", "rostopic", "rosnode"):
         _need(tool)
     port = _free_port()
@@ -294,8 +295,10 @@ def _roscore_running(catkin_ws: Path, launch: Path):
         while subprocess.run(["rosnode", "list"], env=env, capture_output=True).returncode != 0:
             assert time.monotonic() < deadline, "roscore did not come up"
             time.sleep(0.5)
+        printed = open(output, "w") if output else subprocess.DEVNULL  # noqa: SIM115 (closed with the process)
         procs.append(subprocess.Popen(["roslaunch", str(launch)], env=env,
-                                      stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True))
+                                      stdout=printed, stderr=subprocess.STDOUT if output else subprocess.DEVNULL,
+                                      start_new_session=True))
         yield env
     finally:
         for proc in reversed(procs):
@@ -479,3 +482,28 @@ def test_ros1_composites_run_under_roscore_with_every_connection_live(app: str, 
             answer = subprocess.run(["rosservice", "call", service, "true"], env=env, capture_output=True,
                                     text=True, timeout=20)
             assert "success: True" in answer.stdout, answer.stdout + answer.stderr
+
+
+def test_ros1_structured_parameters_reach_the_nodes(catkin_ws: Path) -> None:
+    """Issue 37: fixture `structured`'s property of each structured kind is a parameter with the value
+    the Orocos deployment formats give it (tests/test_orocos_deploy.py), and the node reads every one
+    without a complaint (a fixed array of another size or an unknown enumeration literal is logged as
+    an error to /rosout). `stages` (an array of a data type) is no ROS parameter (ROS107 names it)."""
+    yaml = pytest.importorskip("yaml", reason="PyYAML not installed")
+    printed = catkin_ws / "structured-roslaunch.out"
+    with _roscore_running(catkin_ws, catkin_ws / "src/structured/launch/structured.launch", printed) as env:
+        _wait_for(env, {f"/ctrl{k}" for k in range(1, 5)}, {"/state1", "/torques1"})
+        got = yaml.safe_load(subprocess.run(["rosparam", "get", "/ctrl1"], env=env, capture_output=True, text=True,
+                                            timeout=30).stdout)
+        gains = {"stiffness": 300.0, "damping": 20.0, "maxTorque": 80.0}
+        assert {k: got.get(k) for k in ("gains", "desired", "fallback", "offsets", "limits", "limit")} == {
+            "gains": gains, "desired": [0.0, 0.5, 0.0, -1.0, 0.0, 0.5, 0.0], "fallback": "TORQUE",
+            "offsets": [1, -2, 3, 0, 0, 0, 7], "limits": [1.5, 2.5],
+            "limit": {"torque": [0.0] * 7, "gains": gains}}
+        assert "history" not in got and "stages" not in got  # empty: the node's default; stages: ROS107
+        time.sleep(2)
+        assert set(subprocess.run(["rosnode", "list"], env=env, capture_output=True, text=True).stdout.split()) >= {
+            f"/ctrl{k}" for k in range(1, 5)}
+    said = printed.read_text(errors="replace")
+    assert "process[ctrl1-" in said, said[-3000:]  # the nodes' output is there
+    assert not [line for line in said.splitlines() if "ERROR" in line and "parameter " in line], said[-3000:]

@@ -293,6 +293,50 @@ def _user_cpf_names(out: Path, nodes: list[etree._Element]) -> list[Diagnostic]:
                 found.append(Diagnostic(
                     "warning", "OUT005", f"user file {rel} gives property '{name}' type '{kind}', but it is "
                     f"'{declared[name]}': the deployer refuses the file", file=str(target), line=prop.sourceline))
+            elif prop.tag != "simple":
+                shape = _shape(node.get("shape") or "")
+                found += _cpf_members(prop, name, shape, f"user file {rel}", str(target))
+    return found
+
+
+def _shape(text: str) -> dict[str, str]:
+    """A user .cpf file's shape (its file node's ``shape``): the type of each property path."""
+    pairs = (item.rsplit(" ", 1) for item in _signature_items(text))
+    return {pair[0]: pair[1] for pair in pairs if len(pair) == 2}
+
+
+def _cpf_members(struct: etree._Element, path: str, shape: dict[str, str], what: str,
+                 file: str) -> list[Diagnostic]:
+    """OUT005 below a property: members and elements its type does not have, or of another type.
+
+    The deployer's UpdateProperties ignores a member the type lacks without a word (measured on RTT 2.10:
+    the other members are set, the misspelt one keeps its value) and converts a member of another type
+    where it can. Elements of an array whose element shape the model does not show (an empty unbounded
+    array) are not checked.
+    """
+    array = shape.get(path, "") == "array" or shape.get(path, "").startswith("/std/vector<")
+    found: list[Diagnostic] = []
+    for member in struct.iterchildren("simple", "struct", "sequence"):
+        name = member.get("name") or ""
+        sub = f"{path}[]" if array and re.fullmatch(r"Element[0-9]+", name) else f"{path}.{name}"
+        if sub not in shape:
+            if array and not any(p.startswith(f"{path}[]") for p in shape):
+                continue
+            has = sorted({p[len(path):].lstrip(".").split(".")[0].split("[")[0] or "Element<n>"
+                          for p in shape if p.startswith((f"{path}.", f"{path}[]"))})
+            kind = "elements are" if array else "members are"
+            found.append(Diagnostic(
+                "warning", "OUT005", f"{what} sets '{name}' in property '{path}' ({sub}), which its type "
+                f"'{shape.get(path, '?')}' does not have (its {kind}: {', '.join(has) or 'none'}): the deployer "
+                "ignores it without a word (the member you meant keeps the model's value)", file=file,
+                line=member.sourceline))
+        elif member.tag == "simple" and member.get("type") != shape[sub]:
+            found.append(Diagnostic(
+                "warning", "OUT005", f"{what} gives '{sub}' type '{member.get('type')}', but it is '{shape[sub]}': "
+                "the deployer converts the value where RTT can (a long to a double) and refuses the file where it "
+                "cannot", file=file, line=member.sourceline))
+        elif member.tag != "simple":
+            found += _cpf_members(member, sub, shape, what, file)
     return found
 
 

@@ -17,15 +17,18 @@
     struct     a UML DataType: the C++ struct ::<Name> declared in the
                generated include/<Name>.hpp, with its attributes (inherited
                ones first) as members initialised to their defaults; RTT
-               type "<Name>" (StructTypeInfo, members by boost serialization)
+               type "/<pkg>/<Name>" (StructTypeInfo, members by boost
+               serialization; qualified by the package as orogen's are)
     enum       a UML Enumeration: a plain enum ::<Name> in include/<Name>.hpp
                (RTT 2.10's EnumTypeInfo converts it to int implicitly, which
                an enum class does not; code names a literal <Name>::<LITERAL>);
-               RTT type "<Name>" (a literal's name in cpf XML and scripts,
-               its number converts too)
+               RTT type "/<pkg>/<Name>" (a literal's name in cpf XML and
+               scripts, its number converts too)
     sequence   any multiplicity other than 1 ([n], [0..n], [*]): std::vector
                of the element type, RTT type "array" for double (RTT's own)
-               else "<element>[]" (SequenceTypeInfo); a fixed [n] has n
+               else "/std/vector</<element>>" (SequenceTypeInfo; .ops names
+               it std.vector<pkg.T>, whose constructor sizes a property
+               before the script sets its elements); a fixed [n] has n
                elements from the start. No array of boolean: std::vector<bool>
                is no container of bool references, and RTT has no typekit for it.
 -->
@@ -57,8 +60,9 @@
     <xsl:variable name="name" as="xs:string" select="f:cpp-identifier($def/@name)"/>
     <xsl:variable name="enum" as="xs:boolean" select="exists($def/self::pim:enumeration)"/>
     <xsl:if test="not($enum) or exists($def/pim:literal)">
-      <ty:type kind="{if ($enum) then 'enum' else 'struct'}" primitive="" cpp="::{$name}" rtt="{$name}"
-               xml="{if ($enum) then 'string' else $name}" header="{$name}.hpp" type-ref="{$def/@id}"
+      <xsl:variable name="rtt" as="xs:string" select="'/' || fp:package-name($package-name, root($def)/pim:model) || '/' || $name"/>
+      <ty:type kind="{if ($enum) then 'enum' else 'struct'}" primitive="" cpp="::{$name}" rtt="{$rtt}"
+               xml="{if ($enum) then 'string' else $rtt}" header="{$name}.hpp" type-ref="{$def/@id}"
                sample="{if ($enum) then '::' || $name || '::' || f:cpp-identifier($def/pim:literal[1]/@name) else '::' || $name || '()'}"
                xml-sample="" pass="{if ($enum) then 'value' else 'cref'}"/>
     </xsl:if>
@@ -68,8 +72,13 @@
     <xsl:param name="element" as="element(ty:type)"/>
     <xsl:param name="array" as="xs:string+"/>
     <xsl:variable name="cpp" as="xs:string" select="'std::vector&lt;' || $element/@cpp || '&gt;'"/>
-    <xsl:variable name="rtt" as="xs:string" select="if ($element/@rtt eq 'double') then 'array' else $element/@rtt || '[]'"/>
-    <ty:type kind="sequence" primitive="" cpp="{$cpp}" rtt="{$rtt}" xml="{$rtt}" array="{$array[1]}" size="{$array[2]}"
+    <xsl:variable name="rtt" as="xs:string"
+        select="if ($element/@rtt eq 'double') then 'array'
+                else '/std/vector&lt;' || (if (starts-with($element/@rtt, '/')) then '' else '/') || $element/@rtt || '&gt;'"/>
+    <!-- its name in .ops: RTT's type look-up reads "std.vector<pkg.T>" as "/std/vector</pkg/T>" -->
+    <xsl:variable name="script" as="xs:string"
+        select="if ($rtt eq 'array') then $rtt else translate(replace(substring($rtt, 2), '&lt;/', '&lt;'), '/', '.')"/>
+    <ty:type kind="sequence" primitive="" cpp="{$cpp}" rtt="{$rtt}" xml="{$rtt}" script="{$script}" array="{$array[1]}" size="{$array[2]}"
              sample="{if ($array[1] eq 'fixed') then $cpp || '(' || $array[2] || ', ' || $element/@sample || ')' else $cpp || '()'}"
              xml-sample="" pass="cref">
       <xsl:sequence select="$element/@type-ref, $element/@header"/>
@@ -195,7 +204,8 @@
             </xsl:when>
           </xsl:choose>
         </xsl:variable>
-        <o:value name="{$name}" xml-type="{$type/@xml}" path="{$path}"
+        <!-- @size and @script-type: the scripts size the array before they set its elements -->
+        <o:value name="{$name}" xml-type="{$type/@xml}" path="{$path}" size="{count($items)}" script-type="{$type/@script}"
                  cpp-value="{if (exists($default)) then $type/@cpp || '{' || string-join($items ! string(@cpp-value), ', ') || '}'
                              else $type/@sample}">
           <xsl:sequence select="$items"/>
@@ -233,13 +243,19 @@
       else fp:oro-zero($type, $name, $path)"/>
   </xsl:function>
 
-  <!-- a primitive's zero: the value a C++ member starts with; no script
-       value, as the scripts set only the values the model gives -->
+  <!-- a primitive's zero: the value a C++ member starts with; the scripts
+       set it as the deployer XML does (the whole value, issue 37), so a
+       member the model gives no default starts the same in every format -->
   <xsl:function name="fp:oro-zero" as="element(o:value)">
     <xsl:param name="type" as="element(ty:type)"/>
     <xsl:param name="name" as="xs:string"/>
     <xsl:param name="path" as="xs:string"/>
-    <o:value name="{$name}" xml-type="{$type/@xml}" path="{$path}" value="{$type/@xml-sample}" cpp-value="{$type/@sample}"/>
+    <o:value name="{$name}" xml-type="{$type/@xml}" path="{$path}" value="{$type/@xml-sample}" cpp-value="{$type/@sample}">
+      <xsl:if test="$type/@primitive ne 'char'">
+        <xsl:attribute name="script-value" select="if ($type/@primitive eq 'string') then '&quot;&quot;'
+            else if ($type/@primitive eq 'boolean') then 'false' else $type/@xml-sample"/>
+      </xsl:if>
+    </o:value>
   </xsl:function>
 
   <!-- a leaf value: a primitive or an enumeration literal -->

@@ -137,9 +137,21 @@
     <xsl:param name="instance" as="element(o:instance)"/>
     <fs:file path="deploy/{fp:user-cpf($instance)}" mode="user" stylesheet="{$fp:deploy-xsl}" implements="{$instance/@xmi-id}"
              implements-name="{$instance/@name}"
-             signature="{string-join($instance/o:property-value ! concat('property ', @name, ' ', @xml-type), '; ')}">
+             signature="{string-join($instance/o:property-value ! concat('property ', @name, ' ', @xml-type), '; ')}"
+             shape="{fp:user-cpf-shape($instance)}">
       <xsl:value-of select="fp:user-cpf-text($instance)"/>
     </fs:file>
   </xsl:function>
 
+  <!-- what the writer checks a user's .cpf against, as deep as the types
+       go (OUT005, src/robomda/output.py): "path type" for each property and
+       each member or element below it ("gains.stiffness double",
+       "desired[] double", "stages[].damping double"), "; "-separated -->
+  <xsl:function name="fp:user-cpf-shape" as="xs:string">
+    <xsl:param name="instance" as="element(o:instance)"/>
+    <xsl:sequence select="string-join(sort(distinct-values($instance/o:property-value !
+        (if (o:value) then (for $v in o:value/descendant-or-self::o:value
+                            return concat(@name, replace($v/@path, '\[[0-9]+\]', '[]'), ' ', $v/@xml-type))
+         else concat(@name, ' ', @xml-type)))), '; ')"/>
+  </xsl:function>
 </xsl:stylesheet>

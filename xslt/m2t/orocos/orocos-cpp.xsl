@@ -15,6 +15,10 @@
   declares them (docs/profile.md, atomic-code conventions). Calls to the
   realizing class are qualified with its C++ name because RTT::TaskContext
   has methods with the same names (configure, start, stop, update, cleanup).
+  Real time (issue 37): updateHook reads an input of a data type, array or
+  string into a member sample made once with the model's sizes (no heap
+  allocation per cycle); configureHook gives an output of a data type or an
+  unbounded array the class's configured value as data sample.
   kind="base": generated <Class>Base (ports, properties, pure virtual
   operations) plus a user class <Class> written once, with empty hooks.
 -->
@@ -48,6 +52,10 @@
     <xsl:param name="tc" as="element(o:task-context)"/>
     <xsl:sequence select="
         if ($tc/o:port) then ('', '// data ports (R2)', $tc/o:port ! (concat(@rtt-class, ' ', @member, ';'))) else (),
+        if (fp:read-samples($tc))
+        then ('', '// what updateHook() reads the inputs into: made once, of the model''s sizes, so that a read',
+              '// copies into storage that is already there (no heap allocation in a real-time cycle)',
+              fp:read-samples($tc) ! concat(@cpp-type, ' ', @member, '_sample;')) else (),
         if ($tc/@kind eq 'base' and $tc/o:property)
         then ('', '// properties (R4)', $tc/o:property ! (concat(@cpp-type, ' ', @member, ';'))) else (),
         $tc/o:required-service ! (
@@ -124,6 +132,7 @@
     <xsl:variable name="inits" as="xs:string*" select="
         'RTT::TaskContext(name, PreOperational)',
         $tc/o:port ! (concat(@member, '(', fp:cpp-string(@name), ')')),
+        fp:read-samples($tc) ! concat(@member, '_sample(', @sample, ')'),
         $tc/o:required-service/o:operation-caller ! (concat(@member, '(', fp:cpp-string(@name), ')')),
         if ($tc/@kind eq 'base') then $tc/o:property ! (concat(@member, '(', @cpp-default, ')')) else ()"/>
     <xsl:sequence select="string-join($inits, ',&#10;    ')"/>
@@ -208,6 +217,18 @@
         concat('}  // namespace ', $tc/@namespace)))"/>
   </xsl:function>
 
+  <!-- the input ports a wrapper's updateHook() reads whose type may hold
+       heap storage (a data type, an array, a string): each gets a member
+       sample of the type's model sizes (a fixed [n] array has n elements),
+       so reading a sample of those sizes allocates nothing; an unbounded
+       array grows on its first larger sample only (std::vector keeps its
+       capacity) -->
+  <xsl:function name="fp:read-samples" as="element(o:port)*">
+    <xsl:param name="tc" as="element(o:task-context)"/>
+    <xsl:sequence select="if ($tc/@kind eq 'wrapper' and $tc/o:hook[@name eq 'update'])
+                          then $tc/o:port[@direction eq 'in'][@type-kind or @primitive eq 'string'] else ()"/>
+  </xsl:function>
+
   <xsl:function name="fp:wrapper-hooks" as="xs:string*">
     <xsl:param name="tc" as="element(o:task-context)"/>
     <xsl:variable name="cls" as="xs:string" select="$tc/@generated-class"/>
@@ -221,8 +242,10 @@
       </xsl:if>
       <xsl:if test="@name eq 'update'">
         <xsl:for-each select="$tc/o:port[@direction eq 'in']">
-          <xsl:variable name="value" as="xs:string" select="concat(@name, '_sample')"/>
-          <xsl:sequence select="concat('  ', @cpp-type, ' ', $value, ' = ', @sample, ';'),
+          <xsl:variable name="member" as="xs:boolean" select="exists(. intersect fp:read-samples($tc))"/>
+          <xsl:variable name="value" as="xs:string" select="if ($member) then concat(@member, '_sample') else concat(@name, '_sample')"/>
+          <xsl:sequence select="
+              (if ($member) then () else concat('  ', @cpp-type, ' ', $value, ' = ', @sample, ';')),
               if (xs:boolean(@accessor-declared))
               then (concat('  if (', @member, '.read(', $value, ') == RTT::NewData) {'),
                     concat('    ', $rc, '::', @accessor, '(', $value, ');'),
@@ -231,7 +254,20 @@
                      ' declares no ', @accessor, '(): the sample is not passed on'))"/>
         </xsl:for-each>
       </xsl:if>
+      <!-- configure: outputs whose size the model does not fix (an unbounded
+           array, a data type that may hold one) take the class's own value,
+           once configured, as their data sample (setDataSample sizes the
+           connections' buffers, so a write in a cycle copies without
+           allocating) -->
+      <xsl:variable name="sized" as="element(o:port)*"
+          select="if (@name eq 'configure') then $tc/o:port[@direction eq 'out'][xs:boolean(@accessor-declared)]
+                     [@type-kind eq 'struct' or (@type-kind eq 'sequence' and @sample eq @cpp-type || '()')] else ()"/>
+      <xsl:variable name="samples" as="xs:string*"
+          select="$sized ! concat('  ', @member, '.setDataSample(', $rc, '::', @accessor, '());  // the sizes the class gives')"/>
       <xsl:choose>
+        <xsl:when test="exists($samples) and @call and xs:boolean(@returns-bool)">
+          <xsl:sequence select="concat('  if (!', $rc, '::', @call, '())'), '    return false;', $samples, '  return true;'"/>
+        </xsl:when>
         <xsl:when test="@call and $bool and xs:boolean(@returns-bool)">
           <xsl:sequence select="concat('  return ', $rc, '::', @call, '();')"/>
         </xsl:when>
@@ -250,7 +286,7 @@
         </xsl:for-each>
       </xsl:if>
       <xsl:if test="$bool and not(@call and xs:boolean(@returns-bool))">
-        <xsl:sequence select="'  return true;'"/>
+        <xsl:sequence select="$samples, '  return true;'"/>
       </xsl:if>
       <xsl:sequence select="'}'"/>
     </xsl:for-each>

@@ -124,17 +124,33 @@
     <xsl:sequence select="
         if ($value/self::o:property-value/o:value) then fp:property-xml($value/o:value, $name)
         else if ($value/@value) then fp:simple($name, $value/@xml-type, $value/@value)
-        else (concat('&lt;struct name=&quot;', fp:xml-text($name), '&quot; type=&quot;', $value/@xml-type, '&quot;&gt;'),
+        else (concat('&lt;struct name=&quot;', fp:xml-text($name), '&quot; type=&quot;', fp:xml-text($value/@xml-type), '&quot;&gt;'),
               fp:indent(2, $value/o:value ! fp:property-xml(., @name)),
               '&lt;/struct&gt;')"/>
   </xsl:function>
 
-  <!-- the values of a property that the scripts set: the property itself,
-       or the leaves of its data type or array that the model gives (their
-       @path below the property: .stiffness, [0]) -->
-  <xsl:function name="fp:leaves" as="element()*">
+  <!-- what the scripts do to give a data type or an array property the
+       value the deployer XML gives it (issue 37): in document order, each
+       array (@script-type: sized to @size first, as a script cannot set an
+       element an array does not have) and each leaf, zeros included -->
+  <xsl:function name="fp:script-steps" as="element()*">
     <xsl:param name="property" as="element(o:property-value)"/>
-    <xsl:sequence select="if ($property/@script-value) then $property else $property/o:value/descendant-or-self::o:value[@script-value]"/>
+    <xsl:sequence select="if ($property/@script-value) then $property
+                          else $property/o:value/descendant-or-self::o:value[@script-type or @script-value]"/>
+  </xsl:function>
+
+  <!-- .ops: one step of fp:script-steps on instance $instance -->
+  <xsl:function name="fp:ops-step" as="xs:string">
+    <xsl:param name="instance" as="element(o:instance)"/>
+    <xsl:param name="p" as="element(o:property-value)"/>
+    <xsl:param name="step" as="element()"/>
+    <!-- the size of a std.vector<int> as an unsigned literal (7u): with an
+         int, RTT takes the constructor that builds a vector of its
+         arguments ({7}), not the one of 7 elements; every other sequence
+         type takes an int size (its elements are not ints) -->
+    <xsl:sequence select="concat($instance/@name, '.', $p/@name, $step/@path, ' = ',
+        if ($step/@script-type) then concat($step/@script-type, '(', $step/@size, if ($step/@script-type eq 'std.vector&lt;int&gt;') then 'u' else '', ')')
+        else $step/@script-value)"/>
   </xsl:function>
 
   <xsl:function name="fp:simple" as="xs:string">
@@ -348,14 +364,15 @@
             $deployment/o:instance ! (for $c in o:call return
             concat('connectServices(', fp:cpp-string(@name), ', ', fp:cpp-string($c/@provider), ')  // ', $c/@service))) else (),
         if ($deployment/o:instance/o:property-value) then ('', '// properties (R4)',
-            $deployment/o:instance ! (for $p in o:property-value, $leaf in fp:leaves($p)
-                                      return concat(@name, '.', $p/@name, $leaf/@path, ' = ', $leaf/@script-value)),
+            $deployment/o:instance ! (for $p in o:property-value, $step in fp:script-steps($p) return fp:ops-step(., $p, $step)),
             '',
             '// then your tuned values (files of yours, in the working directory)',
             $deployment/o:instance[o:property-value] ! (
               concat('loadService(', fp:cpp-string(@name), ', &quot;marshalling&quot;)'),
               concat('if ( !', @name, '.marshalling.updateProperties(', fp:cpp-string(fp:user-cpf(.)), ') ) then {'),
-              concat('  print.log(Error, ', fp:cpp-string(concat($file, ': ', fp:user-cpf(.), ' not loaded (run from the folder of ', $file, ')')), ')'),
+              (: .ops cannot tell a missing file from a refused one: both causes, and the deployer's own line says which :)
+              concat('  print.log(Error, ', fp:cpp-string(concat($file, ': ', fp:user-cpf(.), ' not loaded: it is not in the working directory',
+                     ' (run from the folder of ', $file, '), or the deployer refused a value in it (its error above names it)')), ')'),
               '  configured = false',
               '}')) else (),
         $deployment/o:connection ! (
@@ -471,8 +488,9 @@
         else ('  check(pcall(function()',
               concat('    local p = ', $property),
               '    local v = p:get()',
-              fp:leaves($p) ! (if (@enum = 'true') then concat('    v', @path, ':assign(rtt.Variable(&quot;int&quot;, ', @script-value, '))')
-                               else concat('    v', @path, ' = ', @script-value)),
+              fp:script-steps($p) ! (if (@script-type) then concat('    v', @path, ':resize(', @size, ')')
+                                     else if (@enum = 'true') then concat('    v', @path, ':assign(rtt.Variable(&quot;int&quot;, ', @script-value, '))')
+                                     else concat('    v', @path, ' = ', @script-value)),
               '    p:set(v)',
               concat('  end), ', $what, ')'))"/>
   </xsl:function>
@@ -494,15 +512,20 @@
   <xsl:function name="fp:lua-structured-checks" as="xs:string*">
     <xsl:param name="instance" as="element(o:instance)"/>
     <xsl:param name="p" as="element(o:property-value)"/>
-    <xsl:variable name="leaves" as="element(o:value)*" select="fp:leaves($p)"/>
-    <xsl:if test="exists($leaves)">
+    <xsl:variable name="steps" as="element(o:value)*" select="fp:script-steps($p)"/>
+    <xsl:if test="exists($steps)">
+      <!-- an array's size before its elements; reading an element the
+           array lacks is a Lua error, caught and reported as a failure -->
       <xsl:sequence select="
           concat('  if tuned[', fp:cpp-string($instance/@name), '][', fp:cpp-string($p/@name), '] == nil then'),
-          $leaves ! (
+          '    check(pcall(function()',
+          $steps ! (
             let $get := concat('comps[', fp:cpp-string($instance/@name), ']:getProperty(', fp:cpp-string($p/@name), '):get()', @path),
-                $value := if (@enum = 'true') then concat('enum_int(', $get, ')') else $get
-            return '    ' || fp:lua-value-check($value, @script-value, @xml-type = ('double', 'float'),
-                fp:cpp-string(concat('property ', $instance/@name, '.', $p/@name, @path, ' = ', @script-value)))),
+                $value := if (@script-type) then $get || '.size' else if (@enum = 'true') then concat('enum_int(', $get, ')') else $get,
+                $want := if (@script-type) then string(@size) else string(@script-value)
+            return '      ' || fp:lua-value-check($value, $want, @xml-type = ('double', 'float'),
+                fp:cpp-string(concat('property ', $instance/@name, '.', $p/@name, @path, if (@script-type) then '.size' else '', ' = ', $want)))),
+          concat('    end), ', fp:cpp-string(concat('property ', $instance/@name, '.', $p/@name, ' read back whole')), ')'),
           '  end'"/>
     </xsl:if>
   </xsl:function>

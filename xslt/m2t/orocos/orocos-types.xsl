@@ -15,7 +15,11 @@
             type is the model's, so the function is not intrusive)
   enum      RTT::types::EnumTypeInfo<T> with the literals' names, so that
             cpf XML and scripts may use the names (RTT converts ints too)
-  sequence  RTT::types::SequenceTypeInfo<std::vector<T>> ("T[]")
+  sequence  RTT::types::SequenceTypeInfo<std::vector<T>>
+  RTT names are qualified by the package as orogen's are ("/<pkg>/T",
+  "/std/vector</<pkg>/T>", "/std/vector</int>"; std::vector<double> is
+  RTT's "array"), so that two packages that each define a T load into one
+  deployer; scripts name them "<pkg>.T", "std.vector<<pkg>.T>".
   The typekit is loaded before the components (deploy files: LoadLibrary
   <pkg>/types/<pkg>-typekit).
 -->
@@ -46,9 +50,9 @@
         $types/o:enum ! (
           '',
           '// enumeration ' || @name || ': its literals by name (cpf XML, scripts)',
-          'struct ' || @rtt-name || 'TypeInfo : public RTT::types::EnumTypeInfo&lt;' || @cpp-name || '&gt;',
+          'struct ' || replace(@cpp-name, '^.*::', '') || 'TypeInfo : public RTT::types::EnumTypeInfo&lt;' || @cpp-name || '&gt;',
           '{',
-          '  ' || @rtt-name || 'TypeInfo() : RTT::types::EnumTypeInfo&lt;' || @cpp-name || '&gt;(&quot;' || @rtt-name || '&quot;)',
+          '  ' || replace(@cpp-name, '^.*::', '') || 'TypeInfo() : RTT::types::EnumTypeInfo&lt;' || @cpp-name || '&gt;(&quot;' || @rtt-name || '&quot;)',
           '  {',
           o:literal ! ('    to_string[' || ../@cpp-name || '::' || @member || '] = &quot;' || @name || '&quot;;'),
           '  }',
@@ -61,7 +65,7 @@
         '  bool loadTypes()',
         '  {',
         '    RTT::types::TypeInfoRepository::shared_ptr types = RTT::types::Types();',
-        $types/o:enum ! ('    types-&gt;addType(new ' || @rtt-name || 'TypeInfo());'),
+        $types/o:enum ! ('    types-&gt;addType(new ' || replace(@cpp-name, '^.*::', '') || 'TypeInfo());'),
         $types/o:struct ! ('    types-&gt;addType(new RTT::types::StructTypeInfo&lt;' || @cpp-name || '&gt;(&quot;' || @rtt-name || '&quot;));'),
         $types/o:sequence ! ('    types-&gt;addType(new RTT::types::SequenceTypeInfo&lt;' || @cpp-type || '&gt;(&quot;' || @rtt-name || '&quot;));'),
         '    return true;',

@@ -188,7 +188,13 @@
     <xsl:param name="value" as="xs:string"/>
     <xsl:sequence select="if ($msg/@generated eq 'true') then 'to_msg(' || $value || ', ' || $var || ');'
         else if ($msg/@sequence eq 'true')
-        then ('const ' || $msg/@cpp-type || ' value = ' || $value || ';', $var || '.data.assign(value.begin(), value.end());')
+        then ('const ' || $msg/@cpp-type || ' value = ' || $value || ';', $var || '.data.assign(value.begin(), value.end());',
+              (: its layout: one dimension, named after the port, of the sample's size (issue 37: not empty) :)
+              $var || '.layout.dim.resize(1);',
+              $var || '.layout.dim[0].label = &quot;' || $msg/../@name || '&quot;;',
+              $var || '.layout.dim[0].size = static_cast&lt;unsigned int&gt;(value.size());',
+              $var || '.layout.dim[0].stride = static_cast&lt;unsigned int&gt;(value.size());',
+              $var || '.layout.data_offset = 0;')
         else if ($msg/@field ne '') then concat($var, '.', $msg/@field, ' = ', $value, ';')
         else concat($var, ' = ', $value, ';')"/>
   </xsl:function>
