@@ -83,7 +83,8 @@
       <xsl:when test="local-name($formula) eq 'disj'"><xsl:sequence select="string-join($args, ' or ')"/></xsl:when>
       <xsl:when test="local-name($formula) eq 'imp'"><xsl:sequence select="$args[1] || ' implies ' || $args[2]"/></xsl:when>
       <xsl:when test="local-name($formula) eq 'eq'"><xsl:sequence select="$args[1] || ' iff ' || $args[2]"/></xsl:when>
-      <xsl:otherwise><xsl:sequence select="string-join($args, '')"/></xsl:otherwise>
+      <!-- a rule: its one formula -->
+      <xsl:otherwise><xsl:sequence select="f:formula-text($formula/*[local-name() ne 'description'][1])"/></xsl:otherwise>
     </xsl:choose>
   </xsl:function>
 
