@@ -213,7 +213,7 @@ def _input_hash(model: Path, linked: list[Path], features: Sequence[Path] = ()) 
     of a variant's configuration, feature model and resolution model: ``features``)."""
     digest = hashlib.sha256(model.read_bytes())
     for path in features:
-        digest.update(b"\0features\0" + path.as_posix().encode() + b"\0" + path.read_bytes())
+        digest.update(b"\0features\0" + path.name.encode() + b"\0" + path.read_bytes())
     for path in linked:
         digest.update(b"\0" + path.as_posix().encode() + b"\0" + path.read_bytes())
     for path in robot_files(model, linked):

@@ -368,7 +368,8 @@ class XmiLocator:
             column=where.column if where else column,
             element_kind=where.kind if where else None,
             element_name=where.name if where else None,
-            xmi_id=xmi_id or None,
+            # a location id of a file that is no XMI (FILE#@/path): FILE:LINE says it, the id is no xmi:id
+            xmi_id=None if not xmi_id or "#@" in xmi_id else xmi_id,
             step=step,
             qualified_name=(where.qualified_name or None) if where else None,
         )

@@ -1,0 +1,155 @@
+"""Product lines (issue 32; docs/variability.md): FeatureIDE feature models and configurations, the
+resolution model, the configure stage and its commands, on the Research Camp fixture
+(fixtures/variability/researchcamp, written by its make.py).
+
+Goldens per configuration in fixtures/variability/researchcamp/expected/<configuration>/: the
+configured PIM (configure.xml), the bound PIM, each target's package, and what ``robomda check``
+prints; the broken product lines' diagnostics in .../broken/<case>.txt. Regenerate on purpose only
+(``--force-regen``) and read the diff.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import shutil
+from pathlib import Path
+
+import pytest
+from lxml import etree
+
+from robomda.api import generate, import_model, targets
+from robomda.cli import main
+
+ROOT = Path(__file__).resolve().parent.parent
+CAMP = ROOT / "fixtures" / "variability" / "researchcamp"
+CONFIGS = CAMP / "variability" / "configs"
+VALID = ["map-lab-offboard", "map-vfh-hall", "marker-dwa-pick"]
+FS = "{urn:robomda:fileset:1}"
+
+
+def _make():
+    spec = importlib.util.spec_from_file_location("researchcamp_make", CAMP / "make.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def _cli(capsys: pytest.CaptureFixture[str], argv: list[str]) -> tuple[int, str, str]:
+    capsys.readouterr()
+    code = main(argv)
+    captured = capsys.readouterr()
+    return code, captured.out, captured.err
+
+
+def _check_all(file_regression, items: list[tuple[str, Path]]) -> None:
+    failures = []
+    for text, golden in items:
+        try:
+            file_regression.check(text, fullpath=golden, binary=False)
+        except (AssertionError, pytest.fail.Exception) as exc:
+            failures.append(f"{golden.relative_to(ROOT)}: {str(exc).strip().splitlines()[0]}")
+    if failures:
+        pytest.fail("\n".join(failures))
+
+
+def test_the_fixture_is_what_make_py_writes() -> None:
+    for path, text in _make().texts().items():
+        assert path.read_text(encoding="utf-8") == text, path
+
+
+def test_a_configured_model_is_the_variant_drawn_by_hand(tmp_path: Path) -> None:
+    """map-vfh-hall removes six parts (and their connectors) and sets the Hall map: the configured PIM
+    is byte for byte the import of the model drawn without them, with that map."""
+    by_hand = tmp_path / "model.xmi"  # the same file name: the PIM names its source
+    by_hand.write_text(_make().model_text(frozenset({"camera", "markerDetector", "markerPlanner", "objectDetector",
+                                                     "kinematics", "arm"}), map_file="maps/hall.yaml"),
+                       encoding="utf-8")
+    configured = import_model(CAMP / "model.xmi", bind=False, features=CONFIGS / "map-vfh-hall.xml")
+    assert "markerDetector" not in configured and "maps/hall.yaml" in configured
+    assert configured == import_model(by_hand, bind=False)
+
+
+@pytest.mark.parametrize("target", targets())
+@pytest.mark.parametrize("config", VALID)
+def test_each_variant_matches_its_goldens(config: str, target: str, file_regression) -> None:
+    done = generate(CAMP / "model.xmi", CAMP / "out", target, write=False, features=CONFIGS / f"{config}.xml")
+    assert list(done.stages)[:3] == ["import", "configure", "bind"]
+    expected = CAMP / "expected" / config
+    files = etree.fromstring(done.stages["text"].encode("utf-8"))
+    nodes = list(files.iter(f"{FS}file"))
+    listing = "".join(f"{node.get('mode', 'generated')}\t{node.get('path')}\n" for node in nodes)
+    _check_all(file_regression, [(done.stages["configure"], expected / "configure.xml"),
+                                 (done.stages["bind"], expected / "bind.xml"),
+                                 (listing, expected / target / "files.tsv")]
+               + [(node.text or "", expected / target / "files" / node.get("path")) for node in nodes])
+
+
+def test_the_variants_differ_as_their_features_say() -> None:
+    pims = {c: import_model(CAMP / "model.xmi", features=CONFIGS / f"{c}.xml") for c in VALID}
+    # DWA swaps the avoider's realizing class; VFH keeps the template's
+    assert 'realizing-class="DwaAvoider"' in pims["marker-dwa-pick"] or "DwaAvoider" in pims["marker-dwa-pick"]
+    avoider = 'name="ObstacleAvoider"'
+    assert avoider in pims["map-vfh-hall"]
+    # the marker variant has the camera and the marker parts, not the map parts
+    assert 'name="markerDetector"' in pims["marker-dwa-pick"] and 'name="mapPlanner"' not in pims["marker-dwa-pick"]
+    # MarkerBased sets a buffer of 4 on the camera-to-marker connection
+    assert 'name="size" value="4"' in import_model(CAMP / "model.xmi", bind=False,
+                                                   features=CONFIGS / "marker-dwa-pick.xml")
+    # Offboard moves the deployment to the off-board PC
+    assert "offboardPC" in pims["map-lab-offboard"]
+
+
+@pytest.mark.parametrize("config", [*VALID, "invalid-pick-blind"])
+def test_check_prints_the_golden_diagnostics(config: str, capsys: pytest.CaptureFixture[str],
+                                              monkeypatch: pytest.MonkeyPatch, file_regression) -> None:
+    monkeypatch.chdir(ROOT)
+    code, out, err = _cli(capsys, ["check", "fixtures/variability/researchcamp/model.xmi", "--features",
+                                   f"fixtures/variability/researchcamp/variability/configs/{config}.xml"])
+    assert "Traceback" not in err
+    file_regression.check(f"exit {code}\n{err}", fullpath=CAMP / "expected" / config / "check.txt", binary=False)
+
+
+def test_an_invalid_configuration_is_refused_before_anything_is_written(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(ROOT)
+    config = "fixtures/variability/researchcamp/variability/configs/invalid-pick-blind.xml"
+    code, _, err = _cli(capsys, ["generate", "fixtures/variability/researchcamp/model.xmi", "-o",
+                                 str(tmp_path / "out"), "--features", config])
+    assert code == 1
+    assert f"{config}:2:1: error: [VAR017] the selection breaks the constraint " \
+           "'ObjectManipulation implies ObjectPerception'" in err
+    assert not (tmp_path / "out").exists()
+
+
+def test_the_template_alone_is_no_valid_system(capsys: pytest.CaptureFixture[str]) -> None:
+    """Both planners feed the avoider in the template: only a configuration makes it one system."""
+    code, _, err = _cli(capsys, ["check", str(CAMP / "model.xmi")])
+    assert code == 1 and "[BND008]" in err
+
+
+def test_all_configurations_generates_each_variant_and_says_which_fail(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    out = tmp_path / "out"
+    code, stdout, _ = _cli(capsys, ["generate", str(CAMP / "model.xmi"), "-o", str(out), "--all-configurations",
+                                    str(CONFIGS), "-j", "2"])
+    assert code == 1  # one variant is invalid
+    rows = {line.split()[0]: line.split()[1:] for line in stdout.splitlines()[1:-1]}
+    assert rows["invalid-pick-blind"] == ["failed", "0", "VAR017"]
+    for config in VALID:
+        assert rows[config][0] == "ok" and rows[config][2] == "-"
+        assert (out / config / "CMakeLists.txt").is_file()
+    assert not (out / "invalid-pick-blind").exists()
+    # the inputs' hash: nothing changed, nothing regenerated; a configuration changed, that variant again
+    code, stdout, _ = _cli(capsys, ["generate", str(CAMP / "model.xmi"), "-o", str(out), "--all-configurations",
+                                    str(CONFIGS), "-j", "1"])
+    assert "3 unchanged" in stdout.splitlines()[-1]
+    configs = tmp_path / "camp"
+    shutil.copytree(CAMP / "variability", configs)
+    (configs / "configs" / "map-vfh-hall.xml").write_text(
+        (CONFIGS / "map-vfh-hall.xml").read_text(encoding="utf-8").replace(
+            'manual="selected" name="Hall"', 'manual="unselected" name="Hall"').replace(
+            'manual="unselected" name="Lab"', 'manual="selected" name="Lab"'), encoding="utf-8")
+    code, stdout, _ = _cli(capsys, ["generate", str(CAMP / "model.xmi"), "-o", str(out), "--all-configurations",
+                                    str(configs / "configs"), "-j", "1"])
+    rows = {line.split()[0]: line.split()[1] for line in stdout.splitlines()[1:-1]}
+    assert rows["map-vfh-hall"] == "ok" and rows["map-lab-offboard"] == "skipped", stdout
