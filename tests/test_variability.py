@@ -57,6 +57,12 @@ def test_the_fixture_is_what_make_py_writes() -> None:
         assert path.read_text(encoding="utf-8") == text, path
 
 
+def test_the_template_imports_to_its_golden(file_regression) -> None:
+    """The template's PIM before configuration: the input of the configure step's engine test."""
+    file_regression.check(import_model(CAMP / "model.xmi", bind=False), fullpath=CAMP / "expected" / "import.xml",
+                          binary=False)
+
+
 def test_a_configured_model_is_the_variant_drawn_by_hand(tmp_path: Path) -> None:
     """map-vfh-hall removes six parts (and their connectors) and sets the Hall map: the configured PIM
     is byte for byte the import of the model drawn without them, with that map."""
