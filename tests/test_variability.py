@@ -159,3 +159,55 @@ def test_all_configurations_generates_each_variant_and_says_which_fail(
                                     str(configs / "configs"), "-j", "1"])
     rows = {line.split()[0]: line.split()[1] for line in stdout.splitlines()[1:-1]}
     assert rows["map-vfh-hall"] == "ok" and rows["map-lab-offboard"] == "skipped", stdout
+
+
+# Broken product lines: (file under variability/, text, its replacement), the configuration to check.
+# Each is the fixture with that one edit; the diagnostics are goldens in fixtures/variability/researchcamp/broken/.
+_P = "researchcamp::components::ResearchCamp::"
+BROKEN = {
+    "config-unknown-feature": ("configs/map-vfh-hall.xml", 'name="Offboard"/>', 'name="Offboard"/>\n'
+                               '  <feature automatic="undefined" manual="selected" name="Teleoperation"/>', "map-vfh-hall"),
+    "config-two-alternatives": ("configs/map-vfh-hall.xml", 'manual="unselected" name="DWA"', 'manual="selected" name="DWA"',
+                                "map-vfh-hall"),
+    "config-no-alternative": ("configs/map-vfh-hall.xml", 'manual="selected" name="VFH"', 'manual="unselected" name="VFH"',
+                              "map-vfh-hall"),
+    "config-child-without-parent": ("configs/marker-dwa-pick.xml", 'manual="unselected" name="Lab"',
+                                    'manual="selected" name="Lab"', "marker-dwa-pick"),
+    "config-breaks-schema": ("configs/map-vfh-hall.xml", 'manual="selected" name="VFH"', 'manual="yes" name="VFH"',
+                             "map-vfh-hall"),
+    "model-rule-unknown-feature": ("model.xml", "<var>ObjectPerception</var>", "<var>Perception</var>", "map-vfh-hall"),
+    "model-empty-group": ("model.xml", '<alt abstract="true" name="Environment">\n          <feature name="Hall"/>\n'
+                          '          <feature name="Lab"/>\n        </alt>',
+                          '<alt abstract="true" name="Environment"/>\n        <feature name="Hall"/>\n'
+                          '        <feature name="Lab"/>', "map-vfh-hall"),
+    "presence-unknown-feature": ("resolution.xml", 'when="ObjectPerception"', 'when="Perception"', "map-vfh-hall"),
+    "presence-unknown-element": ("resolution.xml", f'element="{_P}arm"', f'element="{_P}gripper"', "map-vfh-hall"),
+    "action-wrong-kind": ("resolution.xml", 'component="researchcamp::components::ObstacleAvoider"',
+                          f'component="{_P}avoider"', "marker-dwa-pick"),
+    "actions-conflict": ("resolution.xml", '<feature name="Offboard">',
+                         '<feature name="ObjectPerception">\n    <set attribute="researchcamp::atomic::AmclLocalizer::mapFile" '
+                         'value="maps/objects.yaml"/>\n  </feature>\n  <feature name="Offboard">', "map-lab-offboard"),
+    "no-feature-model": ("model.xml", None, None, "map-vfh-hall"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(BROKEN))
+def test_a_broken_product_line_gets_the_golden_diagnostics(case: str, tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                                                            monkeypatch: pytest.MonkeyPatch, file_regression) -> None:
+    name, old, new, config = BROKEN[case]
+    shutil.copy(CAMP / "model.xmi", tmp_path / "model.xmi")
+    shutil.copytree(CAMP / "variability", tmp_path / "variability")
+    edited = tmp_path / "variability" / name
+    if old is None:
+        edited.unlink()
+    else:
+        text = edited.read_text(encoding="utf-8")
+        assert text.count(old) == 1, old
+        edited.write_text(text.replace(old, new), encoding="utf-8")
+    monkeypatch.chdir(tmp_path)
+    code, out, err = _cli(capsys, ["check", "model.xmi", "--features", f"variability/configs/{config}.xml"])
+    assert code in (1, 2) and "Traceback" not in err + out and "INTERNAL" not in err
+    file_regression.check(f"exit {code}\n{err}", fullpath=CAMP / "broken" / f"{case}.txt", binary=False)
+    # generate refuses it too, and writes nothing
+    code, _, _ = _cli(capsys, ["generate", "model.xmi", "-o", "out", "--features", f"variability/configs/{config}.xml"])
+    assert code in (1, 2) and not (tmp_path / "out").exists()

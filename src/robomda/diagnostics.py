@@ -389,7 +389,7 @@ def _by_path(path: Path) -> dict[str, _Where]:
         parent = el.getparent()
         same = [s for s in (parent if parent is not None else [el]) if isinstance(s.tag, str) and s.tag == el.tag]
         steps[el] = (steps[parent] if parent is not None else "@") + f"/{etree.QName(el).localname}.{same.index(el) + 1}"
-        name = el.get("name") or el.get("element") or (el.text or "").strip()
+        name = el.get("name") or next(iter(el.attrib.values()), "") or (el.text or "").strip()
         index[steps[el]] = _Where(el.sourceline or 0, 1, etree.QName(el).localname, name)
     return index
 

@@ -26,7 +26,8 @@
            feature is not selected; VAR015 an or-group with no child
            selected; VAR016 an alternative group without exactly one child
            selected; VAR017 a cross-tree constraint the selection breaks;
-           VAR018 a group (and / or / alt) with no child feature; VAR019 a
+           VAR018 a group (and / or / alt) with no child feature (its
+           selection is then not checked: VAR018 says it); VAR019 a
            constraint names a feature the model lacks. The configuration's
            errors are located in the configuration file, the model's in the
            feature model (docs/errors.md).
@@ -153,12 +154,12 @@
             'feature ''' || @name || ''' is mandatory under selected ''' || $node/@name || ''' but not selected' }"/>
       </xsl:for-each>
     </xsl:if>
-    <xsl:if test="local-name($node) eq 'or' and empty($chosen)">
+    <xsl:if test="local-name($node) eq 'or' and exists($children) and empty($chosen)">
       <xsl:sequence select="map { 'code': 'VAR015', 'id': fp:entry($root, $node/@name), 'message':
           'or-group ''' || $node/@name || ''' is selected but none of its features is (one or more of: '
           || string-join($children/@name, ', ') || ')' }"/>
     </xsl:if>
-    <xsl:if test="local-name($node) eq 'alt' and count($chosen) ne 1">
+    <xsl:if test="local-name($node) eq 'alt' and exists($children) and count($chosen) ne 1">
       <xsl:sequence select="map { 'code': 'VAR016', 'id': fp:entry($root, $node/@name), 'message':
           'alternative group ''' || $node/@name || ''' needs exactly one of its features (' || string-join($children/@name, ', ')
           || ') selected, the configuration selects ' || (if (empty($chosen)) then 'none'
