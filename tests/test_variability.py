@@ -211,3 +211,25 @@ def test_a_broken_product_line_gets_the_golden_diagnostics(case: str, tmp_path: 
     # generate refuses it too, and writes nothing
     code, _, _ = _cli(capsys, ["generate", "model.xmi", "-o", "out", "--features", f"variability/configs/{config}.xml"])
     assert code in (1, 2) and not (tmp_path / "out").exists()
+
+
+ORO_INSTALL = Path(__import__("os").environ.get("OROCOS_INSTALL", Path.home() / "orocos" / "install"))
+
+
+@pytest.mark.orocos_toolchain
+@pytest.mark.skipif(not (ORO_INSTALL / "bin" / "deployer").exists(),
+                    reason=f"no Orocos toolchain in {ORO_INSTALL}: build it with toolchains/orocos/build.sh")
+@pytest.mark.parametrize("config", ["map-vfh-hall", "marker-dwa-pick"])
+def test_a_configured_orocos_package_builds_and_deploys(config: str, tmp_path: Path) -> None:
+    """The variant's package builds against the fixture's atomic code and deploys (every component
+    Running, oro_deploy_verify of toolchains/orocos/env.sh)."""
+    import subprocess
+
+    out = tmp_path / "researchcamp"  # named like the package (see tests/test_orocos_deploy.py)
+    generate(CAMP / "model.xmi", out, "orocos", features=CONFIGS / f"{config}.xml")
+    env_sh = ROOT / "toolchains" / "orocos" / "env.sh"
+    script = (f"source {env_sh} >/dev/null && oro_build_pkg {out} && oro_add_prefix {out}/install && "
+              f"oro_verdict oro_deploy_verify {out}/deploy/researchcamp.xml 2")
+    run = subprocess.run(["bash", "-c", script], cwd=tmp_path, capture_output=True, text=True, timeout=1800,
+                         env=dict(__import__("os").environ, OROCOS_INSTALL=str(ORO_INSTALL)))
+    assert run.returncode == 0 and "oro_verdict: OK" in run.stdout, run.stdout[-4000:] + run.stderr[-2000:]
