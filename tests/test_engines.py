@@ -209,20 +209,22 @@ def test_the_import_reads_real_export_shapes_alike(engine: Cli, workdir: Path) -
         assert out.read_text(encoding="utf-8") == import_model(model), name
 
 
-CAMP = ROOT / "fixtures" / "variability" / "researchcamp"
-CONFIGURATIONS = ["map-lab-offboard", "map-vfh-hall", "marker-dwa-pick"]
+# the product lines (fixtures/variability/<line>) and their valid configurations
+CONFIGURATIONS = [("researchcamp", c) for c in ("map-lab-offboard", "map-vfh-hall", "marker-dwa-pick")] + [
+    ("calligraphy", c) for c in ("direct-buffered", "joint-compliant-soft", "joint-firm")]
 
 
 @pytest.mark.parametrize("engine", ENGINES)
-@pytest.mark.parametrize("config", CONFIGURATIONS)
-def test_configure_stage_writes_the_same_bytes(engine: Cli, config: str, workdir: Path) -> None:
+@pytest.mark.parametrize(("line", "config"), CONFIGURATIONS)
+def test_configure_stage_writes_the_same_bytes(engine: Cli, line: str, config: str, workdir: Path) -> None:
     """The configure step (xslt/m2m/configure.xsl) on the template's golden PIM writes the golden configured
     PIM of each configuration (tests/test_variability.py)."""
     step = next(s for s in pipeline.load(ROOT / "pipelines" / "import.xml").steps if s.name == "configure")
-    variability = CAMP / "variability"
+    camp = ROOT / "fixtures" / "variability" / line
+    variability = camp / "variability"
     params = {"features": (variability / "configs" / f"{config}.xml").as_uri(),
               "feature-model": (variability / "model.xml").as_uri(),
               "resolution": (variability / "resolution.xml").as_uri()}
-    out = workdir / f"{engine.name}-researchcamp-{config}-configure.xml"
-    engine.run(step.stylesheet, CAMP / "expected" / "import.xml", out, params, workdir)
-    assert out.read_bytes() == (CAMP / "expected" / config / "configure.xml").read_bytes()
+    out = workdir / f"{engine.name}-{line}-{config}-configure.xml"
+    engine.run(step.stylesheet, camp / "expected" / "import.xml", out, params, workdir)
+    assert out.read_bytes() == (camp / "expected" / config / "configure.xml").read_bytes()

@@ -25,10 +25,15 @@ CAMP = ROOT / "fixtures" / "variability" / "researchcamp"
 CONFIGS = CAMP / "variability" / "configs"
 VALID = ["map-lab-offboard", "map-vfh-hall", "marker-dwa-pick"]
 FS = "{urn:robomda:fileset:1}"
+# every product line and its configurations, valid and invalid
+LINES = {"researchcamp": (VALID, ["invalid-pick-blind"]),
+         "calligraphy": (["direct-buffered", "joint-compliant-soft", "joint-firm"], ["invalid-compliant-firm"])}
+VARIANTS = [(line, config) for line, (valid, _) in LINES.items() for config in valid]
+CHECKED = [(line, config) for line, (valid, invalid) in LINES.items() for config in valid + invalid]
 
 
-def _make():
-    spec = importlib.util.spec_from_file_location("researchcamp_make", CAMP / "make.py")
+def _make(line: str = "researchcamp"):
+    spec = importlib.util.spec_from_file_location(f"{line}_make", ROOT / "fixtures" / "variability" / line / "make.py")
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
@@ -52,14 +57,17 @@ def _check_all(file_regression, items: list[tuple[str, Path]]) -> None:
         pytest.fail("\n".join(failures))
 
 
-def test_the_fixture_is_what_make_py_writes() -> None:
-    for path, text in _make().texts().items():
+@pytest.mark.parametrize("line", sorted(LINES))
+def test_the_fixture_is_what_make_py_writes(line: str) -> None:
+    for path, text in _make(line).texts().items():
         assert path.read_text(encoding="utf-8") == text, path
 
 
-def test_the_template_imports_to_its_golden(file_regression) -> None:
+@pytest.mark.parametrize("line", sorted(LINES))
+def test_the_template_imports_to_its_golden(line: str, file_regression) -> None:
     """The template's PIM before configuration: the input of the configure step's engine test."""
-    file_regression.check(import_model(CAMP / "model.xmi", bind=False), fullpath=CAMP / "expected" / "import.xml",
+    folder = ROOT / "fixtures" / "variability" / line
+    file_regression.check(import_model(folder / "model.xmi", bind=False), fullpath=folder / "expected" / "import.xml",
                           binary=False)
 
 
@@ -76,11 +84,13 @@ def test_a_configured_model_is_the_variant_drawn_by_hand(tmp_path: Path) -> None
 
 
 @pytest.mark.parametrize("target", targets())
-@pytest.mark.parametrize("config", VALID)
-def test_each_variant_matches_its_goldens(config: str, target: str, file_regression) -> None:
-    done = generate(CAMP / "model.xmi", CAMP / "out", target, write=False, features=CONFIGS / f"{config}.xml")
+@pytest.mark.parametrize(("line", "config"), VARIANTS)
+def test_each_variant_matches_its_goldens(line: str, config: str, target: str, file_regression) -> None:
+    folder = ROOT / "fixtures" / "variability" / line
+    done = generate(folder / "model.xmi", folder / "out", target, write=False,
+                    features=folder / "variability" / "configs" / f"{config}.xml")
     assert list(done.stages)[:3] == ["import", "configure", "bind"]
-    expected = CAMP / "expected" / config
+    expected = folder / "expected" / config
     files = etree.fromstring(done.stages["text"].encode("utf-8"))
     nodes = list(files.iter(f"{FS}file"))
     listing = "".join(f"{node.get('mode', 'generated')}\t{node.get('path')}\n" for node in nodes)
@@ -105,14 +115,33 @@ def test_the_variants_differ_as_their_features_say() -> None:
     assert "offboardPC" in pims["map-lab-offboard"]
 
 
-@pytest.mark.parametrize("config", [*VALID, "invalid-pick-blind"])
-def test_check_prints_the_golden_diagnostics(config: str, capsys: pytest.CaptureFixture[str],
+@pytest.mark.parametrize(("line", "config"), CHECKED)
+def test_check_prints_the_golden_diagnostics(line: str, config: str, capsys: pytest.CaptureFixture[str],
                                               monkeypatch: pytest.MonkeyPatch, file_regression) -> None:
     monkeypatch.chdir(ROOT)
-    code, out, err = _cli(capsys, ["check", "fixtures/variability/researchcamp/model.xmi", "--features",
-                                   f"fixtures/variability/researchcamp/variability/configs/{config}.xml"])
+    code, out, err = _cli(capsys, ["check", f"fixtures/variability/{line}/model.xmi", "--features",
+                                   f"fixtures/variability/{line}/variability/configs/{config}.xml"])
     assert "Traceback" not in err
-    file_regression.check(f"exit {code}\n{err}", fullpath=CAMP / "expected" / config / "check.txt", binary=False)
+    assert code == (1 if config.startswith("invalid") else 0)
+    file_regression.check(f"exit {code}\n{err}", fullpath=ROOT / "fixtures" / "variability" / line / "expected" / config
+                          / "check.txt", binary=False)
+
+
+def test_the_calligraphy_variants_differ_as_their_features_say(capsys: pytest.CaptureFixture[str]) -> None:
+    """Seed 003's follower driven three ways: the application's gain for the follower (a part's value),
+    the joint-space approach, the compliance connection and its rule, a buffered strokes connection."""
+    folder = ROOT / "fixtures" / "variability" / "calligraphy"
+    configs = folder / "variability" / "configs"
+    soft = import_model(folder / "model.xmi", bind=False, features=configs / "joint-compliant-soft.xml")
+    assert 'attribute="_atfAtfV1" value="8.0"' in soft and 'name="jsGen"' in soft
+    direct = import_model(folder / "model.xmi", bind=False, features=configs / "direct-buffered.xml")
+    assert 'name="jsGen"' not in direct and 'name="approach"' not in direct and 'name="size" value="16"' in direct
+    # without the compliance connection the planner's compliance input is unconnected: the Orocos rule
+    # says so, and the configure step said which feature removed the connection
+    code, _, err = _cli(capsys, ["check", str(folder / "model.xmi"), "--features", str(configs / "joint-firm.xml")])
+    assert code == 0 and "[ORO010]" in err
+    assert "[VAR032] connector 'compliance' is removed in configuration 'joint-firm.xml' (feature Compliance not " \
+           "selected)" in err
 
 
 def test_an_invalid_configuration_is_refused_before_anything_is_written(

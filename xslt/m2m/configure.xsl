@@ -125,7 +125,12 @@
   <!-- the selected features' actions, by the id of the element they act on -->
   <xsl:variable name="acting" as="element()*" select="$res/r:resolution/r:feature[@name = $selected]/*"/>
   <xsl:variable name="realize" as="map(*)" select="fp:by-target($acting/self::r:realize, 'component')"/>
-  <xsl:variable name="set" as="map(*)" select="fp:by-target($acting/self::r:set, 'attribute')"/>
+  <xsl:variable name="set" as="map(*)" select="fp:by-target($acting/self::r:set[empty(@part)], 'attribute')"/>
+  <!-- "part id|attribute id" -> the set action that gives that part's value of the attribute -->
+  <xsl:variable name="set-value" as="map(*)" select="map:merge(
+      for $a in $acting/self::r:set[@part], $p in key('fp:qn', string($a/@part), $pim)[1],
+          $t in key('fp:qn', string($a/@attribute), $pim)[1]
+      return map:entry($p/@id || '|' || $t/@id, $a), map { 'duplicates': 'use-first' })"/>
   <xsl:variable name="policy" as="map(*)" select="fp:by-target($acting/self::r:policy, 'connector')"/>
   <xsl:variable name="deploy" as="map(*)" select="fp:by-target($acting/self::r:deploy, 'element')"/>
   <!-- node id -> the deployments that move there -->
@@ -210,6 +215,32 @@
     </xsl:copy>
   </xsl:template>
 
+  <!-- a part whose value of an attribute a selected feature sets: that value replaced, or added last -->
+  <xsl:template match="pim:part[some $k in map:keys($set-value) satisfies starts-with($k, @id || '|')]"
+                mode="mp:configure" as="element(pim:part)">
+    <xsl:variable name="part" as="element(pim:part)" select="."/>
+    <xsl:copy>
+      <xsl:copy-of select="@*"/>
+      <xsl:for-each select="node()">
+        <xsl:variable name="action" as="element(r:set)?" select="self::pim:value/$set-value($part/@id || '|' || @attribute)"/>
+        <xsl:choose>
+          <xsl:when test="exists($action)">
+            <pim:value id="{@id}" attribute="{@attribute}" value="{$action/@value}"/>
+          </xsl:when>
+          <xsl:otherwise>
+            <xsl:apply-templates select="." mode="mp:configure"/>
+          </xsl:otherwise>
+        </xsl:choose>
+      </xsl:for-each>
+      <xsl:for-each select="sort(map:keys($set-value)[starts-with(., $part/@id || '|')])">
+        <xsl:variable name="attribute" as="xs:string" select="substring-after(., '|')"/>
+        <xsl:if test="empty($part/pim:value[@attribute eq $attribute])">
+          <pim:value id="{$part/@id}-{$attribute}" attribute="{$attribute}" value="{$set-value(.)/@value}"/>
+        </xsl:if>
+      </xsl:for-each>
+    </xsl:copy>
+  </xsl:template>
+
   <xsl:template match="pim:connector[map:contains($policy, string(@id))]" mode="mp:configure" as="element(pim:connector)">
     <xsl:variable name="action" as="element(r:policy)" select="$policy(string(@id))"/>
     <xsl:variable name="old" as="element(pim:stereotype)?" select="pim:stereotype[@name eq 'ConnectionPolicy']"/>
@@ -279,7 +310,7 @@
             'the resolution names feature ''' || normalize-space() || ''', which the feature model does not have' }"/>
       </xsl:if>
     </xsl:for-each>
-    <xsl:for-each select="$res/r:resolution//(r:present/@element, r:realize/(@component, @class), r:set/@attribute,
+    <xsl:for-each select="$res/r:resolution//(r:present/@element, r:realize/(@component, @class), r:set/(@attribute, @part),
                                                r:policy/@connector, r:deploy/(@element, @on))">
       <xsl:variable name="target" as="element()?" select="key('fp:qn', string(.), $pim)[1]"/>
       <xsl:variable name="kinds" as="xs:string*" select="fp:kinds-for(.)"/>
@@ -299,7 +330,7 @@
         </xsl:when>
       </xsl:choose>
     </xsl:for-each>
-    <xsl:for-each-group select="$acting" group-by="local-name() || '|' || string((@component, @attribute, @connector, @element)[1])">
+    <xsl:for-each-group select="$acting" group-by="local-name() || '|' || string(@part) || '|' || string((@component, @attribute, @connector, @element)[1])">
       <xsl:if test="count(current-group()) gt 1">
         <xsl:sequence select="map { 'code': 'VAR024', 'id': f:where(current-group()[2]), 'message':
             'features ' || string-join(current-group()/../@name, ' and ') || ' both ' || local-name() || ' '''
@@ -313,7 +344,7 @@
     <xsl:param name="ref" as="attribute()"/>
     <xsl:variable name="at" as="xs:string" select="local-name($ref/..) || '/@' || local-name($ref)"/>
     <xsl:sequence select="map {
-        'realize/@component': 'component', 'realize/@class': 'class', 'set/@attribute': 'attribute',
+        'realize/@component': 'component', 'realize/@class': 'class', 'set/@attribute': 'attribute', 'set/@part': 'part',
         'policy/@connector': 'connector', 'deploy/@element': ('artifact', 'part', 'component'), 'deploy/@on': 'node'
       }($at)"/>
   </xsl:function>
