@@ -36,7 +36,8 @@
            or dependency with an end at a removed element, a deployment or
            manifestation of one), naming the element and condition that
            removed it.
-  Warning: VAR032 a connector removed with a part leaves a port of a part
+  Warning: VAR032 a connector removed (by its condition, or with a part)
+           leaves a port of a part
            that stays without any connection: names the feature condition
            that removed it, so a rule failing later on the configured model
            (an unconnected input) can be traced to the feature.
