@@ -262,3 +262,11 @@ def test_a_configured_orocos_package_builds_and_deploys(config: str, tmp_path: P
     run = subprocess.run(["bash", "-c", script], cwd=tmp_path, capture_output=True, text=True, timeout=1800,
                          env=dict(__import__("os").environ, OROCOS_INSTALL=str(ORO_INSTALL)))
     assert run.returncode == 0 and "oro_verdict: OK" in run.stdout, run.stdout[-4000:] + run.stderr[-2000:]
+
+
+def test_import_shows_the_configured_pim(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, _ = _cli(capsys, ["import", str(CAMP / "model.xmi"), "--no-bind", "-o", str(tmp_path / "pim.xml"),
+                                 "--features", str(CONFIGS / "map-vfh-hall.xml")])
+    assert code == 0 and "PIM written" in out
+    assert (tmp_path / "pim.xml").read_text(encoding="utf-8") == \
+        (CAMP / "expected" / "map-vfh-hall" / "configure.xml").read_text(encoding="utf-8")
