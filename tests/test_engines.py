@@ -228,3 +228,18 @@ def test_configure_stage_writes_the_same_bytes(engine: Cli, line: str, config: s
     out = workdir / f"{engine.name}-{line}-{config}-configure.xml"
     engine.run(step.stylesheet, camp / "expected" / "import.xml", out, params, workdir)
     assert out.read_bytes() == (camp / "expected" / config / "configure.xml").read_bytes()
+
+
+@pytest.mark.parametrize("engine", ENGINES)
+def test_pure_xslt_runner_configures_a_product_line(engine: Cli, workdir: Path) -> None:
+    """run-pipeline.xsl with a configuration runs the configure step (step/@if) and writes the golden
+    bound PIM of the variant."""
+    camp = ROOT / "fixtures" / "variability" / "researchcamp"
+    variability = camp / "variability"
+    params = {"model": (camp / "model.xmi").as_uri(),
+              "features": (variability / "configs" / "map-vfh-hall.xml").as_uri(),
+              "feature-model": (variability / "model.xml").as_uri(),
+              "resolution": (variability / "resolution.xml").as_uri()}
+    bound = workdir / f"{engine.name}-researchcamp-runner-bind.xml"
+    engine.run(ROOT / "xslt/util/run-pipeline.xsl", ROOT / "pipelines/import.xml", bound, params, workdir)
+    assert bound.read_bytes() == (camp / "expected" / "map-vfh-hall" / "bind.xml").read_bytes()
