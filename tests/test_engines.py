@@ -48,6 +48,8 @@ def _stages() -> dict[str, tuple[Path, str, str | None, dict[str, str], str]]:
             continue
         previous = "model.xmi"
         for step in pipeline.load(manifest).steps:
+            if step.when:  # a step for a product line's configuration: test_configure_stage_writes_the_same_bytes
+                continue
             shared = step.name in ("import", "bind")
             golden = (f"expected/{step.name}.xml" if shared
                       else f"expected/{target}/{step.name}.xml" if step.name != "text" else None)
@@ -205,3 +207,39 @@ def test_the_import_reads_real_export_shapes_alike(engine: Cli, workdir: Path) -
         engine.run(ROOT / "xslt/util/run-pipeline.xsl", ROOT / "pipelines/import.xml", out,
                    {"model": model.resolve().as_uri()}, workdir)
         assert out.read_text(encoding="utf-8") == import_model(model), name
+
+
+# the product lines (fixtures/variability/<line>) and their valid configurations
+CONFIGURATIONS = [("researchcamp", c) for c in ("map-lab-offboard", "map-vfh-hall", "marker-dwa-pick")] + [
+    ("calligraphy", c) for c in ("direct-buffered", "joint-compliant-soft", "joint-firm")]
+
+
+@pytest.mark.parametrize("engine", ENGINES)
+@pytest.mark.parametrize(("line", "config"), CONFIGURATIONS)
+def test_configure_stage_writes_the_same_bytes(engine: Cli, line: str, config: str, workdir: Path) -> None:
+    """The configure step (xslt/m2m/configure.xsl) on the template's golden PIM writes the golden configured
+    PIM of each configuration (tests/test_variability.py)."""
+    step = next(s for s in pipeline.load(ROOT / "pipelines" / "import.xml").steps if s.name == "configure")
+    camp = ROOT / "fixtures" / "variability" / line
+    variability = camp / "variability"
+    params = {"features": (variability / "configs" / f"{config}.xml").as_uri(),
+              "feature-model": (variability / "model.xml").as_uri(),
+              "resolution": (variability / "resolution.xml").as_uri()}
+    out = workdir / f"{engine.name}-{line}-{config}-configure.xml"
+    engine.run(step.stylesheet, camp / "expected" / "import.xml", out, params, workdir)
+    assert out.read_bytes() == (camp / "expected" / config / "configure.xml").read_bytes()
+
+
+@pytest.mark.parametrize("engine", ENGINES)
+def test_pure_xslt_runner_configures_a_product_line(engine: Cli, workdir: Path) -> None:
+    """run-pipeline.xsl with a configuration runs the configure step (step/@if) and writes the golden
+    bound PIM of the variant."""
+    camp = ROOT / "fixtures" / "variability" / "researchcamp"
+    variability = camp / "variability"
+    params = {"model": (camp / "model.xmi").as_uri(),
+              "features": (variability / "configs" / "map-vfh-hall.xml").as_uri(),
+              "feature-model": (variability / "model.xml").as_uri(),
+              "resolution": (variability / "resolution.xml").as_uri()}
+    bound = workdir / f"{engine.name}-researchcamp-runner-bind.xml"
+    engine.run(ROOT / "xslt/util/run-pipeline.xsl", ROOT / "pipelines/import.xml", bound, params, workdir)
+    assert bound.read_bytes() == (camp / "expected" / "map-vfh-hall" / "bind.xml").read_bytes()

@@ -18,6 +18,7 @@ from robomda.engine import shared
 from robomda.output import Drift, WriteReport, compare_fileset, recorded_paths, user_findings, write_fileset
 from robomda.resources import available_targets, default_target, pipeline_path, target_of_middleware
 from robomda.validate import stream
+from robomda.variability import feature_context
 
 __all__ = ["generate", "diagram", "import_model", "check", "targets", "default_targets", "Generated", "Checked",
            "PackageInfo"]
@@ -135,7 +136,8 @@ class PackageInfo:
 
 
 def _context(model: Path, out: Path | None, package_name: str, type_map: Path | None = None,
-             package: PackageInfo | None = None, model_path: Sequence[Path] = ()) -> dict[str, str]:
+             package: PackageInfo | None = None, model_path: Sequence[Path] = (),
+             features: Path | str | None = None) -> dict[str, str]:
     model_dir = model.resolve().parent
     rel = os.path.relpath(model_dir, out.resolve()) if out is not None else "."
     return {
@@ -145,6 +147,7 @@ def _context(model: Path, out: Path | None, package_name: str, type_map: Path | 
         "type-map": type_map.resolve().as_uri() if type_map is not None else "",
         "model-path": " ".join(d.resolve().as_uri().rstrip("/") + "/" for d in _model_path(model_path)),
         **(package or PackageInfo()).context(),
+        **feature_context(features),
     }
 
 
@@ -158,17 +161,19 @@ def _model_path(model_path: Sequence[Path | str]) -> list[Path]:
 
 
 def import_model(model: Path | str, *, bind: bool = True, warnings: list[Diagnostic] | None = None,
-                 model_path: Sequence[Path | str] = ()) -> str:
+                 model_path: Sequence[Path | str] = (), features: Path | str | None = None) -> str:
     """The PIM of ``model`` as XML text (bound to its platform unless ``bind`` is false).
 
-    The warnings and notes of the run are appended to ``warnings`` when given.
+    The warnings and notes of the run are appended to ``warnings`` when given. With ``features`` (a
+    FeatureIDE configuration) the PIM is the template model configured for it (docs/variability.md).
     """
     model = Path(model)
     _check_readable(model)
     chain = pipelines.load(pipeline_path("import"))
     if not bind:
-        chain = pipelines.Pipeline(chain.name, chain.yields, chain.description, chain.steps[:1], chain.manifest)
-    result = _run(chain, model, _context(model, None, "", model_path=_model_path(model_path)))
+        chain = pipelines.Pipeline(chain.name, chain.yields, chain.description,
+                                   tuple(s for s in chain.steps if s.name != "bind"), chain.manifest)
+    result = _run(chain, model, _context(model, None, "", model_path=_model_path(model_path), features=features))
     if warnings is not None:
         warnings.extend(result.warnings)
     return result.output
@@ -191,7 +196,8 @@ def _type_map(type_map: Path | str | None) -> Path | None:
 
 
 def check(model: Path | str, target: str | None = None, *, package_name: str = "",
-          type_map: Path | str | None = None, model_path: Sequence[Path | str] = ()) -> Checked:
+          type_map: Path | str | None = None, model_path: Sequence[Path | str] = (),
+          features: Path | str | None = None) -> Checked:
     """Run the checks of ``model`` without generating anything.
 
     With a ``target``, everything ``generate`` would check for it: the import
@@ -207,7 +213,8 @@ def check(model: Path | str, target: str | None = None, *, package_name: str = "
     if target is not None:
         _usage_target(target)
     _check_readable(model)
-    context = _context(model, None, package_name, _type_map(type_map), model_path=_model_path(model_path))
+    context = _context(model, None, package_name, _type_map(type_map), model_path=_model_path(model_path),
+                       features=features)
     diagnostics: list[Diagnostic] = []
     rule_sets: list[str] = []
     exit_code = EXIT_OK
@@ -322,7 +329,8 @@ def _package_name_note(asked: str, psm: str | None, model: Path) -> list[Diagnos
 
 def generate(model: Path | str, out: Path | str | None, target: str | None = None, *, package_name: str = "",
              type_map: Path | str | None = None, write: bool = True, package: PackageInfo | None = None,
-             model_path: Sequence[Path | str] = (), diagrams: bool = False, check: bool = False) -> Generated:
+             model_path: Sequence[Path | str] = (), diagrams: bool = False, check: bool = False,
+             features: Path | str | None = None) -> Generated:
     """Run ``target``'s chain on ``model`` and write its files into ``out``.
 
     Without a ``target``: the one middleware the model deploys on (Orocos
@@ -341,7 +349,7 @@ def generate(model: Path | str, out: Path | str | None, target: str | None = Non
         _usage_target(target)
     _check_readable(model)
     out_path = Path(out) if out is not None else None
-    context = _context(model, out_path, package_name, _type_map(type_map), package, _model_path(model_path))
+    context = _context(model, out_path, package_name, _type_map(type_map), package, _model_path(model_path), features)
     bound = None
     if target is None:
         found, bound = _default_targets(model, context, settle=False)

@@ -62,7 +62,7 @@ from robomda.output import STATE_FILE as OUTPUT_STATE
 from robomda.output import atomic_write
 from robomda.resources import resource_root
 
-__all__ = ["ModelResult", "BatchReport", "find_models", "run_batch", "STATE"]
+__all__ = ["run_variants", "ModelResult", "BatchReport", "find_models", "run_batch", "STATE"]
 
 STATE = Path(".robomda") / "batch.json"
 _XMI_NS = re.compile(r"^https?://(schema|www)\.omg\.org/(spec/)?XMI(/[0-9.]+)?/?$", re.I)
@@ -176,7 +176,7 @@ def _outputs_intact(dest: Path) -> bool:
 
 def _generate_one(model: str, out: str, target: str | None, package_name: str, type_map: str | None,
                   package: tuple[str, str, str] = ("", "", ""), model_path: tuple[str, ...] = (),
-                  check: str = "", prefix: str = "") -> ModelResult:
+                  check: str = "", prefix: str = "", features: str | None = None) -> ModelResult:
     """Worker: one model (the process's engine is reused across calls); ``check``: "", "check" or "diff"
     (the diff's paths start with ``prefix``, the model's folder under the batch's output)."""
     from robomda.api import PackageInfo, generate
@@ -185,7 +185,7 @@ def _generate_one(model: str, out: str, target: str | None, package_name: str, t
     result = ModelResult(model=model, status="ok")
     try:
         done = generate(model, out, target, package_name=package_name, type_map=type_map,
-                        package=PackageInfo(*package), model_path=model_path, check=bool(check))
+                        package=PackageInfo(*package), model_path=model_path, check=bool(check), features=features)
         result.files_written = len(done.report.written) if done.report else 0
         result.diagnostics = format_all(done.warnings)
         if done.drift:
@@ -208,9 +208,12 @@ def _read_state(out: Path) -> dict[str, dict[str, str]]:
         return {}
 
 
-def _input_hash(model: Path, linked: list[Path]) -> str:
-    """A hash of the model file, of every model file it references and of the URDF files they name."""
+def _input_hash(model: Path, linked: list[Path], features: Sequence[Path] = ()) -> str:
+    """A hash of the model file, of every model file it references and of the URDF files they name (and
+    of a variant's configuration, feature model and resolution model: ``features``)."""
     digest = hashlib.sha256(model.read_bytes())
+    for path in features:
+        digest.update(b"\0features\0" + path.name.encode() + b"\0" + path.read_bytes())
     for path in linked:
         digest.update(b"\0" + path.as_posix().encode() + b"\0" + path.read_bytes())
     for path in robot_files(model, linked):
@@ -346,3 +349,45 @@ class ProgressBar:
         if done == total:
             self.stream.write("\n")
         self.stream.flush()
+
+
+def run_variants(model: Path, configs: Path, out: Path, target: str | None = None, *, jobs: int | None = None,
+                 force: bool = False, package: tuple[str, str, str] = ("", "", ""),
+                 progress: Callable[[int, int, ModelResult], None] | None = None) -> BatchReport:
+    """Generate ``model`` once per configuration in the folder ``configs`` (``generate --all-configurations``),
+    each into ``out``/<configuration name>, in parallel; a variant whose inputs (model, linked files,
+    configuration, feature model, resolution model) and toolchain did not change is skipped."""
+    from robomda.variability import configurations, product_line_files
+
+    started = time.perf_counter()
+    model, out = model.resolve(), out.resolve()
+    tools = toolchain_hash(target, "", None, package)
+    linked = linked_files(model)
+    state = _read_state(out)
+    results: list[ModelResult] = []
+    todo: list[tuple[Path, Path, str]] = []
+    for config in configurations(configs):
+        try:
+            digest = _input_hash(model, linked, list(product_line_files(config).values()))
+        except Exception:  # noqa: BLE001 - a missing feature model: the variant's run reports it
+            digest = ""
+        seen = state.get(config.stem, {})
+        if not force and digest and seen.get("input") == digest and seen.get("toolchain") == tools \
+                and _outputs_intact(out / config.stem):
+            results.append(ModelResult(model=config.stem, status="skipped", input_hash=digest))
+        else:
+            todo.append((config, out / config.stem, digest))
+    workers = max(1, min(jobs or os.cpu_count() or 1, len(todo) or 1))
+    with ProcessPoolExecutor(max_workers=workers, mp_context=get_context("spawn"), initializer=_worker_init) as pool:
+        futures = {pool.submit(_generate_one, str(model), str(dest), target, "", None, package, (), "", "",
+                               str(config)): (config, digest) for config, dest, digest in todo}
+        for future in as_completed(futures):
+            config, digest = futures[future]
+            result = future.result()
+            result.model, result.input_hash = config.stem, digest
+            results.append(result)
+            if progress:
+                progress(len(results), len(todo), result)
+    _write_state(out, target, tools, results)
+    results.sort(key=lambda r: r.model)
+    return BatchReport(results, time.perf_counter() - started)

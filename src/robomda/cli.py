@@ -110,6 +110,12 @@ def _parser() -> argparse.ArgumentParser:
     gen.add_argument("--diagrams", action="store_true",
                      help="also write the model's component and deployment diagrams into OUT/diagrams/ "
                           "(PlantUML .puml, and .svg where PlantUML is installed; docs/diagrams.md)")
+    gen.add_argument("--features", type=Path, metavar="CONFIG",
+                     help="a FeatureIDE configuration of the product line MODEL is the template of: generate "
+                          "that variant (docs/variability.md)")
+    gen.add_argument("--all-configurations", type=Path, metavar="DIR",
+                     help="generate one variant per configuration in DIR, each into OUT/<configuration name>, "
+                          "in parallel, with a summary of the variants and the rules they fail")
     gen.add_argument("--save-stages", type=Path, metavar="DIR",
                      help="also write every intermediate model (PIM, PSM, file set) into DIR")
     gen.add_argument("--format", default="text", choices=FORMATS,
@@ -130,6 +136,7 @@ def _parser() -> argparse.ArgumentParser:
     chk.add_argument("--format", default="text", choices=FORMATS,
                      help="text on stderr (default), or a json / sarif document on stdout")
     chk.add_argument("--package-name", default="", metavar="NAME", help="as for generate")
+    chk.add_argument("--features", type=Path, metavar="CONFIG", help="as for generate")
     chk.add_argument("--type-map", type=Path, metavar="FILE", help="as for generate")
     chk.add_argument("--model-path", type=Path, action="append", default=[], metavar="DIR", help="as for generate")
 
@@ -161,6 +168,8 @@ def _parser() -> argparse.ArgumentParser:
     imp.add_argument("-o", "--output", type=Path, required=True, metavar="OUT",
                      help="a file ending in .xml, or a folder that receives MODEL-NAME.pim.xml")
     imp.add_argument("--model-path", type=Path, action="append", default=[], metavar="DIR", help="as for generate")
+    imp.add_argument("--features", type=Path, metavar="CONFIG",
+                     help="show the template model configured for this FeatureIDE configuration")
     imp.add_argument("--no-bind", action="store_true",
                      help="stop after the import proper (skip the platform binding)")
     return parser
@@ -248,6 +257,30 @@ def _batch(args: argparse.Namespace) -> int:
     return report.exit_code
 
 
+def _variants(args: argparse.Namespace) -> int:
+    """generate --all-configurations: every variant, then which fail which rule."""
+    import re
+
+    from robomda.batch import ProgressBar, run_variants
+
+    report = run_variants(args.model, args.all_configurations, args.output, args.target, jobs=args.jobs,
+                          force=args.force, package=(args.package_version, args.maintainer, args.license),
+                          progress=ProgressBar())
+    for result in report.results:
+        for line in result.diagnostics:
+            print(line, file=sys.stderr)
+    print(f"{'configuration':<24} {'status':<8} {'files':>5}  rules failed", file=sys.stdout)
+    for r in report.results:
+        codes = sorted({m for line in r.diagnostics for m in re.findall(r" error: \[(\w+)\]", line)})
+        print(f"{r.model:<24} {r.status:<8} {r.files_written:>5}  {', '.join(codes) or '-'}", file=sys.stdout)
+    print(f"robomda: {len(report.results)} configurations: {report.count('ok')} ok, {report.count('skipped')} "
+          f"unchanged, {report.count('failed')} failed", file=sys.stdout)
+    if not report.results:
+        print(f"robomda: no configuration in {args.all_configurations}", file=sys.stderr)
+        return EXIT_INPUT
+    return report.exit_code
+
+
 def _batch_table(report: BatchReport, check: bool) -> None:
     """The summary of a batch: one row per model, then the counts; in check mode (on stderr, stdout holds
     the diffs) the files column counts the files that would change."""
@@ -280,7 +313,7 @@ def _check(args: argparse.Namespace) -> int:
     from robomda.api import check
 
     done = check(args.model, args.target, package_name=args.package_name, type_map=args.type_map,
-                 model_path=args.model_path)
+                 model_path=args.model_path, features=args.features)
     _report(args.format, done.diagnostics, done.exit_code)
     summary = (f"robomda: {args.model}: {done.count('error')} errors, {done.count('warning')} warnings, "
                f"{done.count('info')} notes (checked for {', '.join(done.targets)}; rules: "
@@ -345,6 +378,8 @@ def _main(args: argparse.Namespace, fmt: str) -> int:
     try:
         from robomda.api import PackageInfo, generate, import_model
 
+        if args.command == "generate" and args.all_configurations is not None:
+            return _variants(args)
         if args.command == "generate" and args.model.is_dir():
             if fmt != "text":
                 print("robomda: --format json / sarif applies to one model, not to a folder", file=sys.stderr)
@@ -364,6 +399,7 @@ def _main(args: argparse.Namespace, fmt: str) -> int:
                 return EXIT_INPUT
             done = generate(args.model, args.output, args.target, package_name=args.package_name,
                             type_map=args.type_map, model_path=args.model_path, diagrams=args.diagrams, check=checking,
+                            features=args.features,
                             package=PackageInfo(args.package_version, args.maintainer, args.license))
             _report(fmt, done.warnings, EXIT_OK)
             if checking:
@@ -383,7 +419,8 @@ def _main(args: argparse.Namespace, fmt: str) -> int:
                       file=sys.stdout if fmt == "text" else sys.stderr)
         else:
             found: list[Diagnostic] = []
-            text = import_model(args.model, bind=not args.no_bind, warnings=found, model_path=args.model_path)
+            text = import_model(args.model, bind=not args.no_bind, warnings=found, model_path=args.model_path,
+                                features=args.features)
             _report("text", found, EXIT_OK)
             dest = _pim_destination(args.model, args.output)
             _write_model_file(dest, text)

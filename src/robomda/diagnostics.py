@@ -340,7 +340,7 @@ class XmiLocator:
         """Where the file-qualified id ``file#id`` is (the file relative to the model's folder)."""
         rel, raw = xmi_id.rsplit("#", 1)
         path = Path(os.path.normpath(self.path.resolve().parent / unquote(rel)))
-        where = self._build(path).get(raw)
+        where = (_by_path(path) if raw.startswith("@") else self._build(path)).get(raw)
         return (path, where) if where else (self.path, None)
 
     def _shown(self, path: Path) -> str:
@@ -368,10 +368,30 @@ class XmiLocator:
             column=where.column if where else column,
             element_kind=where.kind if where else None,
             element_name=where.name if where else None,
-            xmi_id=xmi_id or None,
+            # a location id of a file that is no XMI (FILE#@/path): FILE:LINE says it, the id is no xmi:id
+            xmi_id=None if not xmi_id or "#@" in xmi_id else xmi_id,
             step=step,
             qualified_name=(where.qualified_name or None) if where else None,
         )
+
+
+def _by_path(path: Path) -> dict[str, _Where]:
+    """The elements of a file that is no XMI (a feature model, a configuration, a resolution model) by
+    the location id f:where gives them (xslt/m2m/variability/features.xsl): "@/name.N/name.N", each
+    step an element's local name and its position among its same-named siblings."""
+    try:
+        root = etree.parse(str(path), etree.XMLParser(resolve_entities=False, no_network=True)).getroot()
+    except (OSError, etree.XMLSyntaxError):
+        return {}
+    index: dict[str, _Where] = {}
+    steps: dict[etree._Element, str] = {}
+    for el in root.iter(etree.Element):
+        parent = el.getparent()
+        same = [s for s in (parent if parent is not None else [el]) if isinstance(s.tag, str) and s.tag == el.tag]
+        steps[el] = (steps[parent] if parent is not None else "@") + f"/{etree.QName(el).localname}.{same.index(el) + 1}"
+        name = el.get("name") or next(iter(el.attrib.values()), "") or (el.text or "").strip()
+        index[steps[el]] = _Where(el.sourceline or 0, 1, etree.QName(el).localname, name)
+    return index
 
 
 def _qualified_name(el: etree._Element) -> str:

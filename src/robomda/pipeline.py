@@ -35,7 +35,7 @@ from robomda.resources import resource_root
 from robomda.rules import SAXON_FROM, run_rules
 from robomda.validate import parse, schema_of, validate
 
-__all__ = ["Param", "Check", "Step", "Pipeline", "RunResult", "load", "run", "settle"]
+__all__ = ["Param", "Check", "Step", "Pipeline", "RunResult", "load", "run", "settle", "for_context"]
 
 _NS = {"p": "urn:robomda:pipeline:1"}
 
@@ -60,6 +60,7 @@ class Step:
     schema: Path
     params: tuple[Param, ...]
     checks: tuple[Check, ...] = ()
+    when: str | None = None  # the manifest's @if: run only when the runner supplies this value
 
 
 @dataclass(frozen=True)
@@ -152,9 +153,16 @@ def load(manifest: Path) -> Pipeline:
             continue
         params = tuple(Param(p.get("name"), p.get("value"), p.get("from")) for p in node.findall("p:param", _NS))
         steps.append(Step(node.get("name"), (base / node.get("stylesheet")).resolve(),
-                          (base / node.get("schema")).resolve(), params))
+                          (base / node.get("schema")).resolve(), params, when=node.get("if")))
     description = " ".join((root.findtext("p:description", namespaces=_NS) or "").split())
     return Pipeline(root.get("name"), root.get("yields"), description, tuple(steps), manifest)
+
+
+def for_context(pipeline: Pipeline, context: dict[str, str]) -> Pipeline:
+    """``pipeline`` without the steps whose ``if`` value ``context`` does not supply (the configure step
+    without a configuration)."""
+    kept = tuple(s for s in pipeline.steps if s.when is None or context.get(s.when))
+    return pipeline if len(kept) == len(pipeline.steps) else dataclasses.replace(pipeline, steps=kept)
 
 
 def _step_key(step: Step, params: dict[str, str]) -> tuple:
@@ -189,6 +197,9 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
     """
     locator = XmiLocator(model, tuple(Path(unquote(urlparse(u).path)) for u in context.get("model-path", "").split()))
     result = RunResult()
+    if steps is not None:  # the first `steps` steps of the manifest, as many of them as run
+        steps = len(for_context(dataclasses.replace(pipeline, steps=pipeline.steps[:steps]), context).steps)
+    pipeline = for_context(pipeline, context)
     chain = pipeline.steps[:steps]
     previous: Path | str | Tree = model.resolve()
     resuming = resume is not None

@@ -17,6 +17,11 @@
            model-path             folder URIs (space-separated) that model
                                   files the model references may be read
                                   from besides its own folder.
+           features, feature-model, resolution
+                                  URIs of a FeatureIDE configuration, its
+                                  feature model and the resolution model:
+                                  the configure step runs (step/@if) only
+                                  when features is given.
   Errors:  RUN001 no model given; any error of a step's stylesheet
            (fn:transform passes it on unchanged).
 
@@ -57,6 +62,15 @@
     <!-- folder URIs, space-separated: where referenced model files may be -->
   </xsl:param>
 
+  <xsl:param name="features" as="xs:string" select="''">
+    <!-- URI of a FeatureIDE configuration: runs the configure step ("" = none) -->
+  </xsl:param>
+  <xsl:param name="feature-model" as="xs:string" select="''">
+    <!-- URI of the configuration's FeatureIDE feature model -->
+  </xsl:param>
+  <xsl:param name="resolution" as="xs:string" select="''">
+    <!-- URI of the resolution model (docs/variability.md) -->
+  </xsl:param>
   <xsl:param name="package-version" as="xs:string" select="''">
     <!-- the package's version; empty = 0.0.0 -->
   </xsl:param>
@@ -82,6 +96,7 @@
         </xsl:when>
         <xsl:otherwise>
           <p:step name="{@name}" stylesheet="{resolve-uri(@stylesheet, base-uri(.))}">
+            <xsl:copy-of select="@if"/>
             <xsl:copy-of select="p:param"/>
           </p:step>
         </xsl:otherwise>
@@ -102,6 +117,9 @@
       else if ($param/@from = 'maintainer-email') then $maintainer-email
       else if ($param/@from = 'license') then $license
       else if ($param/@from = 'model-path') then $model-path
+      else if ($param/@from = 'features') then $features
+      else if ($param/@from = 'feature-model') then $feature-model
+      else if ($param/@from = 'resolution') then $resolution
       else ''"/>
   </xsl:function>
 
@@ -112,6 +130,10 @@
     <xsl:choose>
       <xsl:when test="empty($steps)">
         <xsl:sequence select="$input"/>
+      </xsl:when>
+      <xsl:when test="head($steps)/@if = 'features' and $features = ''">
+        <!-- a step for a configuration, and none is given -->
+        <xsl:sequence select="fp:run(tail($steps), $input)"/>
       </xsl:when>
       <xsl:otherwise>
         <xsl:variable name="step" as="element(p:step)" select="head($steps)"/>
