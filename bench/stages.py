@@ -26,6 +26,7 @@ import sys
 import tempfile
 import time
 from pathlib import Path
+from typing import Callable
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
@@ -65,7 +66,7 @@ def _time_stages(engine: Engine, chain: pipeline.Pipeline, model: Path, clock,
 
 
 def measure(shape: str, sizes: list[int], target: str = "orocos", wall: bool = False,
-            log=print) -> dict[str, object]:
+            log: Callable[[str], None] = print) -> dict[str, object]:
     """Each stage's seconds at each size of ``shape`` (with the identity transform of its input), one engine and
     chain for every size; ``log`` gets a line per size. The result: sizes, stage names, seconds per size
     (``seconds[i][j]``: size i, stage j) and the identity's likewise."""
