@@ -13,7 +13,10 @@ compilation is not counted) and reports: wall and CPU time, time in XSLT, in
 XSD validation and in the Schematron rules per step, peak resident memory
 (the driver's and its checker process's), a SaxonC identity transform of the
 same XMI as a floor, and the floor of the whole chain (the identity over
-each stage's input, validation, rules, writing). Every figure comes from the
+each stage's input, validation, rules, writing). Then, per shape, each
+stylesheet alone at 2,000 and 4,000 components (--stage-sizes; bench/stages.py
+in a fresh process, CPU seconds): each stage's growth when the model
+doubles (issue 35: at most 2.2). Every figure comes from the
 same run; compare ratios, not absolute seconds, across machines. Models and
 outputs go to a RAM file system (/dev/shm) where there is one: on a shared
 disk, creating the same 3,000 files took from 0.14 to 2.3 s within minutes
@@ -27,10 +30,11 @@ reported per model).
 Then what a user feels: the headlamp model end to end as a fresh command,
 ``robomda --version`` and ``--help``, beside the floor of any command (Python
 starting SaxonC); and watch mode's CPU time per regeneration of headlamp.
-Last, each target of issue 16 with its measured value beside its floor or
-limit, and whether it is met.
+Last, each target of issues 16 and 35 with its measured value beside its
+floor or limit, and whether it is met, and a table of one line per shape in
+Markdown (the README's Performance section shows it).
 
-    python bench/run.py --quick          # the CI smoke run: one composite, 500 and 1,000
+    python bench/run.py --quick          # the CI smoke run: one composite, 500 and 1,000 (stages too)
     python bench/run.py --shapes composite nested --sizes 1000 10000
 """
 
@@ -52,6 +56,7 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 sys.path.insert(0, str(HERE.parent / "src"))
 
+from stages import ratios, worst_doubling  # noqa: E402
 from synth import SHAPES, write_model  # noqa: E402
 
 _IDENTITY = """<xsl:stylesheet version="3.0" xmlns:xsl="http://www.w3.org/1999/XSL/Transform">
@@ -243,6 +248,16 @@ def _in_child(flag: str, value: int, workdir: Path, shape: str = "ring") -> dict
     return json.loads(proc.stdout.strip().splitlines()[-1])
 
 
+def _stages(shape: str, sizes: list[int]) -> dict[str, object]:
+    """Each stylesheet of the chain alone on ``shape`` at ``sizes`` (bench/stages.py, CPU seconds, in a fresh
+    process): issue 35's per-stage growth, measured in this run."""
+    proc = subprocess.run([sys.executable, str(HERE / "stages.py"), *map(str, sizes), "--shapes", shape, "--json"],
+                          capture_output=True, text=True)
+    if proc.returncode != 0:
+        raise RuntimeError(f"bench/stages.py on {shape} failed:\n{proc.stderr}")
+    return json.loads(proc.stdout.strip().splitlines()[-1])[0]
+
+
 def _verdict(name: str, measured: str, limit: str, met: bool | None) -> str:
     mark = "not measured" if met is None else ("met" if met else "NOT MET")
     return f"  {name:<44} {measured:<34} {limit:<26} {mark}"
@@ -255,11 +270,15 @@ def _chain_floor(r: dict[str, object]) -> float:
     return r["chain_identity_s"] + r["xsd_s"] + r["rules_s"] + rest
 
 
-def _shape_targets(shape: str, rows: list[dict[str, object]]) -> list[str]:
-    """Issue 35's large-model targets of one shape, each beside its floor measured in the same run."""
+def _shape_targets(shape: str, rows: list[dict[str, object]], stages: dict[str, object] | None) -> list[str]:
+    """Issue 35's targets of one shape, each beside its floor measured in the same run."""
     by_size = {r["size"]: r for r in rows}
     large, small = by_size.get(10000), by_size.get(1000)
     lines = [f"  {shape}:"]
+    worst = worst_doubling(stages) if stages else None
+    lines.append(_verdict("  every stage: t(2n) / t(n), the worst", f"{worst[0]:.2f} ({worst[1]}, n = "
+                          f"{stages['sizes'][0]})" if worst else "-", "<= 2.2 (n = 2,000)",
+                          worst[0] <= 2.2 if worst and stages["sizes"][0] == 2000 else None))
     growth = large["wall_s"] / small["wall_s"] if large and small else None
     identity = large["identity_s"] / small["identity_s"] if large and small else None
     lines.append(_verdict("  t(10,000) / t(1,000)", f"{growth:.1f}" if growth else "-",
@@ -276,7 +295,7 @@ def _shape_targets(shape: str, rows: list[dict[str, object]]) -> list[str]:
 
 
 def _targets(small: dict[str, float], watch: dict[str, float], rows: dict[str, list[dict[str, object]]],
-             batch: dict[str, float] | None) -> list[str]:
+             batch: dict[str, float] | None, stages: dict[str, dict[str, object]]) -> list[str]:
     """Issues 16 and 35's targets, each measured value beside its floor or limit."""
     floor, compile_only = small["floor"], small["compile"]
     lines = ["targets (issues 16 and 35; ratios to floors measured in this run):",
@@ -290,7 +309,7 @@ def _targets(small: dict[str, float], watch: dict[str, float], rows: dict[str, l
              _verdict("watch: CPU per regeneration of headlamp", f"{watch['regeneration']:.3f} s (first run "
                       f"{watch['first']:.2f} s)", "<= 0.15 s", watch["regeneration"] <= 0.15)]
     for shape, shape_rows in rows.items():
-        lines.extend(_shape_targets(shape, shape_rows))
+        lines.extend(_shape_targets(shape, shape_rows, stages.get(shape)))
     java = batch["java"] / batch["j2"] if batch and batch["java"] else None
     lines.append(_verdict("batch -j2 vs per-file Saxon-HE Java", f"{java:.0f} x faster" if java else "-",
                           ">= 30 x", java >= 30 if java else None))
@@ -340,6 +359,37 @@ def _report(shape: str, rows: list[dict[str, object]]) -> None:
               f"{b['identity_s'] / a['identity_s']:.2f})")
 
 
+def _shape_table(rows: dict[str, list[dict[str, object]]], stages: dict[str, dict[str, object]]) -> list[str]:
+    """One line per shape, in Markdown (the README's Performance section): the whole chain at the smallest and
+    largest size, its growth beside the identity transform's, the chain's floor and peak memory at the largest
+    size, and the worst stage's growth on a doubling (bench/stages.py), every figure from this run."""
+    lines = []
+    for shape, shape_rows in rows.items():
+        a, b = shape_rows[0], shape_rows[-1]
+        n, m = f"{a['size']:,}", f"{b['size']:,}"
+        if not lines:
+            lines += [f"| shape | t({n}) | t({m}) | t({m}) / t({n}) | identity's growth | t({m}) / the chain's floor "
+                      f"| peak memory at {m} | worst stage t(2n) / t(n) |",
+                      "|---|---:|---:|---:|---:|---:|---:|---|"]
+        worst = worst_doubling(stages[shape]) if shape in stages else None
+        stage = f"{worst[0]:.2f} ({worst[1]}, n = {stages[shape]['sizes'][0]:,})" if worst else "-"
+        lines.append(f"| {shape} | {a['wall_s']:.2f} s | {b['wall_s']:.2f} s | {b['wall_s'] / a['wall_s']:.1f} "
+                     f"| {b['identity_s'] / a['identity_s']:.1f} | {b['wall_s'] / _chain_floor(b):.2f} "
+                     f"| {b['peak_rss_mib'] / 1024:.2f} GiB | {stage} |")
+    return lines
+
+
+def _report_stages(measured: dict[str, object]) -> None:
+    """Each stylesheet alone (bench/stages.py): CPU seconds per size, and each stage's growth beside the
+    identity transform's of the same input."""
+    print("each stage alone (CPU s; bench/stages.py):")
+    for size, seconds in zip(measured["sizes"], measured["seconds"]):
+        print(f"  {size:>6}: " + ", ".join(f"{name} {t:.2f}" for name, t in zip(measured["stages"], seconds)))
+    for small, large, stage, identity in ratios(measured):
+        print(f"  t({large})/t({small}): " + ", ".join(f"{name} {r:.2f} (identity {f:.2f})"
+                                                    for name, r, f in zip(measured["stages"], stage, identity)))
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--sizes", type=int, nargs="+", default=[100, 1000, 10000])
@@ -354,6 +404,9 @@ def main() -> int:
                         help="work in the system's temporary folder even where a RAM file system (/dev/shm) "
                              "is there; by default the models and outputs go there, so that other work on a "
                              "shared disk does not enter the ratios")
+    parser.add_argument("--stage-sizes", type=int, nargs="*", default=[2000, 4000],
+                        help="sizes at which bench/stages.py times each stylesheet alone, per shape (issue 35: "
+                             "t(4,000) / t(2,000) <= 2.2 on every stage); none: skip")
     parser.add_argument("--quick", action="store_true", help="CI smoke run: one composite of 500 and 1,000 parts "
                         "(a quadratic path shows in its growth), batch of 20, one run each")
     parser.add_argument("--one", type=int, help=argparse.SUPPRESS)
@@ -370,7 +423,9 @@ def main() -> int:
 
     if args.quick:
         args.shapes, args.sizes, args.batch, args.java_models, args.repeat = ["composite"], [500, 1000], 20, 2, 1
+        args.stage_sizes = [500, 1000]
     rows: dict[str, list[dict[str, object]]] = {}
+    stages: dict[str, dict[str, object]] = {}
     batch_lines: list[str] = []
     batch = None
     ram = Path("/dev/shm")
@@ -387,12 +442,16 @@ def main() -> int:
         for shape in args.shapes:
             try:
                 rows[shape] = [_measure(shape, size, args.repeat, Path(tmp)) for size in args.sizes]
+                if len(args.stage_sizes) > 1:
+                    stages[shape] = _stages(shape, args.stage_sizes)
             except RuntimeError as exc:
                 print(f"shape {shape}: {exc}", file=sys.stderr)
                 return 1
 
     for shape, shape_rows in rows.items():
         _report(shape, shape_rows)
+        if shape in stages:
+            _report_stages(stages[shape])
     print("\n(CPU ratio: the driver's CPU seconds over the identity's, steadier than wall time on a busy machine;")
     print(" it leaves out the checker process's, which validates large stages on the other core meanwhile.")
     print(" XSD s of a large stage: the time the run waited for the checker. peak MiB: the driver's peak plus")
@@ -401,7 +460,10 @@ def main() -> int:
     for line in batch_lines:
         print(line)
     print()
-    for line in _targets(small, watch, rows, batch):
+    for line in _targets(small, watch, rows, batch, stages):
+        print(line)
+    print("\nper shape (Markdown, for the README's Performance section; seconds: the whole chain, wall time):")
+    for line in _shape_table(rows, stages):
         print(line)
     return 0
 

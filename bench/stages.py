@@ -21,10 +21,12 @@ garbage collector on a larger heap) adds whatever the stylesheet does.
 from __future__ import annotations
 
 import argparse
+import json
 import sys
 import tempfile
 import time
 from pathlib import Path
+from typing import Callable
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
@@ -63,6 +65,47 @@ def _time_stages(engine: Engine, chain: pipeline.Pipeline, model: Path, clock,
     return row
 
 
+def measure(shape: str, sizes: list[int], target: str = "orocos", wall: bool = False,
+            log: Callable[[str], None] = print) -> dict[str, object]:
+    """Each stage's seconds at each size of ``shape`` (with the identity transform of its input), one engine and
+    chain for every size; ``log`` gets a line per size. The result: sizes, stage names, seconds per size
+    (``seconds[i][j]``: size i, stage j) and the identity's likewise."""
+    clock = time.perf_counter if wall else time.process_time
+    unit = "" if wall else " CPU"
+    engine = Engine()
+    chain = pipeline.load(pipeline_path(target))
+    for step in chain.steps:
+        engine.compile(step.stylesheet)
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        identity = Path(tmp) / "identity.xsl"
+        identity.write_text(_IDENTITY)
+        engine.compile(identity)
+        for size in sizes:
+            model = write_model(size, Path(tmp) / f"{shape}-{size}.xmi", shape, MIDDLEWARE[target])
+            rows.append(_time_stages(engine, chain, model, clock, identity))
+            log(f"{shape:>10} {size:>6}: " + ", ".join(f"{name} {t:.2f}s{unit} ({n // 1024} KiB)"
+                                                     for name, t, n, _ in rows[-1]))
+    return {"shape": shape, "sizes": sizes, "stages": [name for name, _, _, _ in rows[0]] if rows else [],
+            "seconds": [[t for _, t, _, _ in row] for row in rows],
+            "identity": [[f for _, _, _, f in row] for row in rows]}
+
+
+def ratios(measured: dict[str, object]) -> list[tuple[int, int, list[float], list[float]]]:
+    """Per pair of consecutive sizes (small, large): each stage's t(large) / t(small) and the identity's."""
+    sizes, seconds, identity = measured["sizes"], measured["seconds"], measured["identity"]
+    return [(small, large, [b / max(a, 1e-3) for a, b in zip(seconds[i], seconds[i + 1])],
+             [b / max(a, 1e-3) for a, b in zip(identity[i], identity[i + 1])])
+            for i, (small, large) in enumerate(zip(sizes, sizes[1:]))]
+
+
+def worst_doubling(measured: dict[str, object]) -> tuple[float, str] | None:
+    """The highest stage ratio over a doubling of the size, and its stage; None without a doubling."""
+    found = [(r, name) for small, large, stage, _ in ratios(measured) if large == 2 * small
+             for r, name in zip(stage, measured["stages"])]
+    return max(found) if found else None
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("sizes", type=int, nargs="*", default=[500, 1000, 2000])
@@ -71,34 +114,22 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--wall", action="store_true",
                         help="wall time instead of this process's CPU time (SaxonC runs in it): CPU time is what "
                              "a busy shared machine leaves steady")
+    parser.add_argument("--json", action="store_true", help="a last line with the measures as JSON (bench/run.py)")
     args = parser.parse_args(argv)
-    clock = time.perf_counter if args.wall else time.process_time
-    engine = Engine()
-    chain = pipeline.load(pipeline_path(args.target))
-    for step in chain.steps:
-        engine.compile(step.stylesheet)
     worst = 0.0
-    unit = "" if args.wall else " CPU"
-    with tempfile.TemporaryDirectory() as tmp:
-        identity = Path(tmp) / "identity.xsl"
-        identity.write_text(_IDENTITY)
-        engine.compile(identity)
-        for shape in args.shapes:
-            rows = []
-            for size in args.sizes:
-                model = write_model(size, Path(tmp) / f"{shape}-{size}.xmi", shape, MIDDLEWARE[args.target])
-                rows.append(_time_stages(engine, chain, model, clock, identity))
-                print(f"{shape:>10} {size:>6}: " + ", ".join(f"{name} {t:.2f}s{unit} ({n // 1024} KiB)"
-                                                           for name, t, n, _ in rows[-1]), flush=True)
-            for (small, a), (large, b) in zip(zip(args.sizes, rows), list(zip(args.sizes, rows))[1:]):
-                ratios = [tb / max(ta, 1e-3) for (_, ta, _, _), (_, tb, _, _) in zip(a, b)]
-                floors = [fb / max(fa, 1e-3) for (_, _, _, fa), (_, _, _, fb) in zip(a, b)]
-                worst = max([worst, *ratios]) if large == 2 * small else worst
-                print(f"{shape:>10} t({large})/t({small}) (sizes x{large / small:.1f}): "
-                      + ", ".join(f"{name} {r:.2f} (identity {f:.2f})" for (name, _, _, _), r, f in zip(a, ratios, floors)),
-                      flush=True)
+    found = []
+    for shape in args.shapes:
+        measured = measure(shape, args.sizes, args.target, args.wall, lambda line: print(line, flush=True))
+        found.append(measured)
+        for small, large, stage, identity in ratios(measured):
+            print(f"{shape:>10} t({large})/t({small}) (sizes x{large / small:.1f}): "
+                  + ", ".join(f"{name} {r:.2f} (identity {f:.2f})"
+                              for name, r, f in zip(measured["stages"], stage, identity)), flush=True)
+        worst = max(worst, (worst_doubling(measured) or (0.0, ""))[0])
     if worst:
         print(f"worst stage ratio on a doubling: {worst:.2f} (issue 35's limit: {LIMIT})")
+    if args.json:
+        print(json.dumps(found))
     return 0
 
 

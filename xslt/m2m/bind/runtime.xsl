@@ -187,14 +187,25 @@
     <xsl:param name="instances" as="element(pim:instance)*"/>
     <xsl:param name="hosts" as="element(pim:node)*"/>
     <xsl:variable name="root" as="document-node()" select="root($model)"/>
-    <xsl:for-each select="fp:execution-environments($root)[@id = $instances/@execution-environment]">
-      <xsl:variable name="ee" as="element(pim:node)" select="."/>
-      <xsl:variable name="mine" as="element(pim:instance)*" select="$instances[@execution-environment eq $ee/@id]"/>
+    <!-- execution environment id -> its instances, in one pass (not a scan
+         of every instance per environment) -->
+    <xsl:variable name="by-environment" as="map(xs:string, element(pim:instance)+)">
+      <xsl:map>
+        <xsl:for-each-group select="$instances" group-by="@execution-environment">
+          <xsl:map-entry key="string(current-grouping-key())" select="current-group()"/>
+        </xsl:for-each-group>
+      </xsl:map>
+    </xsl:variable>
+    <xsl:for-each select="fp:execution-environments($root)[@id ! map:contains($by-environment, string(.))]">
+      <xsl:variable name="mine" as="element(pim:instance)+" select="$by-environment(string(@id))"/>
       <xsl:variable name="managed" as="xs:string?" select="fp:tag(., 'Middleware', 'managed')[normalize-space(.)]"/>
       <pim:process xmi-id="{@id}" name="{f:name-identifier(@name)}" middleware="{$mine[1]/@middleware}"
                    managed="{if (exists($managed)) then fp:boolean($managed, 'managed', string(@id)) else false()}">
         <xsl:sequence select="$mine[1]/@host"/>
-        <xsl:for-each select="fp:execution-environments($root)[@id = $mine/@thread]">
+        <!-- its threads, in model order: by key, not a scan of every environment per process -->
+        <xsl:for-each select="key('fp:id', distinct-values($mine/@thread), $root)
+                              [self::pim:node[@kind eq 'execution-environment']]
+                              [ancestor::pim:platform[parent::pim:model/parent::document-node()]]">
           <pim:thread xmi-id="{@id}" name="{f:cpp-identifier(@name)}">
             <xsl:sequence select="fp:thread-activity(.)"/>
           </pim:thread>

@@ -72,11 +72,13 @@
 
   <!-- every PIM element by its id; the including PSMs look up with it too -->
   <xsl:key name="fp:id" match="*[@id]" use="@id"/>
-  <!-- the instances of a component, its binding, the calls an instance makes -->
+  <!-- the instances of a component, its binding, the calls an instance
+       makes, the instances on a middleware, the links (buses) of a host -->
   <xsl:key name="fp:instance-of" match="pim:instance" use="@component"/>
   <xsl:key name="fp:bound-component" match="pim:bound-component" use="@component"/>
   <xsl:key name="fp:call-by-caller" match="pim:call" use="pim:caller/@instance"/>
   <xsl:key name="fp:instance-by-middleware" match="pim:instance" use="@middleware"/>
+  <xsl:key name="fp:link-by-host" match="pim:link" use="pim:link-end/@host"/>
 
   <!-- ====================================================== deployment -->
   <!-- true when $instance goes into the package of the target for
@@ -145,7 +147,7 @@
     <xsl:param name="host" as="element(pim:host)"/>
     <xsl:attribute name="real-time" select="$host/@real-time"/>
     <xsl:sequence select="$host/(@cores, @memory)"/>
-    <xsl:for-each select="$host/../pim:link[pim:link-end/@host = $host/@xmi-id]">
+    <xsl:for-each select="key('fp:link-by-host', $host/@xmi-id, root($host))[.. is $host/..]">
       <xsl:element name="{$fp:psm-prefix}:bus" namespace="{$fp:psm-namespace}">
         <xsl:attribute name="name" select="@name"/>
         <xsl:attribute name="kind" select="@kind"/>

@@ -179,16 +179,24 @@
     </xsl:for-each>
   </xsl:function>
 
-  <!-- ORO015 a thread named like an instance; ORO016 a call between processes -->
+  <!-- ORO015 a thread named like an instance; ORO016 a call between
+       processes. $names: the names of $instances as a set; the processes
+       of $instances likewise (a look-up each, not a scan of every instance
+       per process, thread and call) -->
   <xsl:function name="fp:oro-process-problems" as="empty-sequence()">
     <xsl:param name="instances" as="element(pim:instance)*"/>
+    <xsl:param name="names" as="map(xs:string, xs:boolean)"/>
     <xsl:param name="calls" as="element(pim:call)*"/>
     <xsl:variable name="root" as="document-node()?" select="root($instances[1])"/>
-    <xsl:for-each select="$instances[1]/../pim:process[@xmi-id = $instances/@execution-environment]/pim:thread[@name = $instances/@name]">
+    <xsl:variable name="processes" as="map(xs:string, xs:boolean)"
+        select="map:merge(distinct-values($instances/@execution-environment ! string(.)) ! map:entry(., true()))"/>
+    <xsl:for-each select="$instances[1]/../pim:process[@xmi-id ! map:contains($processes, string(.))]
+                          /pim:thread[@name ! map:contains($names, string(.))]">
       <xsl:sequence select="f:fail('ORO015', string(@xmi-id), 'thread ''' || @name || ''' has the name of an instance: the thread'
           || ' is a component of the deployment (SharedThread) named after it; rename one')"/>
     </xsl:for-each>
-    <xsl:for-each select="$calls[pim:caller/@instance = $instances/@name][pim:provider/@instance = $instances/@name]">
+    <xsl:for-each select="$calls[some $i in pim:caller/@instance satisfies map:contains($names, string($i))]
+                                [some $i in pim:provider/@instance satisfies map:contains($names, string($i))]">
       <xsl:if test="key('fp:instance-by-name', pim:caller/@instance, $root)/@execution-environment
                     ne key('fp:instance-by-name', pim:provider/@instance, $root)/@execution-environment">
         <xsl:sequence select="f:fail('ORO016', string(@xmi-id), 'instance ''' || pim:caller/@instance || ''' calls operations of '''

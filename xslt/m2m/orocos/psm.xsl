@@ -160,15 +160,17 @@
     </xsl:variable>
     <!-- the runtime architecture (processes.xsl): processes in start order,
          and each kept connection's transports -->
-    <xsl:sequence select="fp:oro-process-problems($instances, $binding/pim:call)"/>
+    <xsl:sequence select="fp:oro-process-problems($instances, $targets, $binding/pim:call)"/>
     <xsl:variable name="order" as="element(pim:process)*" select="fp:oro-process-order($instances)"/>
+    <!-- once: it reads every instance -->
+    <xsl:variable name="single" as="xs:boolean" select="fp:oro-single-process($instances)"/>
     <xsl:variable name="files" as="map(xs:string, xs:string)"
         select="map:merge($order ! map:entry(string(@xmi-id),
-                  if (fp:oro-single-process($instances)) then f:snake-case(root(.)/pim:model/@name) else fp:oro-process-file(.)))"/>
+                  if ($single) then f:snake-case(root(.)/pim:model/@name) else fp:oro-process-file(.)))"/>
     <xsl:variable name="connections" as="element(o:connection)*"
         select="$binding/pim:connection[fp:kept-connection(., $binding, $targets)]
                 ! fp:oro-connection(., $targets, $order ! string(@xmi-id), $files, $package)"/>
-    <xsl:variable name="corba" as="xs:boolean" select="exists($connections/o:remote) or not(fp:oro-single-process($instances))"/>
+    <xsl:variable name="corba" as="xs:boolean" select="exists($connections/o:remote) or not($single)"/>
     <xsl:variable name="processes" as="element(o:process)*"
         select="fp:oro-processes($instances, $corba, $order[map:get($files, string(@xmi-id)) = $connections/o:stream[@transport eq 'ros']/@process]/@name)"/>
     <o:deployment xmi-id="{@id}" model-name="{@name}" deploy-name="{f:snake-case(@name)}"

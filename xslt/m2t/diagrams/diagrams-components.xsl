@@ -170,7 +170,8 @@
     <xsl:param name="c" as="element(pim:component)"/>
     <xsl:param name="path" as="xs:string+"/>
     <xsl:param name="seen" as="xs:string*"/>
-    <xsl:variable name="part" as="element(pim:part)?" select="$c/pim:part[@id = $end/@part]"/>
+    <!-- by key: a composite of N parts has N connectors, so a scan of its parts per end grows as N x N -->
+    <xsl:variable name="part" as="element(pim:part)?" select="fp:part-of($end, $c)"/>
     <xsl:variable name="owner" as="element()?" select="if ($end/@part) then key('fp:id', $part/@type, root($end))[self::pim:component] else $c"/>
     <xsl:variable name="at" as="xs:string+" select="if ($part) then ($path, string($part/@id)) else $path"/>
     <xsl:sequence select="
@@ -179,11 +180,18 @@
         else fp:puml-alias('c', $path)"/>
   </xsl:function>
 
+  <!-- the part of composite $c that connector end $end names -->
+  <xsl:function name="fp:part-of" as="element(pim:part)*">
+    <xsl:param name="end" as="element(pim:end)"/>
+    <xsl:param name="c" as="element(pim:component)"/>
+    <xsl:sequence select="key('fp:id', $end/@part, root($end))[self::pim:part][.. is $c]"/>
+  </xsl:function>
+
   <xsl:function name="fp:end-kind" as="xs:string">
     <xsl:param name="end" as="element(pim:end)"/>
     <xsl:param name="c" as="element(pim:component)"/>
     <xsl:variable name="owner" as="element()?"
-        select="if ($end/@part) then key('fp:id', $c/pim:part[@id = $end/@part]/@type, root($end))[self::pim:component] else $c"/>
+        select="if ($end/@part) then key('fp:id', fp:part-of($end, $c)/@type, root($end))[self::pim:component] else $c"/>
     <xsl:sequence select="($owner/pim:port[@id = $end/@role] ! fp:port-kind(., $owner), '')[1]"/>
   </xsl:function>
 

@@ -107,7 +107,7 @@
       <xsl:if test="count(o:process) gt 1">
         <xsl:sequence select="$fp:file-margin, fp:file('deploy/start-helper.lua', 'generated', $fp:deploy-xsl, fp:start-helper(.))"/>
         <xsl:for-each-group select="o:process" group-by="string(@host)">
-          <xsl:variable name="host" as="element(o:host)?" select="$deployment/o:host[@name eq current-grouping-key()]"/>
+          <xsl:variable name="host" as="element(o:host)?" select="fp:in-process('fp:host-named', $deployment, current-grouping-key())"/>
           <xsl:sequence select="$fp:file-margin, fp:file('deploy/' || current-group()[1]/@start-script, 'generated', $fp:deploy-xsl,
                                         fp:start-script($deployment, $host, current-group()))"/>
         </xsl:for-each-group>

@@ -14,9 +14,11 @@
            client those scripts run to wait for a component's Running
            state and to stop a process's components before it ends.
   Params:  none.  Errors: none.
-  Keys:    fp:view-end (on a view's connections), fp:instance-in and
-           fp:connection-in (on the PSM: a process's instances and
-           connections, so that each view reads only its own).
+  Keys:    fp:view-end (on a view's connections), fp:instance-in,
+           fp:connection-in, fp:process-at and fp:host-named (on the PSM:
+           a process's instances and connections, so that each view reads
+           only its own; the process before another and the host of a
+           start script).
 
   The view of process P: @deploy-name its file; the library and typekit;
   its connections: the part of each connection point inside P (writers
@@ -42,6 +44,10 @@
   <xsl:key name="fp:instance-in" match="o:deployment/o:instance" use="@process"/>
   <xsl:key name="fp:connection-in" match="o:deployment/o:connection"
            use="o:writer/@process, o:stream/@process, o:remote/@process"/>
+  <!-- the process at a place in the start order (a start script's process before another) -->
+  <xsl:key name="fp:process-at" match="o:deployment/o:process" use="@position"/>
+  <!-- a host by its name (the host of a start script) -->
+  <xsl:key name="fp:host-named" match="o:deployment/o:host" use="@name"/>
 
   <xsl:function name="fp:process-view" as="element(o:deployment)">
     <xsl:param name="deployment" as="element(o:deployment)"/>
@@ -105,17 +111,20 @@
     </o:deployment>
   </xsl:function>
 
-  <!-- the children of $deployment that key $key finds for process file $p
-       (fp:instance-in: its instances; fp:connection-in: the connections
-       that may have a part in it), in document order -->
+  <!-- the children of $deployment that key $key finds for $p
+       (fp:instance-in: the instances of process file $p; fp:connection-in:
+       the connections that may have a part in it; fp:process-at: the
+       process at position $p; fp:host-named: the host named $p), in
+       document order. $deployment is the PSM's document element
+       (main.xsl), never a view, so there is no fallback for an
+       o:deployment outside a document: a scan of every instance or
+       connection per process would make the cost of the views grow with
+       the square of the deployment -->
   <xsl:function name="fp:in-process" as="element()*">
     <xsl:param name="key" as="xs:string"/>
     <xsl:param name="deployment" as="element(o:deployment)"/>
     <xsl:param name="p" as="xs:string"/>
-    <xsl:sequence select="if (root($deployment) instance of document-node())
-                          then key($key, $p, root($deployment))[.. is $deployment]
-                          else if ($key eq 'fp:instance-in') then $deployment/o:instance[@process eq $p]
-                          else $deployment/o:connection"/>
+    <xsl:sequence select="key($key, $p, root($deployment))[.. is $deployment]"/>
   </xsl:function>
 
   <!-- o:port-connection of each port of instance $name in the connections
@@ -364,7 +373,7 @@
         'wait_ns',
         $processes ! (
           let $process := .,
-              $before := $deployment/o:process[xs:integer(@position) eq xs:integer($process/@position) - 1]
+              $before := fp:in-process('fp:process-at', $deployment, string(xs:integer($process/@position) - 1))
                                              [string(@host) ne string($process/@host)],
               $remote := distinct-values((fp:in-process('fp:instance-in', $deployment, string($before/@file))/@name,
                                           fp:in-process('fp:connection-in', $deployment, $process/@file)

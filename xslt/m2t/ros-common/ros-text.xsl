@@ -31,10 +31,13 @@
                            include/<pkg>/msg_conversions.hpp of the model's types
     fp:msg-file / fp:ros-conversions  their texts
     fp:ros1-type / fp:ros2-type  (header, C++ type) of a message or service
-    fp:on-host / fp:in-set($package, $name)  the instances (sets) of a host, the
-                           members of a set: through keys fp:ros-on-host,
-                           fp:ros-set-on-host and fp:ros-in-set, so that a
-                           launch file does not scan every instance
+    fp:ros-children($key, $package, $values)  the instances (sets) of a host,
+                           the members of a set, the hosts and processes by
+                           name, a host's and a set's processes: through keys
+                           fp:ros-on-host, fp:ros-set-on-host, fp:ros-in-set,
+                           fp:ros-host, fp:ros-process, fp:ros-process-on-host
+                           and fp:ros-process-in-set, so that a launch file
+                           does not scan every instance, host or process
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -46,24 +49,35 @@
     xmlns:m="urn:robomda:xslt:mode"
     exclude-result-prefixes="#all">
 
-  <!-- the instances and component sets of a host, the members of a set -->
+  <!-- the instances and component sets of a host, the members of a set;
+       hosts and processes by name, the processes of a host and of a set -->
   <xsl:key name="fp:ros-on-host" match="r:package/r:instance" use="@host"/>
   <xsl:key name="fp:ros-set-on-host" match="r:package/r:set" use="@host"/>
   <xsl:key name="fp:ros-in-set" match="r:package/r:instance" use="@set"/>
+  <xsl:key name="fp:ros-host" match="r:package/r:host" use="@name"/>
+  <xsl:key name="fp:ros-process" match="r:package/r:process" use="@name"/>
+  <xsl:key name="fp:ros-process-on-host" match="r:package/r:process" use="@host"/>
+  <xsl:key name="fp:ros-process-in-set" match="r:package/r:process" use="@set"/>
 
-  <!-- the children of $package that key $key finds for $value, in document
-       order: $package/r:instance[@host eq $value] (fp:ros-on-host),
-       $package/r:set[@host eq $value] (fp:ros-set-on-host) or
-       $package/r:instance[@set eq $value] (fp:ros-in-set) -->
+  <!-- the children of $package that key $key finds for any of $values, in
+       document order: as $package/r:instance[@host = $values] (fp:ros-on-host),
+       r:set[@host = $values] (fp:ros-set-on-host), r:instance[@set = $values]
+       (fp:ros-in-set), r:host[@name = $values] (fp:ros-host),
+       r:process[@name = $values] (fp:ros-process), r:process[@host = $values]
+       (fp:ros-process-on-host) or r:process[@set = $values] (fp:ros-process-in-set) -->
   <xsl:function name="fp:ros-children" as="element()*">
     <xsl:param name="key" as="xs:string"/>
     <xsl:param name="package" as="element(r:package)"/>
-    <xsl:param name="value" as="xs:string"/>
+    <xsl:param name="values" as="xs:string*"/>
     <xsl:sequence select="if (root($package) instance of document-node())
-                          then key($key, $value, root($package))[.. is $package]
-                          else if ($key eq 'fp:ros-on-host') then $package/r:instance[@host eq $value]
-                          else if ($key eq 'fp:ros-set-on-host') then $package/r:set[@host eq $value]
-                          else $package/r:instance[@set eq $value]"/>
+                          then key($key, $values, root($package))[.. is $package]
+                          else if ($key eq 'fp:ros-on-host') then $package/r:instance[@host = $values]
+                          else if ($key eq 'fp:ros-set-on-host') then $package/r:set[@host = $values]
+                          else if ($key eq 'fp:ros-in-set') then $package/r:instance[@set = $values]
+                          else if ($key eq 'fp:ros-host') then $package/r:host[@name = $values]
+                          else if ($key eq 'fp:ros-process') then $package/r:process[@name = $values]
+                          else if ($key eq 'fp:ros-process-on-host') then $package/r:process[@host = $values]
+                          else $package/r:process[@set = $values]"/>
   </xsl:function>
 
   <!-- the entry of both ROS text stages: their r:package template (mode

@@ -92,7 +92,7 @@
         concat('  Deployed on host ''', fp:xml-text($set/@host), ''' (seed 002); included by its launch file, or started alone.'),
         '--&gt;',
         '&lt;launch&gt;',
-        fp:ros1-machines($package/r:host[@name = $members/@host]),
+        fp:ros1-machines(fp:ros-children('fp:ros-host', $package, distinct-values($members/@host))),
         for $i in $members return fp:ros1-node($package, $i),
         '&lt;/launch&gt;'))"/>
   </xsl:function>

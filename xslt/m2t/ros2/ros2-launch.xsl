@@ -109,7 +109,7 @@
         fp:indent(2, fp:host-lines($host) ! fp:xml-text(.)),
         '--&gt;',
         '&lt;launch&gt;',
-        for $p in $package/r:process[@host eq $host/@name][not(@set)]
+        for $p in fp:ros-children('fp:ros-process-on-host', $package, $host/@name)[not(@set)]
         return fp:ros2-container($package, $p, $here[@process eq $p/@name][not(@set)]),
         for $i in $here[not(@process)][not(@set)] return fp:ros2-node($package, $i),
         fp:ros-children('fp:ros-set-on-host', $package, $host/@name) ! concat('  &lt;include file=&quot;$(find-pkg-share ', $package/@name, ')/launch/',
@@ -153,8 +153,8 @@
         concat('  Deployed on host ''', fp:xml-text($set/@host), ''' (seed 002): included by its launch file.'),
         '--&gt;',
         '&lt;launch&gt;',
-        for $p in $package/r:process[@set eq $set/@launch] return fp:ros2-container($package, $p, $members[@process eq $p/@name]),
-        for $p in $package/r:process[not(@set)][@name = $members/@process]
+        for $p in fp:ros-children('fp:ros-process-in-set', $package, $set/@launch) return fp:ros2-container($package, $p, $members[@process eq $p/@name]),
+        for $p in fp:ros-children('fp:ros-process', $package, distinct-values($members/@process))[not(@set)]
         return fp:ros2-load($package, $p, $members[@process eq $p/@name]),
         for $i in $members[not(@process)] return fp:ros2-node($package, $i),
         '&lt;/launch&gt;'))"/>
