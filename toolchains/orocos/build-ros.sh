@@ -156,6 +156,11 @@ fi
 # catkin_make_isolated builds each package on its own, in dependency order, and installs into $PREFIX.
 # PYTHON_EXECUTABLE: catkin's generators run under Debian's Python (catkin_pkg, genmsg, gencpp), not
 # whatever python3 is first on PATH.
+# Their scripts run as '#!/usr/bin/env python3' too (rtt_roscomm's create_boost_header.py imports roslib):
+# Debian's python3 goes first on PATH, or a pyenv / venv python3 fails with "No module named 'roslib'".
+mkdir -p "$WS/bin"
+ln -sf /usr/bin/python3 "$WS/bin/python3"
+export PATH=$WS/bin:$PATH
 say "build ${PACKAGES[*]} (and what they depend on) into $PREFIX"
 cd "$WS"
 nice -n "$NICE" /usr/bin/python3 /usr/bin/catkin_make_isolated --install --install-space "$PREFIX" \
