@@ -15,7 +15,8 @@ the Orocos controller (/channelPositionConn). The generated Orocos package
 is built (oro_build_pkg) and the ROS 1 package with catkin_make; a roscore
 on 127.0.0.1, the vision host's start script (omniNames, the camera process),
 roslaunch of the generated launch file (vision and forceSensor), the
-control host's start script (controller and arm in the shared thread). Then:
+control host's start script (controller and arm in the shared thread), in
+each deployment format (lua, xml, ops). Then:
 
 - ROS 1 node -> Orocos: the arm's toolPose (armState + 150, published by the
   Orocos arm through rtt_roscomm) leaves 150: the arm only moves when the
@@ -150,11 +151,12 @@ def _ends(topic: str, env: dict[str, str]) -> tuple[list[str], list[str]]:
     return node.findall(pubs), node.findall(subs)
 
 
-def test_messages_cross_between_orocos_and_ros1_both_ways(mixed: Path, tmp_path: Path) -> None:
+@pytest.mark.parametrize("fmt", ["lua", "xml", "ops"])
+def test_messages_cross_between_orocos_and_ros1_both_ways(fmt: str, mixed: Path, tmp_path: Path) -> None:
     (tmp_path / "logs").mkdir()
     ros = _ros_env(tmp_path, _free_port())
     roscore = _start(["roscore", "-p", ros["ROS_MASTER_URI"].rsplit(":", 1)[1]], ros, tmp_path / "roscore.out")
-    hosts = MixedHosts(mixed / "orocos", tmp_path, "lua", ros)
+    hosts = MixedHosts(mixed / "orocos", tmp_path, fmt, ros)
     launch = None
     try:
         _wait_master(ros, roscore)
