@@ -6,7 +6,7 @@ from Debian: omniidl, libomniorb4-dev, omniorb-nameserver, omniorb for
 nameclt); these tests use the helpers of toolchains/orocos/env.sh.
 
 The fixture ``distributed`` runs the headlamp application on two hosts; its
-force sensor is a ROS 1 node, which needs rtt_roscomm (not built here), so the
+force sensor is a ROS 1 node, which needs rtt_roscomm (toolchains/orocos/build-ros.sh; tests/test_rtt_ros.py runs it), so the
 processes-talking tests deploy the same model with that execution environment
 made Orocos: two hosts (both on loopback addresses), four deployer processes,
 the shared thread ``controlLoop`` (arm and controller in one SlaveActivity
@@ -335,4 +335,4 @@ def test_the_ros_link_of_the_mixed_model_needs_rtt_roscomm(built: Path, tmp_path
                 f"-s control_pc_rtt_control.xml -- -ORBInitRef NameService=corbaname::127.0.0.1:{_free_port()} </dev/null",
                 out / "deploy", timeout=120)
     assert run.returncode != 0
-    assert "rtt_rosnode" in run.stdout + run.stderr
+    assert "rtt_ros" in run.stdout + run.stderr  # the first rtt_ros_integration package it imports

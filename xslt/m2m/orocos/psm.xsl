@@ -71,6 +71,8 @@
     ORO011  a required operation the realizing class does not declare
     ORO013  an attribute the convention would make a property that has a
             type Orocos cannot carry (it is no property)
+    ORO120  a StartAfter pair whose earlier instance is deployed on another
+            middleware: the start scripts cannot wait for it (named, not kept)
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -459,6 +461,12 @@
       </xsl:for-each>
       <xsl:for-each select="$instance/pim:start-after[@instance ! map:contains($targets, string(.))]">
         <o:start-after instance="{@instance}" xmi-id="{@xmi-id}"/>
+      </xsl:for-each>
+      <!-- an earlier instance on another middleware: no start script of this package can wait for it -->
+      <xsl:for-each select="$instance/pim:start-after[not(map:contains($targets, string(@instance)))]">
+        <xsl:sequence select="f:warn('ORO120', @xmi-id, 'instance ''' || $instance/@name || ''' starts after '''
+            || @instance || ''' (StartAfter), which is not deployed on Orocos: the Orocos start scripts cannot wait'
+            || ' for it; start it (with its own target''s files) before the process of ''' || $instance/@name || '''')"/>
       </xsl:for-each>
     </o:instance>
   </xsl:function>

@@ -176,16 +176,20 @@
         else string-join($constrained ! (concat(@name, ' after ', string-join(distinct-values(o:start-after/@instance), ', '))), '; ')"/>
   </xsl:function>
 
-  <!-- the packages a deployment imports: the ROS transport (rtt_roscomm,
-       its node, the typekits of the std_msgs primitives) when it streams
-       to ROS topics -->
+  <!-- the packages a deployment imports when it streams to ROS topics:
+       rtt_ros (its typekit names the C++ primitives as ROS does: int is
+       also int32, double float64; RTT 2.10 calls them int, double), the ROS
+       node (rtt_rosnode), the ROS transport (rtt_roscomm) and rtt_std_msgs,
+       whose primitives transport carries exactly those ROS names: without
+       rtt_ros first an int port has no ROS transport ("No such transport
+       registered ... for type int") -->
   <xsl:function name="fp:deploy-imports" as="xs:string*">
     <xsl:param name="deployment" as="element(o:deployment)"/>
     <xsl:sequence select="if ($deployment/o:connection[@transport eq 'ros']) then fp:deploy-imports-ros() else ()"/>
   </xsl:function>
   <!-- those packages (also the package.xml's dependencies, orocos-build.xsl) -->
   <xsl:function name="fp:deploy-imports-ros" as="xs:string+">
-    <xsl:sequence select="('rtt_rosnode', 'rtt_roscomm', 'rtt_std_msgs')"/>
+    <xsl:sequence select="('rtt_ros', 'rtt_rosnode', 'rtt_roscomm', 'rtt_std_msgs')"/>
   </xsl:function>
 
   <!-- "process 'P' of host 'H': one of N" for the deployment of one of

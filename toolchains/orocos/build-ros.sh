@@ -1,0 +1,170 @@
+#!/usr/bin/env bash
+# Builds the Orocos <-> ROS 1 integration robomda's rtt_ros_toolchain tests use: the packages of
+# rtt_ros_integration an Orocos deployment with a stream to a ROS topic imports (rtt_ros, rtt_rospack,
+# rtt_rosnode, rtt_roscomm and the std_msgs typekits, rtt_std_msgs), from public sources, against the
+# Orocos toolchain that build.sh beside this file installs and Debian 12's ROS 1 (catkin, roscpp,
+# std_msgs, genmsg: the Noetic-era packages of bookworm), into $RTT_ROS_HOME (default ~/rtt_ros):
+#
+#   $RTT_ROS_HOME/src/rtt_ros_integration    the repository of sources-ros.tsv, at its verified commit
+#   $RTT_ROS_HOME/build_isolated, devel_isolated   catkin_make_isolated's folders
+#   $RTT_ROS_HOME/install                    the packages (lib/orocos/gnulinux/<package>: what the
+#                                            deployer's Import finds through RTT_COMPONENT_PATH)
+#
+# Usage: build-ros.sh [--check] [--no-apt] [--sources-only]
+#   --check          build nothing: report what is present and what is missing (Debian packages, the
+#                    Orocos toolchain, the source and its commit, the plugins and typekits installed), then
+#                    run them once: a roscore of its own on a free port of 127.0.0.1, an rttlua script
+#                    that imports rtt_rosnode, rtt_roscomm and rtt_std_msgs and streams an int port to a
+#                    ROS topic and another from one, rostopic reading the first and publishing the second;
+#                    exit status 1 if anything is missing or no message crosses either way
+#   --no-apt         do not install Debian packages (only check they are there)
+#   --sources-only   stop after fetching the source (to build later, offline)
+# Environment: OROCOS_HOME / OROCOS_INSTALL (the Orocos toolchain, as for env.sh); RTT_ROS_HOME; MIRROR,
+# a folder of fetched bare mirrors (MIRROR/orocos+rtt_ros_integration/repo), cloned instead of the public
+# URL when set; JOBS (make jobs, default 2); NICE (default 19).
+# Source env-ros.sh beside this script to use the result. Takes ~25 min on 2 cores (the std_msgs
+# typekit is most of it).
+set -euo pipefail
+
+HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+WS=${RTT_ROS_HOME:-$HOME/rtt_ros}
+PREFIX=$WS/install
+SRC=$WS/src
+JOBS=${JOBS:-2}
+NICE=${NICE:-19}
+CHECK=0 APT=1 SOURCES_ONLY=0
+for arg in "$@"; do
+  case $arg in
+    --check) CHECK=1 ;;
+    --no-apt) APT=0 ;;
+    --sources-only) SOURCES_ONLY=1 ;;
+    -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
+    *) echo "build-ros.sh: unknown option $arg (see --help)" >&2; exit 2 ;;
+  esac
+done
+
+# Debian packages: catkin and the ROS 1 libraries rtt_ros_integration builds on (roscpp, rostime,
+# rospack, roslib), the message generators and std_msgs (the typekit), libxml2 (rtt_ros), and the tools
+# that run a ROS 1 system (roscore, rosout, roslaunch, rostopic); std_srvs for the nodes robomda generates
+APT_PACKAGES=(build-essential cmake git ca-certificates catkin python3-catkin-pkg python3-empy
+              libroscpp-dev libroscpp-core-dev librospack-dev libroslib-dev libxml2-dev
+              python3-genmsg python3-gencpp ros-message-generation ros-std-msgs libstd-msgs-dev
+              ros-std-srvs libstd-srvs-dev python3-roslaunch python3-rostopic python3-rosnode rosout)
+# the packages built (with what they depend on: rtt_ros, rtt_rospack)
+PACKAGES=(rtt_rosnode rtt_roscomm rtt_std_msgs)
+# what an install that can stream to ROS holds (relative to $PREFIX/lib/orocos/gnulinux)
+PLUGINS=(rtt_ros/plugins/librtt_ros_service-gnulinux.so rtt_rosnode/plugins/librtt_rosnode-gnulinux.so
+         rtt_roscomm/plugins/librtt_rostopic_service-gnulinux.so
+         rtt_std_msgs/types/librtt-std_msgs-typekit-gnulinux.so
+         rtt_std_msgs/types/librtt-std_msgs-ros-transport-gnulinux.so
+         rtt_std_msgs/plugins/librtt-ros-primitives-transport-gnulinux.so)
+
+# say, missing, apt_step (toolchains/common.sh)
+source "$HERE/../common.sh"
+
+# --- Debian packages ------------------------------------------------------------------------------
+apt_step
+
+# --- the Orocos toolchain (build.sh) --------------------------------------------------------------
+# shellcheck disable=SC1091
+source "$HERE/env.sh" >/dev/null
+for f in bin/deployer bin/rttlua lib/liborocos-rtt-gnulinux.so; do
+  [ -e "$OROCOS_INSTALL/$f" ] || missing "the Orocos toolchain: no $OROCOS_INSTALL/$f (build it with build.sh)"
+done
+if [ $MISSING = 1 ] && [ $CHECK = 0 ]; then say "build the Orocos toolchain first"; exit 1; fi
+
+# --- source -----------------------------------------------------------------------------------------
+while IFS=$'\t' read -r name url ref commit; do
+  case $name in ''|'#'*) continue ;; esac
+  dest=$SRC/$name
+  if [ -d "$dest/.git" ]; then
+    got=$(git -C "$dest" rev-parse HEAD)
+    if [ "$got" = "$commit" ]; then say "source $name: at the verified $commit"
+    elif [ $CHECK = 1 ]; then say "source $name: at $got, not the verified $commit"
+    else git -C "$dest" -c advice.detachedHead=false checkout -q "$commit"; say "source $name: checked out $commit"; fi
+    continue
+  fi
+  if [ $CHECK = 1 ]; then missing "source $name ($url $ref) in $SRC"; continue; fi
+  mkdir -p "$SRC"
+  from=$url
+  if [ -n "${MIRROR:-}" ] && [ -d "$MIRROR/orocos+$name/repo" ]; then from=$MIRROR/orocos+$name/repo; fi
+  say "source $name: git clone --branch $ref $from"
+  git clone -q --branch "$ref" "$from" "$dest"
+  git -C "$dest" -c advice.detachedHead=false checkout -q "$commit"
+done < "$HERE/sources-ros.tsv"
+if [ $SOURCES_ONLY = 1 ] && [ $CHECK = 0 ]; then say "source fetched into $SRC"; exit 0; fi
+
+# --- check: files, then one run both ways ------------------------------------------------------------
+check_runs() {
+  # shellcheck disable=SC1091
+  source "$HERE/env-ros.sh" >/dev/null
+  local tmp port master rc=0 out
+  tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtt-ros-check.XXXXXX")
+  port=$(python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+  export ROS_MASTER_URI=http://127.0.0.1:$port ROS_IP=127.0.0.1 ROS_HOME=$tmp/ros
+  setsid roscore -p "$port" >"$tmp/roscore.log" 2>&1 &
+  master=$!
+  if ! ros_wait_master 30; then
+    missing "run: roscore -p $port did not answer in 30 s: $(tail -n 3 "$tmp/roscore.log" | tr '\n' ' ')"
+  else
+    cat > "$tmp/both.lua" <<'LUA'
+require("rttlib")
+local tc = rtt.getTC()
+local depl = tc:getPeer("Deployer")
+for _, p in ipairs({"rtt_rosnode", "rtt_roscomm", "rtt_std_msgs"}) do assert(depl:import(p), "import " .. p) end
+local topic = rtt.provides("ros"):getOperation("topic")
+local out, inp = rtt.OutputPort("int"), rtt.InputPort("int")
+tc:addPort(out, "out"); tc:addPort(inp, "inp")
+assert(depl:stream("lua.out", topic("/robomda_check_out")), "stream lua.out to /robomda_check_out")
+assert(depl:stream("lua.inp", topic("/robomda_check_in")), "stream lua.inp from /robomda_check_in")
+local got = nil
+for k = 1, 200 do
+  out:write(k)
+  local fs, v = inp:read()
+  if fs == "NewData" then got = v; break end
+  rtt.sleep(0, 100000000)
+end
+print("FROM-ROS " .. tostring(got))
+for k = 1, 20 do out:write(1000 + k); rtt.sleep(0, 100000000) end
+LUA
+    timeout -k 5 40 rostopic echo -n 1 /robomda_check_out >"$tmp/echo.out" 2>&1 &
+    local echo=$!
+    timeout -k 5 40 rostopic pub -r 5 /robomda_check_in std_msgs/Int32 "data: 4242" >/dev/null 2>&1 &
+    local pub=$!
+    out=$(cd "$tmp" && timeout -k 5 60 rttlua both.lua </dev/null 2>&1) || rc=$?
+    wait $echo 2>/dev/null || true
+    kill $pub 2>/dev/null || true; wait $pub 2>/dev/null || true
+    if [ $rc = 0 ] && grep -q '^FROM-ROS 4242$' <<<"$out"; then say "run: ROS 1 -> Orocos (rostopic pub -> rtt_roscomm stream -> int port): OK"
+    else missing "run: ROS 1 -> Orocos failed (rttlua exit $rc): $(tail -n 5 <<<"$out" | tr '\n' ' ')"; fi
+    if grep -q '^data: [0-9]' "$tmp/echo.out"; then say "run: Orocos -> ROS 1 (int port -> rtt_roscomm stream -> rostopic echo): OK"
+    else missing "run: Orocos -> ROS 1 failed: rostopic echo read $(tr '\n' ' ' < "$tmp/echo.out" | cut -c1-300)"; fi
+  fi
+  kill -INT -- -"$master" 2>/dev/null || true
+  wait $master 2>/dev/null || true
+  rm -rf "$tmp"
+}
+
+if [ $CHECK = 1 ]; then
+  for f in "${PLUGINS[@]}"; do [ -e "$PREFIX/lib/orocos/gnulinux/$f" ] || missing "$PREFIX/lib/orocos/gnulinux/$f"; done
+  for p in roscore rostopic roslaunch catkin_make; do command -v $p >/dev/null || missing "$p (Debian: see --help)"; done
+  if [ $MISSING = 0 ]; then check_runs; else say "runs skipped: the install is incomplete"; fi
+  if [ $MISSING = 0 ]; then say "check: OK ($PREFIX)"; else say "check: FAILED ($PREFIX cannot stream to ROS 1)"; fi
+  exit $MISSING
+fi
+
+# --- build --------------------------------------------------------------------------------------------
+# catkin_make_isolated builds each package on its own, in dependency order, and installs into $PREFIX.
+# PYTHON_EXECUTABLE: catkin's generators run under Debian's Python (catkin_pkg, genmsg, gencpp), not
+# whatever python3 is first on PATH.
+# Their scripts run as '#!/usr/bin/env python3' too (rtt_roscomm's create_boost_header.py imports roslib):
+# Debian's python3 goes first on PATH, or a pyenv / venv python3 fails with "No module named 'roslib'".
+mkdir -p "$WS/bin"
+ln -sf /usr/bin/python3 "$WS/bin/python3"
+export PATH=$WS/bin:$PATH
+say "build ${PACKAGES[*]} (and what they depend on) into $PREFIX"
+cd "$WS"
+nice -n "$NICE" /usr/bin/python3 /usr/bin/catkin_make_isolated --install --install-space "$PREFIX" \
+  --only-pkg-with-deps "${PACKAGES[@]}" -j"$JOBS" \
+  --cmake-args -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE_TESTING=OFF
+say "rtt_ros_integration installed under $PREFIX; checking it"
+exec "$0" --check
