@@ -782,8 +782,9 @@ def test_smoke_program(case: str, tmp_path: Path):
 
 @pytest.mark.parametrize("script", [CASES_DIR / "tuned" / "make.py", CASES_DIR / "undeployed" / "make.py",
                                     ROOT / "fixtures" / "ros" / "jointstate" / "make.py",
-                                    ROOT / "fixtures" / "ros" / "managed" / "make.py"],
-                         ids=["tuned", "undeployed", "jointstate", "managed"])
+                                    ROOT / "fixtures" / "ros" / "managed" / "make.py",
+                                    CASES_DIR / "pidswap" / "make.py"],
+                         ids=["tuned", "undeployed", "jointstate", "managed", "pidswap"])
 def test_derived_fixture_is_what_its_make_py_writes(script: Path):
     """A derived fixture is its source model with the edits its make.py lists, and nothing else."""
     import importlib.util

@@ -30,7 +30,9 @@
     pim:composite-instance, pim:instance/@path, @parent), and the assembly
     connectors of each composite part are connections too, their ends on a
     composite's port resolved through its delegation connectors; otherwise one instance per non-abstract component that has
-    ports or a realization, named after the component. Instance names are
+    ports or a realization and is no «Alternative» (a component that may
+    replace another, checked by xslt/check/substitute.xsl, is not part of
+    the system until a part is typed by it), named after the component. Instance names are
     made valid C++ identifiers (xslt/common/naming.xsl).
   - per instance: execution environment (the ExecutionEnvironment that the
     part, component, top composite, realizing class, or an artifact that
@@ -430,7 +432,7 @@
                 then $expansion/fp:unit ! (let $root := root($components[1]) return
                      map { 'part': key('fp:id', @part, $root), 'component': key('fp:id', @component, $root),
                            'around': tokenize(@around) })
-                else $components[not(@abstract = ('true', '1'))][pim:port or pim:realization]
+                else $components[not(@abstract = ('true', '1'))][pim:port or pim:realization][empty(f:stereotype(., 'Alternative'))]
                      ! map { 'component': ., 'around': () }"/>
     <xsl:variable name="found" as="element(pim:node)*"
         select="$placed ! fp:instance-ee(?part, ?component, ?around, $ees)"/>
@@ -468,7 +470,7 @@
           </xsl:for-each>
         </xsl:when>
         <xsl:otherwise>
-          <xsl:for-each select="$components[not(@abstract = ('true', '1'))][pim:port or pim:realization]">
+          <xsl:for-each select="$components[not(@abstract = ('true', '1'))][pim:port or pim:realization][empty(f:stereotype(., 'Alternative'))]">
             <xsl:try>
               <xsl:sequence select="fp:instance((), ., (), $ees, $hosts)"/>
               <xsl:catch><xsl:sequence select="fp:caught($err:code, $err:description, $err:value)"/></xsl:catch>
