@@ -458,8 +458,13 @@ def test_profile_matches_spec(profile):
         "Thread": (["ExecutionEnvironment"], ["period", "priority", "scheduler", "cpuAffinity"]),
         "ComponentSet": (["Artifact"], []),
         "Bus": (["CommunicationPath"], ["kind", "bandwidth"]),
+        # seed 004 (docs/substitution.md)
+        "Category": (["Component"], ["kind"]),
+        "Alternative": (["Component"], ["replaces"]),
+        "Constant": (["Port", "Interface"], []),
     }
     assert {k: (v["metas"], list(v["tags"])) for k, v in profile.items()} == expected
+    assert profile["Category"]["tags"]["kind"] == "generic"  # as xslt/import/profile-defaults.xml
     assert profile["Activity"]["tags"]["scheduler"] == "OTHER"
     assert profile["ConnectionPolicy"]["tags"]["lockPolicy"] == "LOCK_FREE"
     # an unset dof is 0 (EMF's Integer default), which means "not given"
