@@ -116,7 +116,7 @@
   <xsl:function name="fp:bound-view" as="element(pim:bound-component)">
     <xsl:param name="component" as="element(pim:component)"/>
     <xsl:param name="binding" as="element(pim:binding)"/>
-    <xsl:sequence select="($binding/pim:bound-component[@component eq $component/@id], fp:bound-component($component))[1]"/>
+    <xsl:sequence select="(key('fp:bc', $component/@id, root($binding)), fp:bound-component($component))[1]"/>
   </xsl:function>
 
   <!-- the configuration constants a component accepts: the attributes of

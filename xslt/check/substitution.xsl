@@ -11,7 +11,8 @@
            for `check the replace option` and «Alternative»; later a job's swap or a
            variability alternative) raises the maps it returns with
            f:fail-all, so every violation of every swap is reported at once.
-  Params:  none.  Keys: none of its own (the caller's bound view is passed in).
+  Params:  none.  Keys: fp:sub-writers (a binding's connections by interface),
+           fp:sub-providers (its provided service ports by interface).
 
   Function
     f:substitution-problems($swap)  maps (code, id, message) for f:fail-all,
@@ -53,6 +54,9 @@
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
     exclude-result-prefixes="#all">
+
+  <xsl:key name="fp:sub-writers" match="pim:binding/pim:connection" use="@interface"/>
+  <xsl:key name="fp:sub-providers" match="pim:binding/pim:bound-component/pim:service-port[@role eq 'provided']" use="@interface"/>
 
   <!-- seed 004's component categories: the «Category» kind literal and
        the words the messages use -->
@@ -134,7 +138,7 @@
               || fp:sub-type-label($same) || ': what feeds it now does not fit' }"/>
         </xsl:when>
         <xsl:when test="exists($same)"/>
-        <xsl:when test="exists($binding/pim:connection[@interface eq current()/@interface][pim:writer[not(@instance = $names)]])"/>
+        <xsl:when test="exists(key('fp:sub-writers', @interface, root($binding))[pim:writer[not(@instance = $names)]])"/>
         <xsl:otherwise>
           <xsl:sequence select="map { 'code': 'SUB003', 'id': string(@port), 'message': $head || 'it needs input port '''
               || @name || ''' (' || fp:sub-type-label(.) || '), which ''' || $swap?old/@name
@@ -145,8 +149,7 @@
     </xsl:for-each>
     <xsl:for-each select="$swap?new-bound/pim:service-port[@role eq 'required']
                             [not(@interface = $old/pim:service-port[@role eq 'required']/@interface)]
-                            [not(@interface = $binding/pim:bound-component[not(@component eq $swap?old/@id)]
-                                                /pim:service-port[@role eq 'provided']/@interface)]">
+                            [empty(key('fp:sub-providers', @interface, root($binding))[not(../@component eq $swap?old/@id)])]">
       <xsl:sequence select="map { 'code': 'SUB003', 'id': string(@port), 'message': $head || 'it calls interface '''
           || @interface-name || ''' (port ''' || @port-name || '''), which ''' || $swap?old/@name
           || ''' does not call and no other component of the model provides' }"/>
