@@ -115,6 +115,8 @@
     BND016  (warning) a property of a composite promotes the property of no part
     BND017  a property of a composite names the properties of several parts
     BND018  a part sets a value on a property its type does not have
+  Notes: SUB030 an «Alternative» component that no part instantiates is
+  not generated (xslt/check/substitute.xsl checks it).
   Warnings: BND028 the model draws no execution environment: its instances
   run in one default process per host (bind/instances.xsl), named once,
   on the first instance, with how to model the platform.
@@ -330,6 +332,13 @@
     <xsl:sequence select="f:fail-all($instance-tree/fp:error ! f:error-map(@description))"/>
     <xsl:variable name="instances" as="element(pim:instance)*" select="$instance-tree/pim:instance"/>
     <xsl:sequence select="fp:warn-default-processes(., $instances)"/>
+    <!-- an «Alternative» that no part instantiates: said, not dropped in silence -->
+    <xsl:for-each select="$components[exists(f:stereotype(., 'Alternative'))][empty(key('fp:instance-by-component', @id, $instance-tree))]">
+      <xsl:message select="'SUB030: component ''' || @name || ''' is an «Alternative» of '''
+          || string-join(f:stereotype(., 'Alternative')/pim:tag[@name eq 'replaces'] ! string((key('fp:id', @value, $root)/@name, @value)[1]), ''', ''')
+          || ''': no instance of the system, so nothing is generated for it; robomda check checks the swap'
+          || ' [xmi:id=' || @id || ']'"/>
+    </xsl:for-each>
     <xsl:variable name="same-names" as="map(*)*">
       <xsl:for-each-group select="$instances" group-by="@name">
         <xsl:if test="count(current-group()) gt 1">
