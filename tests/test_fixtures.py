@@ -458,8 +458,13 @@ def test_profile_matches_spec(profile):
         "Thread": (["ExecutionEnvironment"], ["period", "priority", "scheduler", "cpuAffinity"]),
         "ComponentSet": (["Artifact"], []),
         "Bus": (["CommunicationPath"], ["kind", "bandwidth"]),
+        # seed 004 (docs/substitution.md)
+        "Category": (["Component"], ["kind"]),
+        "Alternative": (["Component"], ["replaces"]),
+        "Constant": (["Port", "Interface"], []),
     }
     assert {k: (v["metas"], list(v["tags"])) for k, v in profile.items()} == expected
+    assert profile["Category"]["tags"]["kind"] == "generic"  # as xslt/import/profile-defaults.xml
     assert profile["Activity"]["tags"]["scheduler"] == "OTHER"
     assert profile["ConnectionPolicy"]["tags"]["lockPolicy"] == "LOCK_FREE"
     # an unset dof is 0 (EMF's Integer default), which means "not given"
@@ -784,8 +789,9 @@ def test_smoke_program(case: str, tmp_path: Path):
                                     CASES_DIR / "structured" / "make.py",
                                     ROOT / "fixtures" / "ros" / "jointstate" / "make.py",
                                     ROOT / "fixtures" / "ros" / "managed" / "make.py",
-                                    ROOT / "fixtures" / "ros" / "usercode" / "make.py"],
-                         ids=["tuned", "undeployed", "structured", "jointstate", "managed", "usercode"])
+                                    ROOT / "fixtures" / "ros" / "usercode" / "make.py",
+                                    CASES_DIR / "pidswap" / "make.py"],
+                         ids=["tuned", "undeployed", "structured", "jointstate", "managed", "usercode", "pidswap"])
 def test_derived_fixture_is_what_its_make_py_writes(script: Path):
     """A derived fixture is its source model with the edits its make.py lists, and nothing else."""
     import importlib.util

@@ -47,7 +47,10 @@ pytestmark = [
 MODELS = ["headlamp/model.xmi", "headlamp/model.ea.xmi", "meka/model.xmi", "meka/model.ea.xmi",
           "pid/model.xmi", "tuned/model.xmi", "split/model.xmi", "calligraphy/model.xmi", "learning/model.xmi",
           # structured data: a typekit, struct / enum / array ports and properties
-          "quadarm/model.xmi", "structured/model.xmi"]
+          "quadarm/model.xmi", "structured/model.xmi",
+          # seed 004: a configuration constant, read by the controller in its configureHook
+          "pidswap/model.xmi"]
+
 
 
 def _bash(script: str, cwd: Path, timeout: int = 1200) -> subprocess.CompletedProcess[str]:
@@ -107,6 +110,22 @@ def test_self_check_reads_back_the_modelled_values(model: str, tmp_root: Path) -
     check = next((out / "deploy").glob("*-check.lua"))
     run = _bash(f"oro_add_prefix {out}/install && timeout -s INT 120 rttlua {check} </dev/null", out.parent)
     assert run.returncode == 0 and "DEPLOY-RESULT: OK" in run.stdout, run.stdout[-4000:] + run.stderr[-2000:]
+
+
+def test_a_constant_read_before_its_writer_configures_fails_the_configure(tmp_root: Path) -> None:
+    """pidswap's controller reads the robot interface's torque limit («Constant») in configureHook: it
+    configures (the deployment above runs) because a StartAfter puts the robot interface first. Without it
+    the deployer configures the controller first, which finds nothing written and refuses (SUB020 warned)."""
+    out, _ = _built("pidswap/model.xmi", tmp_root)
+    text = (CASES / "pidswap" / "model.xmi").read_text(encoding="utf-8")
+    unordered = tmp_root / "unordered" / "model.xmi"
+    unordered.parent.mkdir(exist_ok=True)
+    unordered.write_text("\n".join(l for l in text.splitlines() if "_pswD01" not in l) + "\n", encoding="utf-8")
+    generate(unordered, tmp_root / "unordered" / "pkg", "orocos")
+    deploy = tmp_root / "unordered" / "pkg" / "deploy" / "pidswap.xml"
+    run = _bash(f"oro_add_prefix {out}/install && oro_verdict oro_deploy_verify {deploy} 2", deploy.parent)
+    assert "oro_verdict: FAILED" in run.stdout, run.stdout[-3000:]
+    assert "Component PIDController returns false in configure()" in run.stdout + run.stderr, run.stdout[-3000:]
 
 
 @pytest.mark.parametrize("fmt", ["xml", "ops", "lua"])

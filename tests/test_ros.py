@@ -372,6 +372,21 @@ def test_ros1_pid_runs_under_roscore(catkin_ws: Path) -> None:
             assert service.returncode == 0, service.stderr
 
 
+def test_ros1_configuration_constant_reaches_a_late_subscriber(catkin_ws: Path) -> None:
+    """Seed 004's configuration constant («Constant», pidswap's torque limit): the robot interface publishes
+    it once, on a latched topic, so a subscriber that comes long after still receives it, and only it."""
+    with _roscore_running(catkin_ws, catkin_ws / "src/pidswap/launch/pidswap.launch") as env:
+        _wait_for(env, {"/PIDController", "/RobotInterface"}, {"/IJointLimitConn", "/IReferenceTorqueConn"})
+        # the loop runs (torques flow) well after the one publish of the limit
+        torques = subprocess.run(["rostopic", "echo", "-n", "20", "/IReferenceTorqueConn"], env=env,
+                                 capture_output=True, text=True, timeout=30).stdout
+        assert torques.count("data:") == 20, torques
+        late = subprocess.run(["timeout", "5", "rostopic", "echo", "/IJointLimitConn"], env=env,
+                              capture_output=True, text=True)
+        # the latched sample, once: nothing is published per cycle
+        assert re.findall(r"data: (\S+)", late.stdout) == ["5.0"], late.stdout + late.stderr
+
+
 def test_ros1_package_moved_away_names_the_option_then_configures(tmp_path: Path) -> None:
     """A package copied into a workspace failed with an unexplained NOTFOUND (issue 10 item 7)."""
     cmake = _need("cmake")

@@ -32,6 +32,7 @@ OROCOS_RULES = ROOT / "schemas" / "psm-orocos" / "1" / "psm-orocos.sch"
 ROS_RULES = ROOT / "schemas" / "psm-ros" / "1" / "psm-ros.sch"
 ROS_LIMITS = ROOT / "schemas" / "psm-ros" / "1" / "ros-limits.sch"
 PID_PIM = CASES / "pid" / "expected" / "bind.xml"
+PIDSWAP_PIM = CASES / "pidswap" / "expected" / "bind.xml"  # seed 004: a configuration constant
 MEKA_PSM = CASES / "meka" / "expected" / "orocos" / "psm.xml"
 PID_ROS = CASES / "pid" / "expected" / "ros1" / "psm.xml"
 DIST_PIM = CASES / "distributed" / "expected" / "bind.xml"  # seed 002: hosts, processes, a thread, a set
@@ -74,6 +75,9 @@ CASES_BY_RULE: dict[str, tuple[Path, str | None, Path, list[tuple[str, str]]]] =
     "CMP006": (PIM_RULES, None, PID_PIM, [_SECOND_HOST, (r'(<pim:instance name="RobotInterface".*?<pim:activity [^>]*/>\s*)',
                                           r'\1<pim:deployed-on deployment="_d9" host="_h2"/>')]),
     "CMP003": (PIM_RULES, None, PID_PIM, [_SECOND_HOST, _ROBOT_ON_H2]),
+    # the controller, which reads the robot interface's torque limit in its configure, configured first
+    "SUB020": (PIM_RULES, None, PIDSWAP_PIM, [(r'(<pim:instance name="PIDController"[^>]*?)start-order="3"',
+                                               r'\1start-order="1"')]),
     "CMP004": (PIM_RULES, None, PID_PIM, [_SECOND_HOST, _ROBOT_ON_H2]),
     # arm, a member of thread controlLoop (process rttControl), in process rosSensor
     "CMP007": (PIM_RULES, None, DIST_PIM, [(r'(<pim:instance name="arm"[^>]*?)execution-environment="_dstRttControlEEk1L2m3N4"',

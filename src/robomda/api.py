@@ -197,7 +197,7 @@ def _type_map(type_map: Path | str | None) -> Path | None:
 
 def check(model: Path | str, target: str | None = None, *, package_name: str = "",
           type_map: Path | str | None = None, model_path: Sequence[Path | str] = (),
-          features: Path | str | None = None) -> Checked:
+          features: Path | str | None = None, replace: Sequence[str] = ()) -> Checked:
     """Run the checks of ``model`` without generating anything.
 
     With a ``target``, everything ``generate`` would check for it: the import
@@ -208,6 +208,10 @@ def check(model: Path | str, target: str | None = None, *, package_name: str = "
     rule files (and phases) that ran. Diagnostics found by several targets
     are reported once. Input that cannot be read at all still raises
     :class:`RobomdaError` (exit code 2).
+
+    Once those pass, the component swaps (seed 004's substitutability,
+    docs/substitution.md): every «Alternative» of the model, and each
+    ``replace`` pair ``"OLD=NEW"``, whose violations are errors SUB001-SUB011.
     """
     model = Path(model)
     if target is not None:
@@ -215,6 +219,7 @@ def check(model: Path | str, target: str | None = None, *, package_name: str = "
     _check_readable(model)
     context = _context(model, None, package_name, _type_map(type_map), model_path=_model_path(model_path),
                        features=features)
+    context["replace"] = " ".join(replace)
     diagnostics: list[Diagnostic] = []
     rule_sets: list[str] = []
     exit_code = EXIT_OK
@@ -251,8 +256,11 @@ def check(model: Path | str, target: str | None = None, *, package_name: str = "
             return Checked(diagnostics, ["model"], exit_code, rule_sets)
         chosen = _targets_of(shared) or [default_target()]
         diagnostics.clear()  # the targets' runs repeat the shared findings
+    last = shared
     for name in chosen:
-        run_until_text(name, shared)
+        last = run_until_text(name, shared) if exit_code == EXIT_OK else None
+    if exit_code == EXIT_OK and last is not None:
+        run_until_text("substitute", last)  # the swaps, on the bound PIM the last run made
     return Checked(diagnostics, chosen, exit_code, rule_sets)
 
 

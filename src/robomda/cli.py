@@ -139,6 +139,10 @@ def _parser() -> argparse.ArgumentParser:
     chk.add_argument("--features", type=Path, metavar="CONFIG", help="as for generate")
     chk.add_argument("--type-map", type=Path, metavar="FILE", help="as for generate")
     chk.add_argument("--model-path", type=Path, action="append", default=[], metavar="DIR", help="as for generate")
+    chk.add_argument("--replace", action="append", default=[], metavar="OLD=NEW",
+                     help="also check that component NEW may take the place of component OLD (seed 004: same "
+                          "outputs, no extra inputs, OLD's properties, a compatible period; docs/substitution.md); "
+                          "repeatable. Every «Alternative» of the model is checked anyway")
 
     wat = sub.add_parser(
         "watch", help="regenerate packages on each save of their models",
@@ -313,7 +317,7 @@ def _check(args: argparse.Namespace) -> int:
     from robomda.api import check
 
     done = check(args.model, args.target, package_name=args.package_name, type_map=args.type_map,
-                 model_path=args.model_path, features=args.features)
+                 model_path=args.model_path, features=args.features, replace=args.replace)
     _report(args.format, done.diagnostics, done.exit_code)
     summary = (f"robomda: {args.model}: {done.count('error')} errors, {done.count('warning')} warnings, "
                f"{done.count('info')} notes (checked for {', '.join(done.targets)}; rules: "

@@ -30,7 +30,9 @@
     pim:composite-instance, pim:instance/@path, @parent), and the assembly
     connectors of each composite part are connections too, their ends on a
     composite's port resolved through its delegation connectors; otherwise one instance per non-abstract component that has
-    ports or a realization, named after the component. Instance names are
+    ports or a realization and is no «Alternative» (a component that may
+    replace another, checked by xslt/check/substitute.xsl, is not part of
+    the system until a part is typed by it), named after the component. Instance names are
     made valid C++ identifiers (xslt/common/naming.xsl).
   - per instance: execution environment (the ExecutionEnvironment that the
     part, component, top composite, realizing class, or an artifact that
@@ -113,6 +115,8 @@
     BND016  (warning) a property of a composite promotes the property of no part
     BND017  a property of a composite names the properties of several parts
     BND018  a part sets a value on a property its type does not have
+  Notes: SUB030 an «Alternative» component that no part instantiates is
+  not generated (xslt/check/substitute.xsl checks it).
   Warnings: BND028 the model draws no execution environment: its instances
   run in one default process per host (bind/instances.xsl), named once,
   on the first instance, with how to model the platform.
@@ -328,6 +332,13 @@
     <xsl:sequence select="f:fail-all($instance-tree/fp:error ! f:error-map(@description))"/>
     <xsl:variable name="instances" as="element(pim:instance)*" select="$instance-tree/pim:instance"/>
     <xsl:sequence select="fp:warn-default-processes(., $instances)"/>
+    <!-- an «Alternative» that no part instantiates: said, not dropped in silence -->
+    <xsl:for-each select="$components[exists(f:stereotype(., 'Alternative'))][empty(key('fp:instance-by-component', @id, $instance-tree))]">
+      <xsl:message select="'SUB030: component ''' || @name || ''' is an «Alternative» of '''
+          || string-join(f:stereotype(., 'Alternative')/pim:tag[@name eq 'replaces'] ! string((key('fp:id', @value, $root)/@name, @value)[1]), ''', ''')
+          || ''': no instance of the system, so nothing is generated for it; robomda check checks the swap'
+          || ' [xmi:id=' || @id || ']'"/>
+    </xsl:for-each>
     <xsl:variable name="same-names" as="map(*)*">
       <xsl:for-each-group select="$instances" group-by="@name">
         <xsl:if test="count(current-group()) gt 1">
@@ -430,7 +441,7 @@
                 then $expansion/fp:unit ! (let $root := root($components[1]) return
                      map { 'part': key('fp:id', @part, $root), 'component': key('fp:id', @component, $root),
                            'around': tokenize(@around) })
-                else $components[not(@abstract = ('true', '1'))][pim:port or pim:realization]
+                else $components[not(@abstract = ('true', '1'))][pim:port or pim:realization][empty(f:stereotype(., 'Alternative'))]
                      ! map { 'component': ., 'around': () }"/>
     <xsl:variable name="found" as="element(pim:node)*"
         select="$placed ! fp:instance-ee(?part, ?component, ?around, $ees)"/>
@@ -468,7 +479,7 @@
           </xsl:for-each>
         </xsl:when>
         <xsl:otherwise>
-          <xsl:for-each select="$components[not(@abstract = ('true', '1'))][pim:port or pim:realization]">
+          <xsl:for-each select="$components[not(@abstract = ('true', '1'))][pim:port or pim:realization][empty(f:stereotype(., 'Alternative'))]">
             <xsl:try>
               <xsl:sequence select="fp:instance((), ., (), $ees, $hosts)"/>
               <xsl:catch><xsl:sequence select="fp:caught($err:code, $err:description, $err:value)"/></xsl:catch>

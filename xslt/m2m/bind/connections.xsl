@@ -33,8 +33,19 @@
   <xsl:function name="fp:policy" as="element(pim:policy)">
     <xsl:param name="candidates" as="element()*"/>
     <xsl:variable name="element" as="element()?" select="$candidates[exists(f:stereotype(., 'ConnectionPolicy'))][1]"/>
-    <xsl:sequence select="if (empty($element)) then $fp:default-policy else fp:policy-of($element)"/>
+    <xsl:sequence select="if (exists($element)) then fp:policy-of($element)
+                          else if (exists($candidates[exists(f:stereotype(., 'Constant'))])) then $fp:constant-policy
+                          else $fp:default-policy"/>
   </xsl:function>
+
+  <!-- the policy of a connection that carries a configuration constant
+       («Constant» on a port or the interface, seed 004) and that no
+       ConnectionPolicy configures: init, so that a reader connected after
+       the one write still gets it (Orocos ConnPolicy init, a latched ROS 1
+       topic, transient-local ROS 2 durability) -->
+  <xsl:variable name="fp:constant-policy" as="element(pim:policy)">
+    <pim:policy type="DATA" size="1" lock-policy="LOCK_FREE" init="true" pull="false" topic="" source="constant"/>
+  </xsl:variable>
 
   <!-- the policy given by the ConnectionPolicy stereotype of $e -->
   <xsl:function name="fp:policy-of" as="element(pim:policy)">

@@ -5,7 +5,8 @@
   Reads:   the PIM (urn:robomda:pim:1) and the working trees of fp:binding.
   Writes:  parts of pim:binding (schemas/pim/1/binding.xsd), or values.
   Params:  none.  Keys: those of bind.xsl.
-  Provides: fp:bound-component, fp:port-interfaces, fp:data-ports, fp:port-problems.
+  Provides: fp:bound-component, fp:port-interfaces, fp:data-ports, fp:port-problems,
+           fp:constant («Constant»: data-port/@constant).
   Errors:  BND002, BND004, BND005 (as data for f:fail-all), BND011.
 -->
 <xsl:stylesheet version="3.0"
@@ -120,6 +121,17 @@
     </xsl:for-each>
   </xsl:function>
 
+  <!-- constant="true" when the port, or the interface it carries, is
+       stereotyped «Constant»: a configuration constant exchanged once at
+       initialisation (seed 004 Fig. 5), not data of every cycle -->
+  <xsl:function name="fp:constant" as="attribute(constant)?">
+    <xsl:param name="port" as="element(pim:port)"/>
+    <xsl:param name="interface" as="element()?"/>
+    <xsl:if test="exists(($port, $interface[self::pim:interface]) ! f:stereotype(., 'Constant'))">
+      <xsl:attribute name="constant" select="'true'"/>
+    </xsl:if>
+  </xsl:function>
+
   <!-- a port's own type that is its data (a data type, primitive or
        enumeration of the model; the port itself for a library primitive) -->
   <xsl:function name="fp:is-data-type" as="xs:boolean">
@@ -157,7 +169,7 @@
                          port-name="{$port/@name}" direction="{$pairs[2 * current()]}"
                          interface="{$instance/@id}" interface-name="{($instance/self::pim:port/@type-name, $instance/@name)[1]}"
                          datum="{$port/@id}" datum-name="{$port/@name}">
-            <xsl:sequence select="$port/(@primitive, @type, @type-name, @lower, @upper)"/>
+            <xsl:sequence select="$port/(@primitive, @type, @type-name, @lower, @upper), fp:constant($port, ())"/>
           </pim:data-port>
         </xsl:when>
         <xsl:otherwise>
@@ -170,7 +182,7 @@
             <xsl:if test="fp:direction-guessed($port, $component, $realization)">
               <xsl:attribute name="direction-source" select="'guessed'"/>
             </xsl:if>
-            <xsl:sequence select="$data/(@primitive, @type, @type-name, @lower, @upper)"/>
+            <xsl:sequence select="$data/(@primitive, @type, @type-name, @lower, @upper), fp:constant($port, $instance)"/>
           </pim:data-port>
         </xsl:otherwise>
       </xsl:choose>

@@ -277,10 +277,11 @@
           select="fp:oro-required-type(., @port, 'port ''' || @port-name || ''' (datum ''' || @datum-name || ''' of interface ''' || @interface-name || ''')')"/>
       <xsl:variable name="accessor" as="xs:string" select="fp:accessor(.)"/>
       <o:port xmi-id="{@port}" direction="{@direction}"
-              event="{@direction eq 'in' and $non-periodic}"
+              event="{@direction eq 'in' and $non-periodic and not(@constant = ('true', '1'))}"
               rtt-class="{if (@direction eq 'out') then 'RTT::OutputPort' else 'RTT::InputPort'}&lt;{$type/@cpp}&gt;"
               name="{@name}" member="port_{@name}" interface="{@interface-name}" datum="{@datum-name}"
               accessor="{$accessor}" accessor-declared="{fp:accessor-declared(.)}" sample="{$type/@sample}">
+        <xsl:if test="@constant = ('true', '1')"><xsl:attribute name="constant" select="'true'"/></xsl:if>
         <xsl:sequence select="fp:oro-typed($type)"/>
         <xsl:sequence select="fp:psm-doc(key('fp:id', @port, root(.)))"/>
       </o:port>

@@ -551,6 +551,7 @@
               member="{if (@direction eq 'out') then 'pub_' else 'sub_'}{@name}_"
               interface="{@interface-name}" datum="{@datum-name}"
               accessor="{$accessor}" accessor-declared="{empty(fp:realization(..)) or fp:accessor-declared(.)}">
+        <xsl:if test="@constant = ('true', '1')"><xsl:attribute name="constant" select="'true'"/></xsl:if>
         <xsl:sequence select="fp:psm-doc(key('fp:id', @port, root(.)))"/>
         <xsl:sequence select="fp:message(.)"/>
         <xsl:sequence select="fp:qos($connections[1]/pim:policy)"/>

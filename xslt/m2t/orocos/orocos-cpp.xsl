@@ -240,8 +240,11 @@
       <xsl:if test="@name eq 'configure' and $tc/o:required-service">
         <xsl:sequence select="'  if (!connectRequiredServices())', '    return false;'"/>
       </xsl:if>
+      <xsl:if test="@name eq 'configure'">
+        <xsl:sequence select="fp:read-constants($tc)"/>
+      </xsl:if>
       <xsl:if test="@name eq 'update'">
-        <xsl:for-each select="$tc/o:port[@direction eq 'in']">
+        <xsl:for-each select="$tc/o:port[@direction eq 'in'][not(@constant = 'true')]">
           <xsl:variable name="member" as="xs:boolean" select="exists(. intersect fp:read-samples($tc))"/>
           <xsl:variable name="value" as="xs:string" select="if ($member) then concat(@member, '_sample') else concat(@name, '_sample')"/>
           <xsl:sequence select="
@@ -264,9 +267,10 @@
                      [@type-kind eq 'struct' or (@type-kind eq 'sequence' and @sample eq @cpp-type || '()')] else ()"/>
       <xsl:variable name="samples" as="xs:string*"
           select="$sized ! concat('  ', @member, '.setDataSample(', $rc, '::', @accessor, '());  // the sizes the class gives')"/>
+      <xsl:variable name="writes" as="xs:string*" select="if (@name eq 'configure') then fp:write-constants($tc) else ()"/>
       <xsl:choose>
-        <xsl:when test="exists($samples) and @call and xs:boolean(@returns-bool)">
-          <xsl:sequence select="concat('  if (!', $rc, '::', @call, '())'), '    return false;', $samples, '  return true;'"/>
+        <xsl:when test="@call and $bool and xs:boolean(@returns-bool) and exists(($samples, $writes))">
+          <xsl:sequence select="concat('  if (!', $rc, '::', @call, '())'), '    return false;', $samples, $writes, '  return true;'"/>
         </xsl:when>
         <xsl:when test="@call and $bool and xs:boolean(@returns-bool)">
           <xsl:sequence select="concat('  return ', $rc, '::', @call, '();')"/>
@@ -278,8 +282,11 @@
           <xsl:sequence select="concat('  // ', $tc/o:realizing-class/@name, ' declares no ', @name, '()')"/>
         </xsl:otherwise>
       </xsl:choose>
+      <xsl:if test="@name eq 'configure' and not(@call and $bool and xs:boolean(@returns-bool))">
+        <xsl:sequence select="$writes"/>
+      </xsl:if>
       <xsl:if test="@name eq 'update'">
-        <xsl:for-each select="$tc/o:port[@direction eq 'out']">
+        <xsl:for-each select="$tc/o:port[@direction eq 'out'][not(@constant = 'true')]">
           <xsl:sequence select="if (xs:boolean(@accessor-declared))
               then concat('  ', @member, '.write(', $rc, '::', @accessor, '());')
               else concat('  // ', $tc/o:realizing-class/@name, ' declares no ', @accessor, '(): ', @member, ' is not written')"/>
@@ -289,6 +296,34 @@
         <xsl:sequence select="$samples, '  return true;'"/>
       </xsl:if>
       <xsl:sequence select="'}'"/>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- configuration constants (seed 004 Fig. 5, «Constant»): read once in
+       configureHook, before the class configures (the deployer connects
+       the ports before it configures the components, and configures the
+       writer first when the reader starts after it); configure fails while
+       nothing was written -->
+  <xsl:function name="fp:read-constants" as="xs:string*">
+    <xsl:param name="tc" as="element(o:task-context)"/>
+    <xsl:for-each select="$tc/o:port[@direction eq 'in'][@constant = 'true']">
+      <xsl:variable name="value" as="xs:string" select="concat(@name, '_constant')"/>
+      <xsl:sequence select="concat('  ', @cpp-type, ' ', $value, ' = ', @sample, ';'),
+          concat('  if (', @member, '.read(', $value, ') == RTT::NoData)'),
+          concat('    return false;  // configuration constant ', @name, ' not written yet: configure its writer first'),
+          if (xs:boolean(@accessor-declared))
+          then concat('  ', $tc/o:realizing-class/@cpp-name, '::', @accessor, '(', $value, ');')
+          else concat('  // ', $tc/o:realizing-class/@name, ' declares no ', @accessor, '(): the constant is not passed on')"/>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- configuration constants written once, once the class is configured -->
+  <xsl:function name="fp:write-constants" as="xs:string*">
+    <xsl:param name="tc" as="element(o:task-context)"/>
+    <xsl:for-each select="$tc/o:port[@direction eq 'out'][@constant = 'true']">
+      <xsl:sequence select="if (xs:boolean(@accessor-declared))
+          then concat('  ', @member, '.write(', $tc/o:realizing-class/@cpp-name, '::', @accessor, '());  // configuration constant, written once')
+          else concat('  // ', $tc/o:realizing-class/@name, ' declares no ', @accessor, '(): configuration constant ', @member, ' is not written')"/>
     </xsl:for-each>
   </xsl:function>
 

@@ -13,6 +13,7 @@
     fp:client-overrides($node)   their declarations in the node class
     fp:from-msg / fp:to-msg  datum <-> message conversion (ROS 1 and 2 alike)
     fp:ros-step($node, $types, $publish)  the body of a node's step()
+    fp:ros-publish-constants($node, $types, $publish)  «Constant» outputs, published once
     fp:ros-header-opening / fp:ros-source-opening($node)  banner and guard /
                            banner and include of a node's C++ files
     fp:ros-package-xml-opening($package)  package.xml up to its name
@@ -229,7 +230,8 @@
         $node/r:hook[@name eq 'update'][@call] ! concat('  ', $realizing-class, '::update();'),
         for $k in 1 to count($outputs) return
           let $port := $outputs[$k] return
-          if (xs:boolean($port/@accessor-declared)) then (
+          if ($port/@constant = 'true') then ()  (: published once: fp:ros-publish-constants :)
+          else if (xs:boolean($port/@accessor-declared)) then (
             '  {',
             concat('    ', $types[$k], ' msg;'),
             fp:indent(4, fp:to-msg($port/r:message, 'msg', concat($realizing-class, '::', $port/@accessor, '()'))),
@@ -237,6 +239,31 @@
             '  }')
           else concat('  // ', $node/r:realizing-class/@name, ' declares no ', $port/@accessor, '(): ', $port/@name,
                       ' is not published'))"/>
+  </xsl:function>
+
+  <!-- the configuration constants («Constant», seed 004) a node writes,
+       published once, once it is configured and its publishers exist: the
+       connection is latched (ROS 1) or transient-local (ROS 2), so a
+       subscriber that comes later still receives them; $types and $publish
+       as for fp:ros-step -->
+  <xsl:function name="fp:ros-publish-constants" as="xs:string*">
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:param name="types" as="xs:string*"/>
+    <xsl:param name="publish" as="xs:string"/>
+    <xsl:variable name="realizing-class" as="xs:string" select="$node/r:realizing-class/@cpp-name"/>
+    <xsl:variable name="outputs" as="element(r:port)*" select="$node/r:port[@direction eq 'out']"/>
+    <xsl:for-each select="for $k in 1 to count($outputs) return $k[$outputs[$k]/@constant = 'true']">
+      <xsl:variable name="k" as="xs:integer" select="."/>
+      <xsl:variable name="port" as="element(r:port)" select="$outputs[$k]"/>
+      <xsl:sequence select="if (xs:boolean($port/@accessor-declared)) then (
+            concat('  {  // configuration constant ', $port/@name, ': published once'),
+            concat('    ', $types[$k], ' msg;'),
+            fp:indent(4, fp:to-msg($port/r:message, 'msg', concat($realizing-class, '::', $port/@accessor, '()'))),
+            concat('    ', $port/@member, $publish, '(msg);'),
+            '  }')
+          else concat('  // ', $node/r:realizing-class/@name, ' declares no ', $port/@accessor, '(): configuration constant ',
+                      $port/@name, ' is not published')"/>
+    </xsl:for-each>
   </xsl:function>
 
   <!-- the body of the callback of input port $port: the datum handed to

@@ -166,6 +166,7 @@
              r:qos/@depth, ', &amp;', $class, '::on_', @name, ', this);'),
         $node/r:service ! concat('  ', @member, ' = private_nh_.advertiseService(', fp:cpp-string(@name), ', &amp;',
              $class, '::on_', @name, ', this);'),
+        fp:ros-publish-constants($node, $node/r:port[@direction eq 'out'] ! fp:ros1-type(r:message/@msg, $package)[2], '.publish'),
         $node/r:service-client ! concat('  ', @member, ' = nh_.serviceClient&lt;', fp:ros1-type(@srv, $package)[2], '&gt;(',
              fp:cpp-string(@name), ');'),
         '  if (period_ &gt; 0.0) {',

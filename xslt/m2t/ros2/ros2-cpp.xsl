@@ -220,7 +220,10 @@
   <xsl:function name="fp:ros2-constructor" as="xs:string+">
     <xsl:param name="node" as="element(r:node)"/>
     <xsl:sequence select="(fp:ros2-parameters($node), fp:ros2-hook-calls($node, ('configure', 'start'), false()),
-                           fp:ros2-entities($node), fp:ros2-timer($node), '  running_ = true;')"/>
+                           fp:ros2-entities($node),
+                           fp:ros-publish-constants($node, $node/r:port[@direction eq 'out']
+                                                    ! fp:ros2-type(r:message/@msg, $node/@namespace, 'msg')[2], '-&gt;publish'),
+                           fp:ros2-timer($node), '  running_ = true;')"/>
   </xsl:function>
   <!-- the subscription and service callbacks, each after an empty line -->
   <xsl:function name="fp:ros2-callbacks" as="xs:string*">
