@@ -10,7 +10,8 @@ fetch: tests marked ``orocos_toolchain`` build and deploy generated packages
 on a real Orocos RTT / OCL 2.10 toolchain
 (toolchains/orocos/), and tests marked ``ros2_toolchain``
 build and launch generated packages on a minimal ROS 2 Jazzy
-(toolchains/ros2/). CI deselects them, and says so in the summary; developers
+(toolchains/ros2/), and tests marked ``openrtm_toolchain`` build and run
+generated packages on OpenRTM-aist 2.0 (toolchains/openrtm/). CI deselects them, and says so in the summary; developers
 run them where the toolchain is installed.
 """
 
@@ -28,9 +29,11 @@ def pytest_configure(config: pytest.Config) -> None:
                             "built by toolchains/orocos/build.sh (not in CI: it is built from fetched sources)")
     config.addinivalue_line("markers", "ros2_toolchain: needs a minimal ROS 2 Jazzy built by toolchains/ros2/build.sh "
                             "(not in CI: it is built from fetched sources)")
+    config.addinivalue_line("markers", "openrtm_toolchain: needs OpenRTM-aist 2.0 built by toolchains/openrtm/build.sh "
+                            "(not in CI: it is built from fetched sources)")
 
 
-_TOOLCHAIN_MARKERS = ("orocos_toolchain", "ros2_toolchain")
+_TOOLCHAIN_MARKERS = ("orocos_toolchain", "ros2_toolchain", "openrtm_toolchain")
 
 
 def _needs_toolchain(item: pytest.Item) -> bool:
@@ -49,7 +52,7 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
 
 def pytest_report_header(config: pytest.Config) -> str | None:
     if _CI:
-        return ("CI: skips fail; tests marked orocos_toolchain or ros2_toolchain are deselected "
+        return ("CI: skips fail; tests marked orocos_toolchain, ros2_toolchain or openrtm_toolchain are deselected "
                 "(those toolchains cannot be fetched here)")
     return None
 
