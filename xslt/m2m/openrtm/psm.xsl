@@ -114,12 +114,11 @@
     <xsl:variable name="package" as="xs:string" select="fp:package-name($package-name, .)"/>
     <xsl:variable name="instances" as="element(pim:instance)*" select="$binding/pim:instance[fp:on-target(., 'OpenRTM')]"/>
     <xsl:sequence select="fp:check-targets(., $instances, 'OpenRTM', 'OpenRTM', ('RTM005', 'RTM006', 'RTM007'))"/>
+    <!-- the names of the package's instances, as a set; its components, by key -->
     <xsl:variable name="targets" as="map(xs:string, xs:boolean)"
-        select="map:merge(distinct-values($instances/@name ! string(.)) ! map:entry(., true()))"/>
-    <xsl:variable name="target-components" as="map(xs:string, xs:boolean)"
-        select="map:merge(distinct-values($instances/@component ! string(.)) ! map:entry(., true()))"/>
+        select="map:merge($instances ! map:entry(string(@name), true()), map { 'duplicates': 'use-first' })"/>
     <xsl:variable name="components" as="element(pim:bound-component)*"
-        select="$binding/pim:bound-component[@component ! map:contains($target-components, string(.))]"/>
+        select="key('fp:bound-component', distinct-values($instances/@component ! string(.)), root($binding))"/>
     <xsl:sequence select="fp:check-class-names($components, 'RTM004')"/>
     <xsl:variable name="rtcs" as="document-node()">
       <xsl:document>
@@ -230,11 +229,8 @@
     <xsl:param name="value" as="xs:string"/>
     <xsl:param name="type" as="element(ty:type)"/>
     <xsl:param name="id" as="xs:string"/>
-    <xsl:variable name="primitive" as="xs:string" select="$type/@primitive"/>
-    <xsl:variable name="kind" as="xs:string"
-        select="if ($primitive = ('string', 'boolean', 'char')) then $primitive
-                else if ($primitive = ('float32', 'float64')) then 'real' else 'integer'"/>
-    <xsl:variable name="parsed" as="xs:string" select="fp:parse-default($value, $kind, $primitive, $id, 'RTM002')"/>
+    <xsl:variable name="kind" as="xs:string" select="$type/@kind"/>
+    <xsl:variable name="parsed" as="xs:string" select="fp:parse-default($value, $kind, string($type/@primitive), $id, 'RTM002')"/>
     <xsl:sequence select="
       if ($kind eq 'char' and string-length($parsed) ne 1)
       then f:fail('RTM002', $id, 'default ''' || $value || ''' is not a single character')

@@ -74,7 +74,7 @@
       <xsl:sequence select="$fp:file-margin, fp:file(concat('deploy/', @deploy-name, '.rtsys.xml'), 'generated', $fp:profile-xsl, fp:rts-profile(., $fp:rtm-version))"/>
       <xsl:for-each-group select="r:process" group-by="string(@host-name)">
         <xsl:sequence select="$fp:file-margin, fp:file(concat('deploy/start_', replace(lower-case(current-grouping-key()), '[^a-z0-9_]', '_'), '.sh'), 'generated', $fp:deploy-xsl,
-                                      fp:start-script($system, current-group()))"/>
+                                      fp:rtm-start-script($system, current-group()))"/>
       </xsl:for-each-group>
       <xsl:text>&#10;</xsl:text>
     </fs:files>

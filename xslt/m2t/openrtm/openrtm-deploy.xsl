@@ -81,7 +81,7 @@
       'manager.components.preactivation: ' || string-join($members/@name, ', ')))"/>
   </xsl:function>
 
-  <xsl:function name="fp:start-script" as="xs:string">
+  <xsl:function name="fp:rtm-start-script" as="xs:string">
     <xsl:param name="s" as="element(r:system)"/>
     <xsl:param name="processes" as="element(r:process)+"/>
     <xsl:sequence select="fp:lines((
