@@ -10,7 +10,8 @@
              include/<pkg>/<Class>.h, src/<Class>.cpp (mode user) when the
              component has no realizing class
              rtc/<Class>/RTC.xml       per component: its RtcProfile
-             CMakeLists.txt            finds OpenRTM-aist, one module (.so) per component
+             idl/<Interface>.idl       per interface of a service port
+             CMakeLists.txt            finds OpenRTM-aist, compiles the IDL, one module (.so) per component
              conf/<instance>.conf      per instance: execution context rate, configuration set
              deploy/<process>.rtc.conf per manager: modules, components, connections, activation
              deploy/<model>.rtsys.xml  the RtsProfile of the system
@@ -63,6 +64,9 @@
           <xsl:sequence select="$fp:file-margin, fp:file(concat('src/', @class, '.cpp'), 'user', $fp:cpp-xsl, fp:rtm-user-source(.))"/>
         </xsl:if>
         <xsl:sequence select="$fp:file-margin, fp:file(concat('rtc/', @class, '/RTC.xml'), 'generated', $fp:profile-xsl, fp:rtc-profile(., $fp:rtm-version))"/>
+      </xsl:for-each>
+      <xsl:for-each select="r:interface">
+        <xsl:sequence select="$fp:file-margin, fp:file(concat('idl/', @name, '.idl'), 'generated', $fp:cpp-xsl, fp:rtm-idl(.))"/>
       </xsl:for-each>
       <xsl:sequence select="$fp:file-margin, fp:file('CMakeLists.txt', 'generated', $fp:cpp-xsl, fp:rtm-cmakelists(., $fp:rtm-version))"/>
       <xsl:for-each select="r:instance">

@@ -8,8 +8,10 @@
            actions onInitialize / onActivated / onExecute / onDeactivated /
            onFinalize call the realizing class's configure / start / update /
            stop / cleanup, seed 000), the user class of a component without
-           one, and CMakeLists.txt (one module <Class>.so per component, with
-           the <Class>Init entry rtcd2 loads).
+           one, its service ports (RTC::CorbaPort: a servant calling the
+           component's operation, or a consumer its override calls), the IDL
+           of each interface, and CMakeLists.txt (omniidl for the IDL, one
+           module <Class>.so per component, with the <Class>Init entry rtcd2 loads).
   Params:  none (main.xsl's).
   Errors:  none.
 -->
@@ -45,6 +47,8 @@
       '#include &lt;rtm/InPort.h&gt;',
       '#include &lt;rtm/OutPort.h&gt;',
       '#include &lt;rtm/idl/BasicDataTypeSkel.h&gt;',
+      if ($c/r:service-port) then ('#include &lt;rtm/CorbaPort.h&gt;', '#include &lt;rtm/CorbaConsumer.h&gt;') else (),
+      distinct-values($c/r:service-port/@interface) ! ('#include &quot;' || . || '.hh&quot;'),
       '#include &lt;string&gt;',
       $rc ! ('#include &quot;' || @header || '&quot;'),
       '',
@@ -69,6 +73,7 @@
       $c/r:data-port ! (
         '  ' || @timed || ' ' || @member || ';',
         '  RTC::' || (if (@direction eq 'out') then 'OutPort' else 'InPort') || '&lt;' || @timed || '&gt; ' || @port-member || ';'),
+      fp:rtm-service-members($c),
       if ($c/@kind eq 'base' and $c/r:parameter) then ('  // configuration parameters (R3)', $c/r:parameter ! ('  ' || @type || ' m_' || @name || ';')) else (),
       '};',
       '',
@@ -77,6 +82,124 @@
       if ($rc) then fp:rtm-init-decl($c) else (),
       '',
       '#endif  // ' || fp:guard($pkg, $c/@generated-class)))"/>
+  </xsl:function>
+
+  <!-- ====================================================== service ports -->
+  <xsl:function name="fp:rtm-servant-class" as="xs:string">
+    <xsl:param name="sp" as="element(r:service-port)"/>
+    <xsl:sequence select="upper-case(substring($sp/@name, 1, 1)) || substring($sp/@name, 2) || 'Servant'"/>
+  </xsl:function>
+
+  <xsl:function name="fp:rtm-corba-signature" as="xs:string">
+    <xsl:param name="op" as="element(r:operation)"/>
+    <xsl:param name="scope" as="xs:string"/>
+    <xsl:sequence select="$op/@return-corba || ' ' || $scope || $op/@name || '('
+                          || string-join($op/r:parameter ! (@corba || ' ' || @name), ', ') || ')'"/>
+  </xsl:function>
+
+  <xsl:function name="fp:rtm-cpp-signature" as="xs:string">
+    <xsl:param name="op" as="element(r:operation)"/>
+    <xsl:param name="scope" as="xs:string"/>
+    <xsl:sequence select="$op/@return-cpp || ' ' || $scope || $op/@name || '('
+                          || string-join($op/r:parameter ! (@decl-type || ' ' || @name), ', ') || ')'"/>
+  </xsl:function>
+
+  <!-- the header lines of a component's service ports: ports, consumers, servant classes, overrides -->
+  <xsl:function name="fp:rtm-service-members" as="xs:string*">
+    <xsl:param name="c" as="element(r:component)"/>
+    <xsl:for-each select="$c/r:service-port">
+      <xsl:sequence select="'  // service port ' || @name || ' (' || @role || ' interface ' || @interface || ', R5b)',
+                            '  RTC::CorbaPort ' || @port-member || ';'"/>
+      <xsl:choose>
+        <xsl:when test="@role eq 'required'">
+          <xsl:sequence select="'  RTC::CorbaConsumer&lt;' || @idl-type || '&gt; ' || @member || ';',
+                                r:operation[xs:boolean(@forward)] ! ('  ' || fp:rtm-cpp-signature(., '') || ' override;')"/>
+        </xsl:when>
+        <xsl:otherwise>
+          <xsl:variable name="servant" as="xs:string" select="fp:rtm-servant-class(.)"/>
+          <xsl:sequence select="(
+            '  class ' || $servant || ' : public virtual POA_' || @idl-type,
+            '  {',
+            '  public:',
+            '    explicit ' || $servant || '(' || $c/@generated-class || '&amp; owner) : m_owner(owner) {}',
+            r:operation ! ('    ' || fp:rtm-corba-signature(., '') || ' override;'),
+            '  private:',
+            '    ' || $c/@generated-class || '&amp; m_owner;',
+            '  };',
+            '  ' || $servant || ' ' || @member || ';',
+            if ($c/@kind eq 'base') then r:operation ! ('  virtual ' || fp:rtm-cpp-signature(., '') || ' = 0;') else ())"/>
+        </xsl:otherwise>
+      </xsl:choose>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- the source lines: servant operations call the component's, overrides call the consumer -->
+  <xsl:function name="fp:rtm-service-definitions" as="xs:string*">
+    <xsl:param name="c" as="element(r:component)"/>
+    <xsl:variable name="class" as="xs:string" select="$c/@generated-class"/>
+    <xsl:for-each select="$c/r:service-port[@role eq 'provided']/r:operation">
+      <xsl:variable name="call" as="xs:string"
+          select="'m_owner.' || @name || '(' || string-join(r:parameter ! (if (@primitive eq 'string') then 'std::string(' || @name || ')' else @name), ', ') || ')'"/>
+      <xsl:sequence select="'', fp:rtm-corba-signature(., $class || '::' || fp:rtm-servant-class(..) || '::'), '{',
+          if (@return-primitive eq 'void') then '  ' || $call || ';'
+          else if (@return-primitive eq 'string') then '  return CORBA::string_dup(' || $call || '.c_str());'
+          else '  return ' || $call || ';', '}'"/>
+    </xsl:for-each>
+    <xsl:for-each select="$c/r:service-port[@role eq 'required']/r:operation[xs:boolean(@forward)]">
+      <xsl:variable name="call" as="xs:string"
+          select="../@member || '-&gt;' || @name || '(' || string-join(r:parameter ! (if (@primitive eq 'string') then @name || '.c_str()' else @name), ', ') || ')'"/>
+      <xsl:sequence select="'', fp:rtm-cpp-signature(., $class || '::'), '{',
+          if (@return-primitive eq 'void') then '  ' || $call || ';'
+          else if (@return-primitive eq 'string') then ('  CORBA::String_var result = ' || $call || ';', '  return std::string(result.in());')
+          else '  return ' || $call || ';', '}'"/>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- onInitialize: each service port's interface registered, the port added -->
+  <xsl:function name="fp:rtm-service-registration" as="xs:string*">
+    <xsl:param name="c" as="element(r:component)"/>
+    <xsl:for-each select="$c/r:service-port">
+      <xsl:sequence select="'  ' || @port-member || (if (@role eq 'provided') then '.registerProvider(' else '.registerConsumer(')
+                              || '&quot;' || @interface || '&quot;, &quot;' || @interface || '&quot;, ' || @member || ');',
+                            '  addPort(' || @port-member || ');'"/>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- idl/<Interface>.idl -->
+  <xsl:function name="fp:rtm-idl" as="xs:string">
+    <xsl:param name="i" as="element(r:interface)"/>
+    <xsl:variable name="guard" as="xs:string" select="upper-case($i/@module || '_' || $i/@name) || '_IDL'"/>
+    <xsl:sequence select="fp:lines((
+      fp:banner('// ', $fp:cpp-xsl, 'interface ''' || $i/@name || ''' of model ''' || $i/../@model-name || '''', false()),
+      '#ifndef ' || $guard, '#define ' || $guard, '',
+      'module ' || $i/@module, '{',
+      '  interface ' || $i/@name, '  {',
+      $i/r:operation ! ('    ' || @return-idl || ' ' || @name || '(' || string-join(r:parameter ! ('in ' || @idl || ' ' || @name), ', ') || ');'),
+      '  };', '};', '', '#endif'))"/>
+  </xsl:function>
+
+  <!-- CMake lines: omniidl compiles each IDL, one static library of their stubs and skeletons -->
+  <xsl:function name="fp:rtm-idl-cmake" as="xs:string*">
+    <xsl:param name="system" as="element(r:system)"/>
+    <xsl:variable name="pkg" as="xs:string" select="$system/@package"/>
+    <xsl:if test="$system/r:interface">
+      <xsl:sequence select="(
+        '# the service ports'' interfaces: omniidl (Debian omniidl) writes their C++ stubs and skeletons',
+        'find_program(OMNIIDL omniidl)',
+        'if(NOT OMNIIDL)',
+        '  message(FATAL_ERROR &quot;omniidl not found (Debian package omniidl)&quot;)',
+        'endif()',
+        'set(IDL_OUT ${CMAKE_CURRENT_BINARY_DIR}/idl)',
+        'file(MAKE_DIRECTORY ${IDL_OUT})',
+        $system/r:interface ! (
+          'add_custom_command(OUTPUT ${IDL_OUT}/' || @name || '.hh ${IDL_OUT}/' || @name || 'SK.cc',
+          '  COMMAND ${OMNIIDL} -bcxx -Wbh=.hh -Wbs=SK.cc -C ${IDL_OUT} ${CMAKE_CURRENT_SOURCE_DIR}/idl/' || @name || '.idl',
+          '  DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/idl/' || @name || '.idl)'),
+        'add_library(' || $pkg || '_idl STATIC' || string-join($system/r:interface ! (' ${IDL_OUT}/' || @name || 'SK.cc')) || ')',
+        'set_target_properties(' || $pkg || '_idl PROPERTIES POSITION_INDEPENDENT_CODE ON)',
+        'include_directories(${IDL_OUT})',
+        '')"/>
+    </xsl:if>
   </xsl:function>
 
   <!-- the entry rtcd2 calls when it loads the module <Class>.so -->
@@ -120,9 +243,8 @@
       '',
       if ($rc) then (fp:rtm-spec($c), '') else (),
       $class || '::' || $class || '(RTC::Manager* manager)',
-      '  : RTC::DataFlowComponentBase(manager)' || (if ($c/r:data-port) then ',' else ''),
-      fp:indent(4, $c/r:data-port ! (@port-member || '(&quot;' || @name || '&quot;, ' || @member || ')'
-                                       || (if (position() ne last()) then ',' else ''))),
+      '  : RTC::DataFlowComponentBase(manager)' || (if ($c/r:data-port or $c/r:service-port) then ',' else ''),
+      fp:indent(4, fp:rtm-initializers($c)),
       '{',
       '}',
       '',
@@ -133,14 +255,25 @@
       'RTC::ReturnCode_t ' || $class || '::onInitialize()',
       '{',
       $c/r:data-port ! ('  ' || (if (@direction eq 'out') then 'addOutPort' else 'addInPort') || '(&quot;' || @name || '&quot;, ' || @port-member || ');'),
+      fp:rtm-service-registration($c),
       $c/r:parameter ! ('  bindParameter(&quot;' || @name || '&quot;, '
                         || (if ($rc) then $rc/@cpp-name || '::' || @name else 'm_' || @name) || ', ' || fp:cpp-string(@default) || ');'),
       if ($rc) then fp:rtm-call($c, 'configure') else '  return RTC::RTC_OK;',
       '}',
       if ($rc) then $c/r:hook[@name ne 'configure'] ! ('', fp:rtm-action(., $c)) else (),
+      fp:rtm-service-definitions($c),
       '',
       '}  // namespace ' || $pkg,
       if ($rc) then ('', fp:rtm-init($c)) else ()))"/>
+  </xsl:function>
+
+  <!-- the constructor's member initialisers, in declaration order -->
+  <xsl:function name="fp:rtm-initializers" as="xs:string*">
+    <xsl:param name="c" as="element(r:component)"/>
+    <xsl:variable name="items" as="xs:string*" select="(
+        $c/r:data-port ! (@port-member || '(&quot;' || @name || '&quot;, ' || @member || ')'),
+        $c/r:service-port ! (@port-member || '(&quot;' || @name || '&quot;)', if (@role eq 'provided') then @member || '(*this)' else ()))"/>
+    <xsl:sequence select="for $i in 1 to count($items) return $items[$i] || (if ($i lt count($items)) then ',' else '')"/>
   </xsl:function>
 
   <!-- the lines of an action that calls the realizing class's lifecycle operation $hook, if it has one -->
@@ -252,12 +385,14 @@
       'link_directories(${OPENRTM_LIBRARY_DIRS})',
       '',
       $system/r:library ! fp:rtm-library-lines(.),
+      fp:rtm-idl-cmake($system),
       '# one module per RT-Component: rtcd2 loads &lt;Class&gt;.so and calls &lt;Class&gt;Init',
       $system/r:component ! (
         'add_library(' || @class || ' MODULE src/' || @generated-class || '.cpp'
           || (if (@kind eq 'base') then ' src/' || @class || '.cpp' else '') || ')',
         'set_target_properties(' || @class || ' PROPERTIES PREFIX &quot;&quot;)',
-        'target_link_libraries(' || @class || ' ${OPENRTM_LIBRARIES}' || string-join($system/r:library ! (' ' || @target)) || ')',
+        'target_link_libraries(' || @class || (if ($system/r:interface) then ' ' || $pkg || '_idl' else '') || ' ${OPENRTM_LIBRARIES}'
+          || string-join($system/r:library ! (' ' || @target)) || ')',
         'install(TARGETS ' || @class || ' LIBRARY DESTINATION lib/' || $pkg || ')'),
       'install(DIRECTORY conf deploy rtc DESTINATION share/' || $pkg || ')'))"/>
   </xsl:function>

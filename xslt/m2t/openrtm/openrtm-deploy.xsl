@@ -15,7 +15,8 @@
                                    .conf), the connections it makes
                                    (preconnect: those whose reader it holds,
                                    a writer in another manager through the
-                                   naming service, rtcname://*/), activation
+                                   naming service, rtcname://*/; and the
+                                   operation calls whose caller it holds), activation
                                    in start order (preactivation)
            deploy/start_<host>.sh  starts the host's managers in order, each
                                    once the one before has activated its
@@ -48,6 +49,14 @@
     <xsl:sequence select="(if ($end/@process eq $process/@file) then '' else 'rtcname://*/') || $end/@instance || '.' || $end/@port"/>
   </xsl:function>
 
+  <xsl:function name="fp:rtm-service-ref" as="xs:string">
+    <xsl:param name="instance" as="xs:string"/>
+    <xsl:param name="port" as="xs:string"/>
+    <xsl:param name="s" as="element(r:system)"/>
+    <xsl:param name="process" as="element(r:process)"/>
+    <xsl:sequence select="(if ($s/r:instance[@name eq $instance]/@process eq $process/@file) then '' else 'rtcname://*/') || $instance || '.' || $port"/>
+  </xsl:function>
+
   <xsl:function name="fp:rtc-conf" as="xs:string">
     <xsl:param name="s" as="element(r:system)"/>
     <xsl:param name="p" as="element(r:process)"/>
@@ -58,6 +67,9 @@
                   || '&amp;dataflow_type=' || ../@dataflow-type || '&amp;interface_type=' || ../@interface-type
                   || '&amp;subscription_type=' || ../@subscription-type || '&amp;buffer.length=' || ../@buffer-length
                   || '&amp;buffer.write.full_policy=' || ../@full-policy)"/>
+    <xsl:variable name="calls" as="xs:string*"
+        select="$s/r:service-connection[@caller = $members/@name] ! (
+                  fp:rtm-service-ref(@caller, @caller-port, $s, $p) || '?port=' || fp:rtm-service-ref(@provider, @provider-port, $s, $p))"/>
     <xsl:sequence select="fp:lines((
       fp:banner('# ', $fp:deploy-xsl, 'process ''' || $p/@name || ''' of model ''' || $s/@model-name || '''', false()),
       '# Run: rtcd2 -f ' || $p/@file || '.rtc.conf (deploy/start_*.sh does, in the modelled order)',
@@ -75,8 +87,8 @@
       '# the instances, in start order, each with its configuration',
       'manager.components.precreate: ' || string-join($members ! (@component || '?instance_name=' || @name), ', '),
       $members ! (@category || '.' || @name || '.config_file: ../conf/' || @name || '.conf'),
-      '# the connections whose reader is here',
-      'manager.components.preconnect: ' || string-join($connects, ', '),
+      '# the connections whose reader is here, the operation calls whose caller is here',
+      'manager.components.preconnect: ' || string-join(($connects, $calls), ', '),
       '# activation in start order',
       'manager.components.preactivation: ' || string-join($members/@name, ', ')))"/>
   </xsl:function>

@@ -7,10 +7,10 @@
 
   Reads:   r:component, r:instance, r:connection, r:system of the OpenRTM PSM.
   Writes:  strings: RTC.xml (BasicInfo, Actions, ConfigurationSet,
-           DataPorts, Language) and the RtsProfile (Components with their
+           DataPorts, ServicePorts, Language) and the RtsProfile (Components with their
            data ports, configuration set and execution context,
            DataPortConnectors with the buffer settings as rtsExt
-           Properties, StartUp and Activation with a Preceding condition
+           Properties, ServicePortConnectors, StartUp and Activation with a Preceding condition
            per modelled StartAfter). Checked against
            tests/schemas/openrtm/*.xsd by tests/test_openrtm.py.
   Params:  none (main.xsl's).
@@ -73,6 +73,12 @@
           fp:att('rtc:portType', if (@direction eq 'out') then 'DataOutPort' else 'DataInPort'), fp:att('rtc:name', @name),
           fp:att('rtc:type', @timed), fp:att('rtc:idlFile', 'BasicDataType.idl'), fp:att('rtc:interfaceType', 'corba_cdr'),
           fp:att('rtc:dataflowType', 'push,pull'), fp:att('rtc:subscriptionType', 'flush,new,periodic')), ' ') || '/&gt;'),
+      $c/r:service-port ! (
+        '  &lt;rtc:ServicePorts ' || fp:att('rtc:name', @name) || '&gt;',
+        '    &lt;rtc:ServiceInterface ' || string-join((fp:att('rtc:direction', if (@role eq 'provided') then 'Provided' else 'Required'),
+            fp:att('rtc:name', @interface), fp:att('rtc:type', @interface), fp:att('rtc:instanceName', @interface),
+            fp:att('rtc:idlFile', @interface || '.idl')), ' ') || '/&gt;',
+        '  &lt;/rtc:ServicePorts&gt;'),
       '  &lt;rtc:Language ' || fp:att('rtc:kind', 'C++') || '/&gt;',
       '&lt;/rtc:RtcProfile&gt;'))"
       xmlns:map="http://www.w3.org/2005/xpath-functions/map"/>
@@ -98,6 +104,13 @@
                         fp:att('rts:creationDate', $fp:rtm-date), fp:att('rts:updateDate', $fp:rtm-date), fp:att('rts:version', '0.2')), ' ') || '&gt;',
       $s/r:instance ! fp:rts-component(., $s, $component-id(string(@name))),
       $s/r:connection ! fp:rts-connector(., $s, $component-id),
+      $s/r:service-connection ! (
+        '  &lt;rts:ServicePortConnectors ' || fp:att('rts:connectorId', @name) || ' ' || fp:att('rts:name', @name) || '&gt;',
+        '    &lt;rts:sourceServicePort ' || string-join((fp:att('rts:portName', @caller || '.' || @caller-port),
+            fp:att('rts:instanceName', @caller), fp:att('rts:componentId', $component-id(string(@caller)))), ' ') || '/&gt;',
+        '    &lt;rts:targetServicePort ' || string-join((fp:att('rts:portName', @provider || '.' || @provider-port),
+            fp:att('rts:instanceName', @provider), fp:att('rts:componentId', $component-id(string(@provider)))), ' ') || '/&gt;',
+        '  &lt;/rts:ServicePortConnectors&gt;'),
       fp:rts-sequence('StartUp', $s, $component-id),
       fp:rts-sequence('Activation', $s, $component-id),
       '&lt;/rts:RtsProfile&gt;'))"/>
@@ -113,6 +126,7 @@
           fp:att('rts:instanceName', $i/@name), fp:att('rts:activeConfigurationSet', 'default'), fp:att('rts:compositeType', 'None'),
           fp:att('rts:isRequired', 'true')), ' ') || '&gt;',
       $c/r:data-port ! ('    &lt;rts:DataPorts ' || fp:att('rts:name', $i/@name || '.' || @name) || '/&gt;'),
+      $c/r:service-port ! ('    &lt;rts:ServicePorts ' || fp:att('rts:name', $i/@name || '.' || @name) || '/&gt;'),
       '    &lt;rts:ConfigurationSets ' || fp:att('rts:id', 'default') || (if ($i/r:parameter-value) then '&gt;' else '/&gt;'),
       if ($i/r:parameter-value) then (
         $i/r:parameter-value ! ('      &lt;rts:ConfigurationData ' || fp:att('rts:name', @name) || ' ' || fp:att('rts:data', @value) || '/&gt;'),
