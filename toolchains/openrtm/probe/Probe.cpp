@@ -2,10 +2,10 @@
 // every sample it reads is printed as "probe: <value>" on stdout (flushed), so a test
 // can tell that data flows on a connection of a running system. Loaded by rtcd2
 // (ProbeInit), connected by its rtc.conf's preconnect.
+#include <rtm/idl/BasicDataTypeSkel.h>  // first: the port templates need its CORBA::Any operators declared
 #include <rtm/DataFlowComponentBase.h>
 #include <rtm/InPort.h>
 #include <rtm/Manager.h>
-#include <rtm/idl/BasicDataTypeSkel.h>
 #include <cstdio>
 
 namespace {
