@@ -113,7 +113,8 @@ if [ $CHECK = 1 ]; then
 fi
 
 # --- build --------------------------------------------------------------------------------------------
-# omniORB from Debian; no examples, documents, SSL/HTTP transports or observer; utils kept (rtcd2,
+# omniORB from Debian; no examples, documents, SSL/HTTP transports, observer or extension modules
+# (src/ext: SDO services, local services, extra ECs and transports, fluent-bit logger); utils kept (rtcd2,
 # rtm2-config, rtm2-naming, the CMake package files). Build type None (no optimisation) unless
 # RTM_BUILD_TYPE says otherwise: OpenRTM's Release adds -O3 with inlining limits raised to 1000 and
 # -Werror with some 80 warnings, which at nice 19 on 2 shared cores compiled 30 % in 20 min and then
@@ -121,7 +122,7 @@ fi
 say "build OpenRTM-aist into $PREFIX"
 cmake -S "$SRC/OpenRTM-aist" -B "$BLD/OpenRTM-aist" -DCMAKE_INSTALL_PREFIX="$PREFIX" -DCMAKE_BUILD_TYPE="${RTM_BUILD_TYPE:-None}" \
       -DCORBA=omniORB -DEXAMPLES_ENABLE=OFF -DDOCUMENTS_ENABLE=OFF -DSSL_ENABLE=OFF -DHTTP_ENABLE=OFF \
-      -DOBSERVER_ENABLE=OFF -DUTILS_ENABLE=ON
+      -DOBSERVER_ENABLE=OFF -DEXTLIB_ENABLE=OFF -DUTILS_ENABLE=ON
 nice -n "$NICE" cmake --build "$BLD/OpenRTM-aist" -j "$JOBS"
 cmake --build "$BLD/OpenRTM-aist" --target install
 say "OpenRTM-aist installed under $PREFIX; checking it"
