@@ -128,8 +128,10 @@ def _free_port() -> int:
 
 
 def _bash(script: str, cwd: Path) -> subprocess.CompletedProcess[str]:
+    # unoptimised (build type None): the test needs components that run, and builds them at nice 19
+    env = dict(os.environ, RTM_CMAKE_ARGS=os.environ.get("RTM_CMAKE_ARGS", "-DCMAKE_BUILD_TYPE=None"))
     return subprocess.run(["bash", "-c", f"source {ENV_SH} && {script}"], cwd=cwd, capture_output=True, text=True,
-                          timeout=1800, check=False)
+                          timeout=3600, check=False, env=env)
 
 
 def _wait_for(predicate, seconds: float) -> bool:

@@ -31,7 +31,7 @@ _rtm_prepend CMAKE_PREFIX_PATH "$OPENRTM_INSTALL"
 _rtm_cmake() {  # _rtm_cmake SRC BUILD: configure and build
   cmake -S "$1" -B "$2" -DCMAKE_PREFIX_PATH="$CMAKE_PREFIX_PATH" ${RTM_CMAKE_ARGS:-} \
     || { echo "rtm: cmake configure of $1 FAILED" >&2; return 1; }
-  nice cmake --build "$2" -j "${RTM_JOBS:-2}" || { echo "rtm: build of $1 FAILED" >&2; return 1; }
+  nice -n 19 cmake --build "$2" -j "${RTM_JOBS:-2}" || { echo "rtm: build of $1 FAILED" >&2; return 1; }
 }
 
 rtm_build_pkg() {
