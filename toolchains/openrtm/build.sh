@@ -5,7 +5,8 @@
 #   $OPENRTM_HOME/src/OpenRTM-aist     the repository of sources.tsv, at its verified commit
 #   $OPENRTM_HOME/build/OpenRTM-aist   the CMake build folder
 #   $OPENRTM_HOME/install              the toolchain: libRTC, libcoil, rtcd2, rtm2-config, rtm2-naming,
-#                                      the IDL files (BasicDataType.idl ...), OpenRTMConfig.cmake
+#                                      libRTC2 (coil inside), the IDL files (BasicDataType.idl ...),
+#                                      lib/openrtm-2.0/cmake/OpenRTMConfig.cmake
 #
 # Usage: build.sh [--check] [--no-apt] [--sources-only]
 #   --check          build nothing: report what is present and what is missing (Debian packages, sources
@@ -43,7 +44,7 @@ done
 APT_PACKAGES=(build-essential cmake git ca-certificates pkg-config uuid-dev
               omniorb omniidl omniorb-nameserver libomniorb4-dev)
 PROGRAMS=(bin/rtcd2 bin/rtm2-config)
-LIBRARIES=(lib/libRTC.so lib/libcoil.so)
+LIBRARIES=(lib/libRTC2.so)  # coil is linked into libRTC2
 
 # say, missing, apt_step (toolchains/common.sh)
 source "$HERE/../common.sh"
@@ -90,12 +91,12 @@ check_runs() {
   omniNames -start "$port" -logdir "$tmp" >/dev/null 2>&1 &
   ns=$!
   sleep 1
-  printf 'corba.nameservers: 127.0.0.1:%s\ncorba.endpoints: 127.0.0.1:\nnaming.formats: %%n.rtc\nmanager.is_master: YES\nmanager.instance_name: rtmcheck\nlogger.enable: NO\n' \
+  printf 'corba.nameservers: 127.0.0.1:%s\ncorba.endpoints: 127.0.0.1:\nmanager.is_master: YES\nmanager.instance_name: rtmcheck\nmanager.naming_formats: %%n.mgr\nlogger.enable: NO\n' \
     "$port" > "$tmp/rtc.conf"
   ( cd "$tmp" && exec rtcd2 -f rtc.conf </dev/null >"$tmp/rtcd.out" 2>&1 ) &
   mgr=$!
   sleep 3
-  _run "rtcd2 registered its manager with the naming service on 127.0.0.1:$port" "rtmcheck" \
+  _run "rtcd2 registered its manager (rtmcheck.mgr) with the naming service on 127.0.0.1:$port" "rtmcheck" \
     nameclt -ORBInitRef "NameService=corbaname::127.0.0.1:$port" list
   kill -INT $mgr 2>/dev/null || true; sleep 1; kill $mgr 2>/dev/null || true; wait $mgr 2>/dev/null || true
   kill $ns 2>/dev/null || true; wait $ns 2>/dev/null || true
