@@ -13,10 +13,11 @@
                                    (%n.rtc), its modules, its components
                                    (precreate, in start order, each with its
                                    .conf), the connections it makes
-                                   (preconnect: those whose reader it holds,
-                                   a writer in another manager through the
-                                   naming service, rtcname://*/; and the
-                                   operation calls whose caller it holds), activation
+                                   (preconnect: each connection and operation
+                                   call is made by the later of its ends'
+                                   managers in start order, the other end
+                                   found through the naming service,
+                                   rtcname://*/), activation
                                    in start order (preactivation)
            deploy/start_<host>.sh  starts the host's managers in order, each
                                    once the one before has activated its
@@ -49,6 +50,16 @@
     <xsl:sequence select="(if ($end/@process eq $process/@file) then '' else 'rtcname://*/') || $end/@instance || '.' || $end/@port"/>
   </xsl:function>
 
+  <!-- the manager that makes the connection of $a and $b: the later of theirs
+       in start order (the other one's components exist by then) -->
+  <xsl:function name="fp:rtm-maker" as="element(r:process)">
+    <xsl:param name="a" as="element()"/>
+    <xsl:param name="b" as="element()"/>
+    <xsl:param name="s" as="element(r:system)"/>
+    <xsl:variable name="processes" as="element(r:process)+" select="$s/r:process[@file = ($a/@process, $b/@process)]"/>
+    <xsl:sequence select="$processes[last()]"/>
+  </xsl:function>
+
   <xsl:function name="fp:rtm-service-ref" as="xs:string">
     <xsl:param name="instance" as="xs:string"/>
     <xsl:param name="port" as="xs:string"/>
@@ -62,13 +73,16 @@
     <xsl:param name="p" as="element(r:process)"/>
     <xsl:variable name="members" as="element(r:instance)*" select="$s/r:instance[@process eq $p/@file]"/>
     <xsl:variable name="connects" as="xs:string*"
-        select="$s/r:connection/r:reader[@process eq $p/@file] ! (for $w in ../r:writer return
-                  fp:rtm-port-ref($w, $p) || '?port=' || fp:rtm-port-ref(., $p)
-                  || '&amp;dataflow_type=' || ../@dataflow-type || '&amp;interface_type=' || ../@interface-type
-                  || '&amp;subscription_type=' || ../@subscription-type || '&amp;buffer.length=' || ../@buffer-length
-                  || '&amp;buffer.write.full_policy=' || ../@full-policy)"/>
+        select="for $r in $s/r:connection/r:reader, $w in $r/../r:writer[fp:rtm-maker(., $r, $s) is $p] return (
+                  fp:rtm-port-ref($w, $p) || '?port=' || fp:rtm-port-ref($r, $p)
+                  || '&amp;dataflow_type=' || $r/../@dataflow-type || '&amp;interface_type=' || $r/../@interface-type
+                  || '&amp;subscription_type=' || $r/../@subscription-type || '&amp;buffer.length=' || $r/../@buffer-length
+                  || '&amp;buffer.write.full_policy=' || $r/../@full-policy)"/>
     <xsl:variable name="calls" as="xs:string*"
-        select="$s/r:service-connection[@caller = $members/@name] ! (
+        select="for $k in $s/r:service-connection
+                return (if (fp:rtm-maker($s/r:instance[@name eq $k/@caller], $s/r:instance[@name eq $k/@provider], $s) is $p)
+                        then $k else ())
+                ! (
                   fp:rtm-service-ref(@caller, @caller-port, $s, $p) || '?port=' || fp:rtm-service-ref(@provider, @provider-port, $s, $p))"/>
     <xsl:sequence select="fp:lines((
       fp:banner('# ', $fp:deploy-xsl, 'process ''' || $p/@name || ''' of model ''' || $s/@model-name || '''', false()),
