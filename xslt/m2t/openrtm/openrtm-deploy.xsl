@@ -101,7 +101,7 @@
       '# the instances, in start order, each with its configuration',
       'manager.components.precreate: ' || string-join($members ! (@component || '?instance_name=' || @name), ', '),
       $members ! (@category || '.' || @name || '.config_file: ../conf/' || @name || '.conf'),
-      '# the connections whose reader is here, the operation calls whose caller is here',
+      '# the connections and operation calls whose later end (in start order) is here',
       'manager.components.preconnect: ' || string-join(($connects, $calls), ', '),
       '# activation in start order',
       'manager.components.preactivation: ' || string-join($members/@name, ', ')))"/>
