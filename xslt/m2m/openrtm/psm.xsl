@@ -27,7 +27,8 @@
       parameter of configuration set "default" with the model default;
       the value an instance's part sets goes into the instance's .conf.
   R4  execution context: PeriodicExecutionContext at rate 1 / period (Hz),
-      one per instance (exec_cxt.periodic.rate in the instance's .conf).
+      one per instance (exec_cxt.periodic.rate in the instance's .conf); a
+      CPU affinity mask other than 0 as the list of its CPU numbers.
   R5  connections: dataflow push (pull when the policy pulls), subscription
       flush, buffer length = policy size, full policy overwrite for DATA and
       CIRCULAR_BUFFER, do_nothing (drop the new sample) for BUFFER.
@@ -72,6 +73,7 @@
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
     xmlns:xs="http://www.w3.org/2001/XMLSchema"
     xmlns:map="http://www.w3.org/2005/xpath-functions/map"
+    xmlns:math="http://www.w3.org/2005/xpath-functions/math"
     xmlns:pim="urn:robomda:pim:1"
     xmlns:r="urn:robomda:psm-openrtm:1"
     xmlns:ty="urn:robomda:openrtm-types:1"
@@ -401,8 +403,11 @@
                 process="{map:get($files, string($instance/@execution-environment))}"
                 rate="{if ($period gt 0) then fp:decimal(string(round(1 div $period * 1000000) div 1000000)) else '1000.0'}"
                 period="{$activity/@period}">
-      <xsl:if test="$activity/@cpu-affinity-source ne 'default'">
-        <xsl:attribute name="cpu-affinity" select="$activity/@cpu-affinity"/>
+      <!-- the model's CPU bit mask as OpenRTM's list of CPU numbers (mask 6: "1,2") -->
+      <xsl:variable name="mask" as="xs:integer" select="if ($activity/@cpu-affinity castable as xs:integer) then xs:integer($activity/@cpu-affinity) else 0"/>
+      <xsl:if test="$mask gt 0">
+        <xsl:attribute name="cpu-affinity"
+            select="string-join((0 to 63)[($mask idiv xs:integer(math:pow(2, .))) mod 2 eq 1] ! string(.), ',')"/>
       </xsl:if>
       <xsl:sequence select="fp:warn-unused-values($instance, $rtc/r:parameter/@xmi-id, 'RTM008')"/>
       <xsl:for-each select="$rtc/r:parameter">
