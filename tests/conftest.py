@@ -10,9 +10,10 @@ fetch: tests marked ``orocos_toolchain`` build and deploy generated packages
 on a real Orocos RTT / OCL 2.10 toolchain
 (toolchains/orocos/), and tests marked ``ros2_toolchain``
 build and launch generated packages on a minimal ROS 2 Jazzy
-(toolchains/ros2/), and tests marked ``rtt_ros_toolchain`` run a mixed Orocos
+(toolchains/ros2/), tests marked ``rtt_ros_toolchain`` run a mixed Orocos
 <-> ROS 1 system on that Orocos toolchain with the rtt_ros_integration packages
-of toolchains/orocos/build-ros.sh. CI deselects them, and says so in the summary; developers
+of toolchains/orocos/build-ros.sh, and tests marked ``openrtm_toolchain`` build and run
+generated packages on OpenRTM-aist 2.0 (toolchains/openrtm/). CI deselects them, and says so in the summary; developers
 run them where the toolchain is installed.
 """
 
@@ -33,9 +34,11 @@ def pytest_configure(config: pytest.Config) -> None:
     config.addinivalue_line("markers", "rtt_ros_toolchain: needs the Orocos toolchain and the rtt_ros_integration "
                             "packages of toolchains/orocos/build-ros.sh with Debian's ROS 1 (not in CI: built from "
                             "fetched sources)")
+    config.addinivalue_line("markers", "openrtm_toolchain: needs OpenRTM-aist 2.0 built by toolchains/openrtm/build.sh "
+                            "(not in CI: it is built from fetched sources)")
 
 
-_TOOLCHAIN_MARKERS = ("orocos_toolchain", "ros2_toolchain", "rtt_ros_toolchain")
+_TOOLCHAIN_MARKERS = ("orocos_toolchain", "ros2_toolchain", "rtt_ros_toolchain", "openrtm_toolchain")
 
 
 def _needs_toolchain(item: pytest.Item) -> bool:
@@ -54,7 +57,7 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
 
 def pytest_report_header(config: pytest.Config) -> str | None:
     if _CI:
-        return ("CI: skips fail; tests marked orocos_toolchain, ros2_toolchain or rtt_ros_toolchain are deselected "
+        return ("CI: skips fail; tests marked orocos_toolchain, ros2_toolchain, rtt_ros_toolchain or openrtm_toolchain are deselected "
                 "(those toolchains cannot be fetched here)")
     return None
 

@@ -127,6 +127,13 @@ def test_every_operation_call_reaches_every_target(app: str, target: str, runs) 
         assert [v.text for v in peers.iter("value")] == ["atf_driver_jointCtrl"]
         assert f'connectServices("{caller}", "atf_driver_jointCtrl")' in files[f"deploy/{app}.ops"]
         assert f'depl:connectServices("{caller}", "atf_driver_jointCtrl")' in files[f"deploy/{app}.lua"]
+    elif target == "openrtm":
+        assert "CORBA::Boolean JointController::ComplianceServant::setCompliant(CORBA::Boolean enable)" in code
+        assert "m_compliancePort.registerProvider(\"ICompliance\", \"ICompliance\", m_complianceServant);" in code
+        assert "return m_compliance->setCompliant(enable);" in code
+        assert "interface ICompliance" in files["idl/ICompliance.idl"]
+        conf = files[f"deploy/{app}.rtc.conf"]
+        assert f"{caller}.compliance?port=atf_driver_jointCtrl.compliance" in conf
     else:
         assert 'advertiseService("setCompliant"' in code or 'create_service<std_srvs::srv::SetBool>(\n    "~/setCompliant"' in code
         assert 'serviceClient<std_srvs::SetBool>("setCompliant")' in code or 'create_client<std_srvs::srv::SetBool>("setCompliant")' in code

@@ -1,0 +1,46 @@
+// An RT-Component for the openrtm_toolchain tests: one InPort<RTC::TimedLong> "in";
+// every sample it reads is printed as "probe: <value>" on stdout (flushed), so a test
+// can tell that data flows on a connection of a running system. Loaded by rtcd2
+// (ProbeInit), connected by its rtc.conf's preconnect.
+#include <rtm/idl/BasicDataTypeSkel.h>  // first: the port templates need its CORBA::Any operators declared
+#include <rtm/DataFlowComponentBase.h>
+#include <rtm/InPort.h>
+#include <rtm/Manager.h>
+#include <cstdio>
+
+namespace {
+const char* const probe_spec[] = {
+  "implementation_id", "Probe", "type_name", "Probe", "description", "robomda test probe",
+  "version", "1.0.0", "vendor", "robomda", "category", "test", "activity_type", "PERIODIC",
+  "kind", "DataFlowComponent", "max_instance", "1", "language", "C++", "lang_type", "compile", ""};
+}
+
+class Probe : public RTC::DataFlowComponentBase
+{
+public:
+  explicit Probe(RTC::Manager* manager) : RTC::DataFlowComponentBase(manager), m_inIn("in", m_in) {}
+  RTC::ReturnCode_t onInitialize() override
+  {
+    addInPort("in", m_inIn);
+    return RTC::RTC_OK;
+  }
+  RTC::ReturnCode_t onExecute(RTC::UniqueId) override
+  {
+    while (m_inIn.isNew()) {
+      m_inIn.read();
+      std::printf("probe: %ld\n", static_cast<long>(m_in.data));
+      std::fflush(stdout);
+    }
+    return RTC::RTC_OK;
+  }
+
+private:
+  RTC::TimedLong m_in;
+  RTC::InPort<RTC::TimedLong> m_inIn;
+};
+
+extern "C" void ProbeInit(RTC::Manager* manager)
+{
+  coil::Properties profile(probe_spec);
+  manager->registerFactory(profile, RTC::Create<Probe>, RTC::Delete<Probe>);
+}
