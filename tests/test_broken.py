@@ -135,7 +135,9 @@ def test_sarif_names_the_qualified_name_and_keeps_the_xmi_id_apart(capsys) -> No
                if "logicalLocations" in loc]
     assert logical
     for loc in logical:
-        assert "::" in loc["fullyQualifiedName"] and loc["fullyQualifiedName"].endswith(loc["name"])
+        # the model itself (a finding about the whole system) is its own qualified name
+        nested = "::" in loc["fullyQualifiedName"] or loc["kind"] == "uml:Model"
+        assert nested and loc["fullyQualifiedName"].endswith(loc["name"])
         assert loc["properties"]["xmiId"] and loc["properties"]["xmiId"] not in loc["fullyQualifiedName"]
 
 
