@@ -177,11 +177,15 @@ def test_a_lifecycle_node_runs_its_hooks_in_the_transitions() -> None:
     assert "return CallbackReturn::FAILURE;" in configure and "configure() failed" in configure
     activate = bodies["activate"]
     assert activate.index("pub_armCommand_->on_activate();") < activate.index("::ImpedanceControl::start()") \
-        < activate.index("create_wall_timer")
+        < activate.index("rclcpp::create_timer(this, this->get_clock(),")
     deactivate = bodies["deactivate"]
     assert deactivate.index("running_ = false;") < deactivate.index("::ImpedanceControl::stop();") \
         < deactivate.index("pub_armCommand_->on_deactivate();")
     assert "pub_armCommand_.reset();" in bodies["cleanup"] and "::ImpedanceControl::stop();" in bodies["shutdown"]
+    # the destructor transitions only a live context: after Ctrl-C the transition would log ERROR lines
+    destructor = source[source.index("ImpedanceController::~ImpedanceController()"):source.index("::on_configure(")]
+    assert destructor.index("get_context()->is_valid() &&") < destructor.index("shutdown();") \
+        < destructor.index("::ImpedanceControl::stop();")
     assert "class ImpedanceController : public rclcpp_lifecycle::LifecycleNode, public ::ImpedanceControl" \
         in _files(generate(MANAGED / "model.xmi", None, "ros2", write=False))["include/managed/lifecycle/ImpedanceController.hpp"]
 
