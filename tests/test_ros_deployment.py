@@ -151,7 +151,10 @@ def test_managed_processes_are_lifecycle_nodes_a_manager_drives_in_the_deploymen
         assert len(manager) == 1 and manager[0].get("name") == f"{host}_lifecycle_manager"
         param = manager[0].find("param")
         assert param.get("name") == "node_names" and param.get("value-sep") == ","
-        names = [n.lstrip("/") for n in param.get("value").split(",")]
+        # each name from the launch's root: after the pushed namespace, if any
+        prefix = "$(var ros_namespace '')/"
+        assert all(n.startswith(prefix) for n in param.get("value").split(",")), param.get("value")
+        names = [n.removeprefix(prefix) for n in param.get("value").split(",")]
         here = {i.get("name") for i in psm.iter(f"{R}instance") if i.get("host") == host} & managed
         assert set(names) == here and names == sorted(names, key=order.get)
     plugins = {c.get("name"): c.get("plugin") for f in files if f.endswith(".launch.xml")

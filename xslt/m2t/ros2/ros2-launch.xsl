@@ -18,7 +18,8 @@
         the pushed namespace) (a managed instance: its node's
         lifecycle class); a <node> per instance in no process; an <include>
         per component set on the host; a lifecycle_manager <node> when the
-        host has managed instances, their names in start order (node_names)
+        host has managed instances, their names in start order (node_names,
+        after the pushed namespace)
   launch/<model>_<set>.launch.xml  one per component set (seed 002): the
         containers of the processes wholly in it, and its members in other
         processes loaded into theirs (<load_composable_node target>)
@@ -137,7 +138,7 @@
         '  &lt;!-- the managed (lifecycle) nodes on this host: configured, then activated, in the deployment sequence --&gt;',
         concat('  &lt;node pkg=&quot;', $package/@name, '&quot; exec=&quot;lifecycle_manager&quot; name=&quot;', $host/@lifecycle-manager,
                '&quot; namespace=&quot;/&quot; output=&quot;screen&quot;&gt;'),
-        concat('    &lt;param name=&quot;node_names&quot; value=&quot;', string-join(fp:in-start-order($managed) ! fp:ros2-fqn(.), ','),
+        concat('    &lt;param name=&quot;node_names&quot; value=&quot;', string-join(fp:in-start-order($managed) ! ($fp:ros2-root || fp:ros2-fqn(.)), ','),
                '&quot; value-sep=&quot;,&quot;/&gt;'),
         '  &lt;/node&gt;'"/>
   </xsl:function>
