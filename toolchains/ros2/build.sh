@@ -165,6 +165,7 @@ STAGE2_SELECT=(--base-paths "${STAGE2_PATHS[@]}" --packages-up-to "${STAGE2_UP_T
 check_runs() {
   local tmp
   tmp=$(mktemp -d "${TMPDIR:-/tmp}/ros2-check.XXXXXX")
+  mkdir "$tmp/home"
   cat > "$tmp/typesupport.py" <<'PY'
 from rclpy.type_support import check_for_type_support
 from rcl_interfaces.msg import ParameterEvent
