@@ -123,6 +123,27 @@ def test_pid_ros2_mapping() -> None:
     assert register == ['rclcpp_components_register_nodes(${PROJECT_NAME}_components "pid::TrajectoryGenerator" '
                         '"pid::PIDController" "pid::RobotInterface")']
     assert "PIDController:\n  ros__parameters:\n    update_period: 0.01\n    kp: 20.0" in files["config/params.yaml"]
+    # issue 36 item 7: the timer runs on the node's clock (use_sim_time), callbacks take a const message,
+    # headers install under the package's own include folder
+    assert "timer_ = rclcpp::create_timer(this, this->get_clock(), rclcpp::Duration::from_seconds(period_)," in src
+    assert "create_wall_timer" not in src
+    assert "void PIDController::on_desiredPosition(const std_msgs::msg::Float64::ConstSharedPtr msg)" in src
+    assert "::SharedPtr msg" not in files["include/pid/PIDController.hpp"]
+    cmake = files["CMakeLists.txt"]
+    assert "install(DIRECTORY include/ DESTINATION include/${PROJECT_NAME})" in cmake
+    assert "$<INSTALL_INTERFACE:include/${PROJECT_NAME}>" in cmake and "DESTINATION include)" not in cmake
+
+
+def test_ros2_remaps_named_from_the_root_follow_a_pushed_namespace() -> None:
+    # learning: learner is in the root namespace, fri in atf/driver; a relative name of a root node
+    # resolves under a pushed namespace, a namespaced node's name from the root must start with it
+    launch = _files(_run(ROOT / "fixtures/cases/learning", "ros2"))["launch/learning_armpc.launch.xml"]
+    remaps = {(n.get("name"), r.get("from")): r.get("to")
+              for n in etree.fromstring(launch.encode()).iter("composable_node") for r in n.iter("remap")}
+    assert remaps[("learner", "cartPos")] == "measuredPose"
+    assert remaps[("fri", "cartPos")] == "$(var ros_namespace '')/measuredPose"
+    assert remaps[("learner", "setCompliant")] == "$(var ros_namespace '')/atf/driver/jointCtrl/setCompliant"
+    assert not [to for to in remaps.values() if to.startswith("/")]
 
 
 def test_a_port_of_a_data_type_converts_to_the_users_type_in_the_global_namespace() -> None:

@@ -16,7 +16,15 @@ overlays these tests use through toolchains/ros2/env.sh.
   connection topic (``*Conn``), ``ros2 lifecycle set /controller deactivate``
   stops /armCommandConn and ``activate`` restarts it;
 - fixtures/cases/pid: ``ros2 launch pid pid.launch.xml`` loads its three nodes
-  and messages flow on its three topics.
+  and messages flow on its three topics; included with ``use_sim_time`` set,
+  its timers follow /clock (a test publishes it): nothing without /clock,
+  messages while it advances, none while it stands still;
+- the managed launch stops on SIGINT with no ERROR line, three times in a row;
+- fixtures/cases/learning included under ``<push-ros-namespace>``: the
+  topics of its root-namespace nodes and of its namespaced ones
+  (``atf/driver``) meet under the pushed namespace and messages flow there;
+- ``toolchains/ros2/build.sh --check`` says OK on the tree and fails on a
+  copy whose rcl_interfaces Python type support is gone.
 
 Each launch runs in its own process group on a private ROS_DOMAIN_ID and is
 stopped with SIGINT; no process of the group may outlive it. Waits poll with
@@ -171,6 +179,7 @@ class Launch:
     def start(self) -> None:
         self.offset = self.log.stat().st_size if self.log.exists() else 0
         with self.log.open("ab") as out:
+            # (pkg "": file is a launch file's path)
             self.proc = subprocess.Popen(_script(self.ws.root, f"exec ros2 launch {self.pkg} {self.file}"),
                                          cwd=self.ws.root, env=_env(self.ws.root / "home"), stdout=out,
                                          stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL, start_new_session=True)
@@ -333,6 +342,31 @@ def test_managed_launch_stops_on_sigint_and_leaves_nothing(managed: Launch) -> N
     left = managed.stop()
     assert not left, f"outlived SIGINT by 90 s (killed): {left}"
     assert "process has died" not in managed.text(), managed.text()[-5000:]
+    assert not _error_lines(managed.text()), managed.text()[-5000:]
+
+
+# what a clean stop must not log: a node's or launch's ERROR / FATAL line
+def _error_lines(text: str) -> list[str]:
+    return [line for line in text.splitlines() if re.search(r"\[(ERROR|FATAL|CRITICAL)\]", line)]
+
+
+@needs_launch
+def test_managed_launch_stops_on_sigint_without_an_error_line_again_and_again(workspace: Workspace) -> None:
+    # after the module fixture's run (the test above), twice more: a clean Ctrl-C of a managed
+    # launch logs no ERROR line (the lifecycle destructors no longer transition a shut-down context)
+    pkg = workspace.packages["managed"]
+    launch = Launch(workspace, pkg, "managed.launch.xml", workspace.root / "managed.again.launch.log")
+    finished = lambda text: len(re.findall(r"\[lifecycle_manager-\d+\]: process has finished cleanly", text)) == 2
+    for round_ in range(2):
+        try:
+            launch.start_loaded(_composable_nodes(workspace, pkg))
+            assert launch.wait_for(finished), launch.text()[-5000:]
+            assert _count(workspace, ["/armCommandConn"])["/armCommandConn"] > 0
+        finally:
+            left = launch.stop()
+        assert not left, f"round {round_}: outlived SIGINT by 90 s (killed): {left}"
+        assert not _error_lines(launch.text()), f"round {round_}:\n" + launch.text()[-5000:]
+        assert "process has died" not in launch.text(), launch.text()[-5000:]
 
 
 @needs_launch
@@ -353,3 +387,157 @@ def test_pid_launch_runs_its_three_nodes_and_topics(workspace: Workspace) -> Non
     finally:
         left = launch.stop()
     assert not left, f"outlived SIGINT by 90 s (killed): {left}"
+
+
+# publishes /clock and counts the messages of the topics given (std_msgs/Float64) in three phases of
+# SECONDS each: no /clock at all, /clock advancing by STEP each 10 ms, /clock standing still
+_SIM_CLOCK = r'''
+import json, sys, time
+import rclpy
+from rclpy.qos import qos_profile_sensor_data
+from rosgraph_msgs.msg import Clock
+from std_msgs.msg import Float64
+seconds, step, topics = float(sys.argv[1]), float(sys.argv[2]), sys.argv[3:]
+rclpy.init()
+node = rclpy.create_node("robomda_sim_clock")
+clock = node.create_publisher(Clock, "/clock", 10)
+counts = {t: 0 for t in topics}
+def counter(t):
+    def cb(_):
+        counts[t] += 1
+    return cb
+subs = [node.create_subscription(Float64, t, counter(t), qos_profile_sensor_data) for t in topics]
+deadline = time.monotonic() + 60
+while any(s.get_publisher_count() == 0 for s in subs) and time.monotonic() < deadline:
+    rclpy.spin_once(node, timeout_sec=0.1)
+sim = 1000.0
+def phase(advance, publish=True):
+    global sim
+    end = time.monotonic() + seconds
+    while time.monotonic() < end:
+        if publish:
+            sim += advance
+            msg = Clock()
+            msg.clock.sec, msg.clock.nanosec = int(sim), int(round((sim % 1) * 1e9)) % 1000000000
+            clock.publish(msg)
+        rclpy.spin_once(node, timeout_sec=0.01)
+    taken = dict(counts)
+    for t in topics:
+        counts[t] = 0
+    return taken
+result = {"no_clock": phase(0.0, publish=False), "running": phase(step)}
+phase(0.0)  # what was under way when the clock stopped
+result["standing"] = phase(0.0)
+print(json.dumps(result))
+'''
+
+
+@needs_launch
+def test_pid_timers_follow_the_simulated_clock(workspace: Workspace) -> None:
+    pkg = workspace.packages["pid"]
+    assert (workspace.root / "install" / pkg).is_dir(), "the pid package did not build"
+    wrapper = workspace.root / "pid_sim_time.launch.xml"
+    wrapper.write_text(f"""<launch>
+  <set_parameter name="use_sim_time" value="true"/>
+  <include file="$(find-pkg-share {pkg})/launch/{pkg}.launch.xml"/>
+</launch>
+""")
+    topics = _connection_topics(workspace, pkg)
+    (workspace.root / "sim_clock.py").write_text(_SIM_CLOCK)
+    launch = Launch(workspace, "", str(wrapper), workspace.root / "pid_sim_time.launch.log")
+    try:
+        launch.start_loaded(_composable_nodes(workspace, pkg))
+        run = workspace.run(f"exec python3 {workspace.root / 'sim_clock.py'} 4 0.01 {' '.join(topics)}", timeout=240)
+    finally:
+        left = launch.stop()
+    assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-3000:]
+    counts = json.loads(run.stdout.strip().splitlines()[-1])
+    # wall timers would publish ~400 messages a topic in each phase
+    assert all(c == 0 for c in counts["no_clock"].values()), counts
+    assert all(c > 0 for c in counts["running"].values()), counts
+    assert all(c == 0 for c in counts["standing"].values()), counts
+    assert not left, f"outlived SIGINT by 90 s (killed): {left}"
+
+
+# for each topic given: publishers and subscribers once both are there (60 s at most), and every
+# topic of the graph; prints {"counts": {"topic": [pubs, subs]}, "topics": [...]}
+_GRAPH = r'''
+import json, sys, time
+import rclpy
+topics = sys.argv[1:]
+rclpy.init()
+node = rclpy.create_node("robomda_graph")
+deadline = time.monotonic() + 60
+counts = {}
+while time.monotonic() < deadline:
+    rclpy.spin_once(node, timeout_sec=0.2)
+    counts = {t: [node.count_publishers(t), node.count_subscribers(t)] for t in topics}
+    if all(p > 0 and s > 0 for p, s in counts.values()):
+        break
+print(json.dumps({"counts": counts, "topics": sorted(n for n, _ in node.get_topic_names_and_types())}))
+'''
+
+
+@needs_launch
+def test_learning_under_a_pushed_namespace_connects_both_kinds_of_node(workspace: Workspace) -> None:
+    # learning has nodes in the root namespace (learner, csGen) and in atf/driver, atf (fri,
+    # jointCtrl, ...): included under <push-ros-namespace>, the ends of each connection still meet
+    pkg = workspace.packages["learning"]
+    assert (workspace.root / "install" / pkg).is_dir(), "the learning package did not build"
+    wrapper = workspace.root / "learning_pushed.launch.xml"
+    wrapper.write_text(f"""<launch>
+  <group>
+    <push-ros-namespace namespace="robot"/>
+    <include file="$(find-pkg-share {pkg})/launch/{pkg}.launch.xml"/>
+  </group>
+</launch>
+""")
+    nodes = [f"/robot{n}" for n in _composable_nodes(workspace, pkg)]
+    # fri (in atf/driver) publishes measuredPose to learner (root); jointCtrl and fri (atf/driver)
+    # and jsIter (atf) share atf_driver_measuredJoints
+    topics = ["/robot/measuredPose", "/robot/atf_driver_measuredJoints", "/robot/atf_driver_torqueCmd"]
+    (workspace.root / "graph.py").write_text(_GRAPH)
+    launch = Launch(workspace, "", str(wrapper), workspace.root / "learning_pushed.launch.log")
+    try:
+        launch.start()
+        assert launch.wait_for(lambda t: t.count("Loaded node '") >= 6), launch.text()[-5000:]
+        run = workspace.run(f"exec python3 {workspace.root / 'graph.py'} {' '.join(topics)}", timeout=240)
+        assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-3000:]
+        graph = json.loads(run.stdout.strip().splitlines()[-1])
+        counts = _count(workspace, topics, 3.0)
+    finally:
+        left = launch.stop()
+    text = launch.text()
+    assert all(f"Loaded node '{n}'" in text for n in ["/robot/learner", "/robot/atf/driver/fri"]), (nodes, text[-3000:])
+    assert all(p > 0 and s > 0 for p, s in graph["counts"].values()), graph
+    strays = [t for t in graph["topics"] if t.split("/")[1] in {"measuredPose", "atf_driver_measuredJoints",
+                                                                 "atf_driver_torqueCmd", "doorTrajectory"}]
+    assert not strays, f"topics outside the pushed namespace: {strays}"
+    assert all(c > 0 for c in counts.values()), counts
+    assert not left, f"outlived SIGINT by 90 s (killed): {left}"
+
+
+@pytest.mark.skipif(not (PREFIX / "install_py" / "bin" / "ros2").exists(), reason="no stage 2 to check")
+def test_check_says_ok_on_the_tree_and_fails_on_one_that_cannot_launch(tmp_path: Path) -> None:
+    env = dict(os.environ, ROS_DOMAIN_ID=DOMAIN)
+    good = subprocess.run([str(TOOLCHAIN / "build.sh"), "--check", "--no-apt"], env=dict(env, ROS2_PREFIX=str(PREFIX)),
+                          capture_output=True, text=True, timeout=600)
+    assert good.returncode == 0 and "check: OK" in good.stdout, good.stdout + good.stderr
+    assert "run: ros2 launch of a tiny launch file: OK" in good.stdout, good.stdout
+    # a copy of the tree (links to every file) without the compiled Python type support of
+    # rcl_interfaces: every package is still installed, but launch_ros cannot run
+    broken = tmp_path / "ros2"
+    broken.mkdir()
+    for part in ("src", "src_py", "venv", "install"):
+        (broken / part).symlink_to(PREFIX / part)
+    subprocess.run(["cp", "-rs", str(PREFIX / "install_py"), str(broken / "install_py")], check=True)
+    gone = [p for p in (broken / "install_py").rglob("*rcl_interfaces_s__rosidl_typesupport_c*.so")]
+    assert gone, "no compiled type support of rcl_interfaces found in install_py"
+    for p in gone:
+        p.unlink()
+    bad = subprocess.run([str(TOOLCHAIN / "build.sh"), "--check", "--no-apt"], env=dict(env, ROS2_PREFIX=str(broken)),
+                         capture_output=True, text=True, timeout=600)
+    assert bad.returncode == 1, bad.stdout + bad.stderr
+    assert "stage 2: all" in bad.stdout, bad.stdout  # the packages are all there ...
+    assert "MISSING: run: import of the Python type support" in bad.stdout, bad.stdout  # ... but it cannot run
+    assert "check: incomplete" in bad.stdout, bad.stdout

@@ -151,7 +151,10 @@ def test_managed_processes_are_lifecycle_nodes_a_manager_drives_in_the_deploymen
         assert len(manager) == 1 and manager[0].get("name") == f"{host}_lifecycle_manager"
         param = manager[0].find("param")
         assert param.get("name") == "node_names" and param.get("value-sep") == ","
-        names = [n.lstrip("/") for n in param.get("value").split(",")]
+        # each name from the launch's root: after the pushed namespace, if any
+        prefix = "$(var ros_namespace '')/"
+        assert all(n.startswith(prefix) for n in param.get("value").split(",")), param.get("value")
+        names = [n.removeprefix(prefix) for n in param.get("value").split(",")]
         here = {i.get("name") for i in psm.iter(f"{R}instance") if i.get("host") == host} & managed
         assert set(names) == here and names == sorted(names, key=order.get)
     plugins = {c.get("name"): c.get("plugin") for f in files if f.endswith(".launch.xml")
@@ -177,11 +180,15 @@ def test_a_lifecycle_node_runs_its_hooks_in_the_transitions() -> None:
     assert "return CallbackReturn::FAILURE;" in configure and "configure() failed" in configure
     activate = bodies["activate"]
     assert activate.index("pub_armCommand_->on_activate();") < activate.index("::ImpedanceControl::start()") \
-        < activate.index("create_wall_timer")
+        < activate.index("rclcpp::create_timer(this, this->get_clock(),")
     deactivate = bodies["deactivate"]
     assert deactivate.index("running_ = false;") < deactivate.index("::ImpedanceControl::stop();") \
         < deactivate.index("pub_armCommand_->on_deactivate();")
     assert "pub_armCommand_.reset();" in bodies["cleanup"] and "::ImpedanceControl::stop();" in bodies["shutdown"]
+    # the destructor transitions only a live context: after Ctrl-C the transition would log ERROR lines
+    destructor = source[source.index("ImpedanceController::~ImpedanceController()"):source.index("::on_configure(")]
+    assert destructor.index("get_context()->is_valid() &&") < destructor.index("shutdown();") \
+        < destructor.index("::ImpedanceControl::stop();")
     assert "class ImpedanceController : public rclcpp_lifecycle::LifecycleNode, public ::ImpedanceControl" \
         in _files(generate(MANAGED / "model.xmi", None, "ros2", write=False))["include/managed/lifecycle/ImpedanceController.hpp"]
 

@@ -28,3 +28,13 @@ apt_step() {
     DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -q --no-install-recommends "${absent[@]}"
   fi
 }
+
+# _run LABEL EXPECTED CMD...: run CMD (RUN_TIMEOUT s, default 60, at most; stdin closed); it must exit 0
+# and print EXPECTED, else it is missing (the --check of a tree that cannot run)
+_run() {
+  local label=$1 expected=$2 out rc=0
+  shift 2
+  out=$(timeout -k 5 "${RUN_TIMEOUT:-60}" "$@" </dev/null 2>&1) || rc=$?
+  if [ $rc = 0 ] && grep -q -- "$expected" <<<"$out"; then say "run: $label: OK"
+  else missing "run: $label failed (exit $rc): $(tail -n 5 <<<"$out" | tr '\n' ' ')"; fi
+}

@@ -77,15 +77,7 @@ done < "$HERE/sources.tsv"
 if [ $SOURCES_ONLY = 1 ] && [ $CHECK = 0 ]; then say "sources fetched into $SRC"; exit 0; fi
 
 # --- check: files, then one run of each tool ---------------------------------------------------------
-# _run LABEL EXPECTED CMD...: run CMD (60 s at most, stdin closed); it must exit 0 and print EXPECTED
-_run() {
-  local label=$1 expected=$2 out rc=0
-  shift 2
-  out=$(timeout -k 5 60 "$@" </dev/null 2>&1) || rc=$?
-  if [ $rc = 0 ] && grep -q -- "$expected" <<<"$out"; then say "run: $label: OK"
-  else missing "run: $label failed (exit $rc): $(tail -n 5 <<<"$out" | tr '\n' ' ')"; fi
-}
-
+# _run LABEL EXPECTED CMD... (toolchains/common.sh)
 check_runs() {
   # shellcheck disable=SC1091
   source "$HERE/env.sh" >/dev/null

@@ -11,14 +11,17 @@
 #
 # Usage: build.sh [--check] [--no-apt] [--sources-only] [--stage1-only] [--cmake-clean-cache]
 #   --check              build nothing: report what is present and what is missing (Debian packages,
-#                        sources and their commits, venv pins, every package of both stages installed);
-#                        exit status 1 if anything is missing
+#                        sources and their commits, venv pins, every package of both stages installed),
+#                        then run the tree once: import the Python type support of rcl_interfaces,
+#                        lifecycle_msgs and std_msgs, and `ros2 launch` a tiny launch file; exit
+#                        status 1 if anything is missing or a run fails (a tree that cannot launch)
 #   --no-apt             do not install Debian packages (only check they are there)
 #   --sources-only       stop after fetching the sources (to build later, offline)
 #   --stage1-only        stop after the C++ core (enough to build generated packages, not to launch them)
 #   --cmake-clean-cache  passed to colcon in both stages (after changing interface packages, so they
 #                        find the overlay's service_msgs etc.); stage 2's second pass always uses it
-# Environment: ROS2_PREFIX, JOBS (make jobs and colcon workers, default 2), NICE (default 19).
+# Environment: ROS2_PREFIX; MIRROR, a folder of fetched bare mirrors (MIRROR/ros2+rclcpp/repo, ...), cloned
+# instead of the public URL when set; JOBS (make jobs and colcon workers, default 2); NICE (default 19).
 # Source env.sh beside this script to use the result. Takes ~30 min on 2 cores.
 set -euo pipefail
 
@@ -42,16 +45,18 @@ done
 # Debian packages: compilers and tools, then the system libraries the vendor packages wrap
 APT_PACKAGES=(build-essential cmake git ca-certificates python3-venv python3-dev
               libyaml-dev libspdlog-dev libconsole-bridge-dev libacl1-dev libssl-dev libtinyxml2-dev pybind11-dev)
-# what each stage is built up to (colcon --packages-up-to), and what it skips
+# what each stage is built up to (colcon --packages-up-to), and what it leaves out of its graph
+# (--packages-ignore: with --packages-skip the package stays in the graph and rcl waits for test_msgs)
 STAGE1_UP_TO=(rclcpp_components rclcpp_lifecycle std_msgs std_srvs lifecycle_msgs
               rosidl_default_generators rosidl_default_runtime rmw_cyclonedds_cpp rmw_implementation)
-STAGE1_SKIP=(test_msgs)
-STAGE2_PATHS=(src_py src/rcl_interfaces src/common_interfaces src/unique_identifier_msgs src/rpyutils src/rcl/rcl_action)
+STAGE1_IGNORE=(test_msgs)
+STAGE2_PATHS=(src_py src/rcl_interfaces src/common_interfaces src/unique_identifier_msgs src/rpyutils src/rcl/rcl_action
+              src/rosidl_defaults)
 STAGE2_FIRST=(rosidl_generator_py python_cmake_module)
 STAGE2_UP_TO=(rclpy launch launch_xml launch_yaml launch_ros ros2launch ros2lifecycle ros2topic ros2node ros2run
               ros2pkg ros2component ros2param ros2service
               std_msgs std_srvs lifecycle_msgs composition_interfaces type_description_interfaces)
-STAGE2_SKIP=(test_msgs ros2cli_test_interfaces test_launch_ros)
+STAGE2_IGNORE=(test_msgs ros2cli_test_interfaces test_launch_ros)
 
 # say, missing, apt_step (toolchains/common.sh)
 source "$HERE/../common.sh"
@@ -60,8 +65,15 @@ source "$HERE/../common.sh"
 apt_step
 
 # --- sources ----------------------------------------------------------------------------------------
-# A shallow clone of a branch gets its newest commit; the one verified here is then fetched on its own
-# (GitHub serves any reachable commit); if that fails, the script says which commit it got.
+# From MIRROR/<owner>+<name>/repo when that exists (fetched bare mirrors: a full history, so the verified
+# commit is checked out directly), else a shallow clone of the public URL's branch, after which the
+# verified commit is fetched on its own (GitHub serves any reachable commit); if that fails, the script
+# says which commit it got. An existing clone is only compared with the verified commit.
+mirror_of() {  # url -> the mirror's git dir, or nothing
+  local slug
+  slug=${1#https://github.com/}; slug=${slug%.git}
+  if [ -n "${MIRROR:-}" ] && [ -d "$MIRROR/${slug/\//+}/repo" ]; then echo "$MIRROR/${slug/\//+}/repo"; fi
+}
 while IFS=$'\t' read -r dir name url ref commit; do
   case $dir in ''|'#'*) continue ;; esac
   dest=$PREFIX/$dir/$name
@@ -74,6 +86,12 @@ while IFS=$'\t' read -r dir name url ref commit; do
   fi
   if [ $CHECK = 1 ]; then missing "source $dir/$name ($url $ref)"; continue; fi
   mkdir -p "$PREFIX/$dir"
+  from=$(mirror_of "$url")
+  if [ -n "$from" ]; then
+    git clone -q --no-checkout "$from" "$dest"
+    git -C "$dest" -c advice.detachedHead=false checkout -q "$commit"
+    continue
+  fi
   git -c advice.detachedHead=false clone -q --depth 1 --branch "$ref" "$url" "$dest"
   got=$(git -C "$dest" rev-parse HEAD)
   if [ "$got" != "$commit" ]; then
@@ -137,8 +155,40 @@ stage_check() {  # stage-name install-base colcon-list-args...
   else missing "$stage: ${#absent[@]} of $n packages not installed in $PREFIX/$base: ${absent[*]}"; fi
 }
 
-STAGE1_SELECT=(--base-paths src --packages-up-to "${STAGE1_UP_TO[@]}" --packages-skip "${STAGE1_SKIP[@]}")
-STAGE2_SELECT=(--base-paths "${STAGE2_PATHS[@]}" --packages-up-to "${STAGE2_UP_TO[@]}" --packages-skip "${STAGE2_SKIP[@]}")
+STAGE1_SELECT=(--base-paths src --packages-up-to "${STAGE1_UP_TO[@]}" --packages-ignore "${STAGE1_IGNORE[@]}")
+STAGE2_SELECT=(--base-paths "${STAGE2_PATHS[@]}" --packages-up-to "${STAGE2_UP_TO[@]}" --packages-ignore "${STAGE2_IGNORE[@]}")
+
+# one run of what a generated package needs, in a fresh shell with env.sh sourced: the Python type support
+# of rcl_interfaces (what launch_ros's own node needs: a tree whose interfaces were configured before the
+# overlay's service_msgs installs them without it, and then every `ros2 launch` fails) and of the
+# interfaces generated packages use, and a tiny `ros2 launch`
+check_runs() {
+  local tmp
+  tmp=$(mktemp -d "${TMPDIR:-/tmp}/ros2-check.XXXXXX")
+  mkdir "$tmp/home"
+  cat > "$tmp/typesupport.py" <<'PY'
+from rclpy.type_support import check_for_type_support
+from rcl_interfaces.msg import ParameterEvent
+from rcl_interfaces.srv import GetParameters, SetParameters
+from lifecycle_msgs.srv import ChangeState
+from std_msgs.msg import Float64
+for kind in (ParameterEvent, GetParameters, SetParameters, ChangeState, Float64):
+    check_for_type_support(kind)  # raises when the compiled type support does not import
+print("TYPESUPPORT-OK")
+PY
+  cat > "$tmp/tiny.launch.xml" <<'XML'
+<launch>
+  <executable cmd="echo LAUNCH-OK" output="screen"/>
+</launch>
+XML
+  local env=(env "ROS2_PREFIX=$PREFIX" "ROS_HOME=$tmp/home" "ROS_DOMAIN_ID=${ROS_DOMAIN_ID:-42}")
+  local sourced="set +u; source '$HERE/env.sh' >/dev/null"
+  _run "import of the Python type support (rcl_interfaces, lifecycle_msgs, std_msgs)" TYPESUPPORT-OK \
+    "${env[@]}" bash -c "$sourced && python3 '$tmp/typesupport.py'"
+  RUN_TIMEOUT=120 _run "ros2 launch of a tiny launch file" "LAUNCH-OK" \
+    "${env[@]}" bash -c "$sourced && ros2 launch '$tmp/tiny.launch.xml' 2>&1; s=\$?; [ \$s = 0 ] || echo EXIT \$s; exit \$s"
+  rm -rf "$tmp"
+}
 
 if [ $CHECK = 1 ]; then
   if [ -x "$VENV/bin/colcon" ]; then
@@ -147,6 +197,8 @@ if [ $CHECK = 1 ]; then
   else
     missing "colcon in $VENV (stages not checked)"
   fi
+  if [ $MISSING = 1 ]; then say "runs skipped: the install is incomplete"
+  elif [ $STAGE2 = 1 ]; then check_runs; fi
   if [ $MISSING = 0 ]; then say "check: OK ($PREFIX)"; else say "check: incomplete ($PREFIX)"; fi
   exit $MISSING
 fi
@@ -161,17 +213,22 @@ nice -n "$NICE" colcon build "${STAGE1_SELECT[@]}" --install-base install --buil
   "${CLEAN[@]}" --cmake-args "${CMAKE_ARGS[@]}" "${STAGE1_CMAKE_ARGS[@]}"
 [ $STAGE2 = 1 ] || { say "done (stage 1 only)"; exit 0; }
 
+# colcon's setup scripts read unset variables (COLCON_TRACE, ...): sourced with set -u off
+set +u
 # shellcheck disable=SC1091
 source install/setup.bash
+set -u
 # Stage 2 in two passes: the interface packages build their Python bindings with rosidl_generator_py,
 # which their CMake only finds if it is on PYTHONPATH when they are configured. So first the generator,
 # then, with the overlay sourced, everything, from a clean CMake cache.
 say "stage 2, pass 1 (rosidl_generator_py) into $PREFIX/install_py"
 nice -n "$NICE" colcon build --base-paths "${STAGE2_PATHS[@]}" --packages-up-to "${STAGE2_FIRST[@]}" \
-  --packages-skip "${STAGE2_SKIP[@]}" --install-base install_py --build-base build_py "${COLCON_COMMON[@]}" \
+  --packages-ignore "${STAGE2_IGNORE[@]}" --install-base install_py --build-base build_py "${COLCON_COMMON[@]}" \
   "${CLEAN[@]}" --cmake-args "${CMAKE_ARGS[@]}"
+set +u
 # shellcheck disable=SC1091
 source install_py/local_setup.bash
+set -u
 say "stage 2, pass 2 (rclpy, launch_ros, ros2cli, interfaces with Python) into $PREFIX/install_py"
 nice -n "$NICE" colcon build "${STAGE2_SELECT[@]}" --install-base install_py --build-base build_py "${COLCON_COMMON[@]}" \
   --cmake-clean-cache --cmake-args "${CMAKE_ARGS[@]}"

@@ -19,7 +19,10 @@
       else "base" (a generated <Class>Base and a user <Class>).
   N2  data ports: out -> publisher, in -> subscription whose callback calls
       set<Datum>; the topic in the code is the port name, remapped per
-      instance in the launch files to the connection's topic. Message type
+      instance in the launch files to the connection's topic (for a node
+      in a namespace named from the root, r:remap/@from-root, as a service
+      client's provider is: ROS 2 launch puts the pushed namespace before
+      it). Message type
       from the type map; a data type or an enumeration no entry maps: its
       generated msg/<Type>.msg (types.xsl); an array of numbers: the
       std_msgs multi-array message.
@@ -807,10 +810,15 @@
         </xsl:if>
         <xsl:for-each select="$connections[1]">
           <!-- a node in a namespace resolves a relative name in it: the
-               topic is named from the root so that all ends meet -->
+               topic is named from the root so that all ends meet (from-root:
+               the launch's root, which a pushed namespace moves) -->
           <xsl:variable name="topic" as="xs:string" select="fp:topic-name(., $targets)"/>
           <r:remap from="{$port/@topic}"
-                   to="{if ($instance/@parent and not(starts-with($topic, '/'))) then '/' || $topic else $topic}"/>
+                   to="{if ($instance/@parent and not(starts-with($topic, '/'))) then '/' || $topic else $topic}">
+            <xsl:if test="$instance/@parent and not(starts-with($topic, '/'))">
+              <xsl:attribute name="from-root" select="true()"/>
+            </xsl:if>
+          </r:remap>
         </xsl:for-each>
       </xsl:for-each>
       <!-- operation calls (seed 003): each client to the provider's
@@ -819,7 +827,7 @@
         <xsl:variable name="provider" as="element(pim:instance)" select="key('fp:instance-by-name', string(pim:provider/@instance), root(.))"/>
         <xsl:variable name="node-path" as="xs:string" select="translate(($provider/@path, $provider/@name)[1], '.', '/')"/>
         <xsl:for-each select="$node/r:service-client[@service eq key('fp:id', current()/@interface, root($instance))/@name]">
-          <r:remap from="{@name}" to="/{$node-path}/{@name}"/>
+          <r:remap from="{@name}" to="/{$node-path}/{@name}" from-root="true"/>
         </xsl:for-each>
       </xsl:for-each>
       <r:parameter-value name="update_period" yaml="{fp:decimal($activity/@period)}"/>

@@ -13,7 +13,8 @@
   rclcpp_components_register_nodes; one executable per node, and
   lifecycle_manager when a node is managed; the
   atomic-code library as in ROS 1; generated messages with
-  rosidl_generate_interfaces.
+  rosidl_generate_interfaces. Headers install under include/<pkg>/ (the
+  data types' include/<Type>.hpp too), exported as the include folder.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -57,7 +58,7 @@
                                                              $package/r:node[@lifecycle-type-name] ! concat('src/lifecycle/', @class, '.cpp')), ' '), ')'),
         concat('target_include_directories(', $lib, ' PUBLIC'),
         '  $&lt;BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include&gt;',
-        '  $&lt;INSTALL_INTERFACE:include&gt;)',
+        '  $&lt;INSTALL_INTERFACE:include/${PROJECT_NAME}&gt;)',
         concat('ament_target_dependencies(', $lib, ' ', string-join($deps, ' '), ')'),
         if ($msgs) then concat('target_link_libraries(', $lib, ' ${${PROJECT_NAME}_msgs_cpp})') else (),
         fp:library-depends($package, $lib),
@@ -82,9 +83,12 @@
         '  RUNTIME DESTINATION bin)',
         concat('install(TARGETS ', string-join(($package/r:node/@executable, $package/r:node[@lifecycle-type-name][1] ! 'lifecycle_manager'), ' ')),
         '  DESTINATION lib/${PROJECT_NAME})',
-        'install(DIRECTORY include/ DESTINATION include)',
+        '# headers under include/${PROJECT_NAME}/: in a merged install, two packages'' data types',
+        '# of one name (include/${PROJECT_NAME}/Type.hpp) stay apart',
+        'install(DIRECTORY include/ DESTINATION include/${PROJECT_NAME})',
         'install(DIRECTORY config launch',
         '  DESTINATION share/${PROJECT_NAME})',
+        'ament_export_include_directories(&quot;include/${PROJECT_NAME}&quot;)',
         '',
         'ament_package()'))"/>
   </xsl:function>

@@ -12,8 +12,10 @@
   The constructor declares the parameters (declared type, model default)
   into the realizing class's members, calls configure() and start()
   (throws std::runtime_error when they fail), creates the publishers and
-  subscriptions with the port's QoS, the services and the wall timer
-  (period > 0). Same call pattern as ROS 1 (ros1-cpp.xsl).
+  subscriptions with the port's QoS (callbacks take the message as
+  ConstSharedPtr), the services and the timer (period > 0) on the node's
+  clock (simulated time under use_sim_time). Same call pattern as ROS 1
+  (ros1-cpp.xsl).
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -85,7 +87,7 @@
     <xsl:variable name="package" as="xs:string" select="$node/@namespace"/>
     <xsl:sequence select="(
         '  void step();',
-        $node/r:port[@direction eq 'in'] ! (concat('  void on_', @name, '(const ', fp:ros2-type(r:message/@msg, $package, 'msg')[2], '::SharedPtr msg);')),
+        $node/r:port[@direction eq 'in'] ! (concat('  void on_', @name, '(const ', fp:ros2-type(r:message/@msg, $package, 'msg')[2], '::ConstSharedPtr msg);')),
         $node/r:service ! (concat('  void on_', @name, '(const std::shared_ptr&lt;', fp:ros2-type(@srv, $package, 'srv')[2], '::Request&gt; request,'),
                         concat('    std::shared_ptr&lt;', fp:ros2-type(@srv, $package, 'srv')[2], '::Response&gt; response);')),
         '',
@@ -205,13 +207,14 @@
                    fp:cpp-string(@name), ');'))"/>
   </xsl:function>
 
-  <!-- the wall timer that runs step(), when the node has a period -->
+  <!-- the timer that runs step(), when the node has a period: on the node's
+       clock, so that it follows /clock when use_sim_time is set -->
   <xsl:function name="fp:ros2-timer" as="xs:string+">
     <xsl:param name="node" as="element(r:node)"/>
     <xsl:sequence select="
         '  if (period_ &gt; 0.0) {',
-        concat('    timer_ = this->create_wall_timer(std::chrono::duration&lt;double&gt;(period_), std::bind(&amp;',
-               $node/@class, '::step, this));'),
+        '    timer_ = rclcpp::create_timer(this, this-&gt;get_clock(), rclcpp::Duration::from_seconds(period_),',
+        concat('      std::bind(&amp;', $node/@class, '::step, this));'),
         '  }'"/>
   </xsl:function>
 
@@ -234,7 +237,7 @@
         for $port in $node/r:port[@direction eq 'in'] return (
           '',
           concat('void ', $class, '::on_', $port/@name, '(const ',
-                 fp:ros2-type($port/r:message/@msg, $node/@namespace, 'msg')[2], '::SharedPtr msg)'),
+                 fp:ros2-type($port/r:message/@msg, $node/@namespace, 'msg')[2], '::ConstSharedPtr msg)'),
           '{',
           fp:ros-on-input($port, $realizing-class),
           '}'),

@@ -13,10 +13,13 @@
         <composable_node>s, in the model's start order, are its instances
         (intra-process communication stays off: Humble refuses it with the
         transient_local durability a latched connection asks for), each with <param from=".yaml"/>
-        and a <remap> per connected port (a managed instance: its node's
+        and a <remap> per connected port (relative for a node in the root
+        namespace; a name from the root starts with $(var ros_namespace ''),
+        the pushed namespace) (a managed instance: its node's
         lifecycle class); a <node> per instance in no process; an <include>
         per component set on the host; a lifecycle_manager <node> when the
-        host has managed instances, their names in start order (node_names)
+        host has managed instances, their names in start order (node_names,
+        after the pushed namespace)
   launch/<model>_<set>.launch.xml  one per component set (seed 002): the
         containers of the processes wholly in it, and its members in other
         processes loaded into theirs (<load_composable_node target>)
@@ -31,6 +34,12 @@
     xmlns:fp="urn:robomda:xslt:function:private"
     exclude-result-prefixes="#all">
 
+  <!-- the namespace a <push-ros-namespace> (or an including file's) has
+       set, empty when none: a name the PSM made absolute (from-root: a node
+       in a namespace, a service client) starts with it, so that both ends
+       of a connection meet wherever this file is included -->
+  <xsl:variable name="fp:ros2-root" as="xs:string" select="'$(var ros_namespace '''')'"/>
+
   <!-- the settings of a node or composable node of instance $i: its
        parameter files and remaps, indented by $n -->
   <xsl:function name="fp:ros2-node-settings" as="xs:string*">
@@ -40,7 +49,8 @@
     <xsl:sequence select="fp:indent($n, (
         concat('&lt;param from=&quot;$(find-pkg-share ', $package/@name, ')/config/params.yaml&quot;/&gt;'),
         concat('&lt;param from=&quot;$(find-pkg-share ', $package/@name, ')/config/params.user.yaml&quot;/&gt;'),
-        $i/r:remap ! (concat('&lt;remap from=&quot;', @from, '&quot; to=&quot;', @to, '&quot;/&gt;'))))"/>
+        $i/r:remap ! (concat('&lt;remap from=&quot;', @from, '&quot; to=&quot;',
+                             if (xs:boolean(@from-root)) then $fp:ros2-root else '', @to, '&quot;/&gt;'))))"/>
   </xsl:function>
 
   <!-- instance $i as a node of its own -->
@@ -128,7 +138,7 @@
         '  &lt;!-- the managed (lifecycle) nodes on this host: configured, then activated, in the deployment sequence --&gt;',
         concat('  &lt;node pkg=&quot;', $package/@name, '&quot; exec=&quot;lifecycle_manager&quot; name=&quot;', $host/@lifecycle-manager,
                '&quot; namespace=&quot;/&quot; output=&quot;screen&quot;&gt;'),
-        concat('    &lt;param name=&quot;node_names&quot; value=&quot;', string-join(fp:in-start-order($managed) ! fp:ros2-fqn(.), ','),
+        concat('    &lt;param name=&quot;node_names&quot; value=&quot;', string-join(fp:in-start-order($managed) ! ($fp:ros2-root || fp:ros2-fqn(.)), ','),
                '&quot; value-sep=&quot;,&quot;/&gt;'),
         '  &lt;/node&gt;'"/>
   </xsl:function>

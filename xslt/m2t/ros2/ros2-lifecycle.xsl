@@ -23,9 +23,11 @@
     on_deactivate the timer cancelled; stop(); publishers deactivated
     on_cleanup    cleanup(); every entity released
     on_shutdown   stop() if active, cleanup() if configured
-    destructor    the shutdown transition if not finalized (rclcpp after
-                  Jazzy warns of a lifecycle node destroyed unfinalized),
-                  then stop() / cleanup() if that transition could not run
+    destructor    the shutdown transition if not finalized and the
+                  context is still valid (rclcpp after Jazzy warns of a
+                  lifecycle node destroyed unfinalized; after Ctrl-C the
+                  context is gone and a transition would log errors), then
+                  stop() / cleanup() if that transition could not run
   A hook that returns false fails its transition (the node stays where it
   was). step() runs only while active (running_), so nothing is published
   and update() is not called otherwise.
@@ -124,8 +126,10 @@
         '',
         concat($class, '::~', $class, '()'),
         '{',
-        '  // finalized before it goes (its container stopping): on_shutdown winds the atomic code down',
-        '  if (get_current_state().id() != lifecycle_msgs::msg::State::PRIMARY_STATE_FINALIZED) {',
+        '  // finalized before it goes (its container stopping): on_shutdown winds the atomic code down;',
+        '  // not once the context has shut down (Ctrl-C): the transition could not publish its event',
+        '  if (get_node_base_interface()-&gt;get_context()-&gt;is_valid() &amp;&amp;',
+        '      get_current_state().id() != lifecycle_msgs::msg::State::PRIMARY_STATE_FINALIZED) {',
         '    shutdown();',
         '  }',
         '  // and so here, where that transition could not run (the context already shut down)',
