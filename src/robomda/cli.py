@@ -162,6 +162,7 @@ def _parser() -> argparse.ArgumentParser:
                           "each model's latest run, the worst")
 
     _diagram_parser(sub)
+    _features_parser(sub)
 
     imp = sub.add_parser(
         "import", help="write the platform-independent model (PIM) of an XMI model",
@@ -193,6 +194,34 @@ def _diagram_parser(sub: argparse._SubParsersAction) -> None:
     dia.add_argument("--model-path", type=Path, action="append", default=[], metavar="DIR", help="as for generate")
     dia.add_argument("--format", default="text", choices=FORMATS,
                      help="text on stderr (default), or a json / sarif document on stdout")
+
+
+def _features_parser(sub: argparse._SubParsersAction) -> None:
+    fea = sub.add_parser(
+        "features", help="analyse a FeatureIDE feature model: void, dead features, products (needs robomda[analysis])",
+        description="Analyse the FeatureIDE feature model MODEL with flamapy (the optional extra: "
+                    "pip install 'robomda[analysis]'): a void model (error), dead and false-optional features, "
+                    "the number of products and, with --resolution, each presence condition that no valid "
+                    "configuration satisfies or that every one does. Writes nothing (docs/variability.md).",
+        epilog=_EXIT_CODES, formatter_class=argparse.RawDescriptionHelpFormatter)
+    fea.add_argument("model", type=Path, metavar="MODEL", help="the feature model (FeatureIDE model.xml)")
+    fea.add_argument("--resolution", type=Path, metavar="FILE",
+                     help="a resolution model whose presence conditions are checked against MODEL")
+    fea.add_argument("--format", default="text", choices=FORMATS,
+                     help="text on stderr (default), or a json / sarif document on stdout")
+
+
+def _features(args: argparse.Namespace) -> int:
+    from robomda.analysis import analyse
+
+    done = analyse(args.model, args.resolution)
+    code = EXIT_FINDINGS if any(d.severity == "error" for d in done.diagnostics) else EXIT_OK
+    _report(args.format, done.diagnostics, code)
+    if args.format == "text":
+        print(f"robomda: {args.model}: {done.products} products, "
+              + ", ".join(f"{sum(d.code == c for d in done.diagnostics)} {what}" for c, what in (
+                  ("VAR042", "dead"), ("VAR043", "false-optional"), ("VAR045", "never-present"))))
+    return code
 
 
 def _diagram(args: argparse.Namespace, fmt: str) -> int:
@@ -395,6 +424,8 @@ def _main(args: argparse.Namespace, fmt: str) -> int:
             return _watch(args)
         if args.command == "diagram":
             return _diagram(args, fmt)
+        if args.command == "features":
+            return _features(args)
         if args.command == "generate":
             checking = args.check or args.diff
             if checking and args.save_stages or args.diff and fmt != "text":

@@ -19,7 +19,7 @@ from robomda.diagnostics import EXIT_FINDINGS, EXIT_INPUT, Diagnostic, RobomdaEr
 from robomda.resources import resource_root
 from robomda.validate import schema_of
 
-__all__ = ["feature_context", "product_line_files", "configurations"]
+__all__ = ["feature_context", "product_line_files", "configurations", "schema_findings"]
 
 _SCHEMAS = {"configuration": "featureide-configuration.xsd", "feature model": "featureide-model.xsd",
             "resolution": "resolution.xsd"}
@@ -45,7 +45,7 @@ def product_line_files(config: Path) -> dict[str, Path]:
     return {"configuration": config, "feature model": model, "resolution": resolution}
 
 
-def _validate(kind: str, path: Path) -> list[Diagnostic]:
+def schema_findings(kind: str, path: Path) -> list[Diagnostic]:
     """The located schema violations of ``path`` (empty when it is valid)."""
     parser = etree.XMLParser(resolve_entities=False, no_network=True)
     try:
@@ -67,7 +67,7 @@ def feature_context(config: Path | str | None) -> dict[str, str]:
     if config is None:
         return {"features": "", "feature-model": "", "resolution": ""}
     files = product_line_files(Path(config))
-    found = [d for kind, path in files.items() for d in _validate(kind, path)]
+    found = [d for kind, path in files.items() for d in schema_findings(kind, path)]
     if found:
         raise RobomdaError(found, EXIT_INPUT if any(d.code == "XML001" for d in found) else EXIT_FINDINGS)
     uri = {kind: path.resolve().as_uri() for kind, path in files.items()}
