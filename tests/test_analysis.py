@@ -84,6 +84,8 @@ def test_presence_conditions(tmp_path: Path, capsys: pytest.CaptureFixture[str])
         "  <present element=\"m::s::always\" when=\"A\"/>\n"
         "  <present element=\"m::s::sometimes\" when=\"X\"/>\n"
         "  <present element=\"m::s::unknown\"><disj><var>X</var><var>Nope</var></disj></present>\n"
+        "  <present element=\"m::s::empty\"/>\n"
+        "  <present element=\"m::s::unknown2\" when=\"Gone\"/>\n"
         "</resolution>\n", encoding="utf-8")
     code, err, out = _run(capsys, str(model), "--resolution", str(resolution))
     assert code == 1
@@ -93,7 +95,11 @@ def test_presence_conditions(tmp_path: Path, capsys: pytest.CaptureFixture[str])
         f"{resolution}:3: info: [VAR046] every valid configuration satisfies the presence condition: the element "
         "is in every variant (present 'm::s::always')",
         f"{resolution}:5: error: [VAR047] the presence condition names features the feature model does not have: "
-        "Nope (present 'm::s::unknown')"]
+        "Nope (present 'm::s::unknown')",
+        f"{resolution}:6: error: [VAR048] the presence condition is empty: give @when (a feature) or a formula "
+        "(present 'm::s::empty')",
+        f"{resolution}:7: error: [VAR047] the presence condition names features the feature model does not have: "
+        "Gone (present 'm::s::unknown2')"]
     assert "1 never-present" in out
 
 
@@ -133,3 +139,10 @@ def test_readme_and_docs_name_the_command_and_the_extra() -> None:
     assert "pip install 'robomda[analysis]'" in readme
     assert "Research Camp line has 36 products, the calligraphy line\n16" in \
         (ROOT / "docs" / "variability.md").read_text(encoding="utf-8")
+
+
+def test_help_names_the_extra(capsys: pytest.CaptureFixture[str]) -> None:
+    with pytest.raises(SystemExit) as done:
+        main(["features", "--help"])
+    out = capsys.readouterr().out
+    assert done.value.code == 0 and "--resolution FILE" in out and "robomda[analysis]" in out

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, NamedTuple
 
 from lxml import etree
 
@@ -36,7 +36,16 @@ class Analysis:
     products: int = 0
 
 
-def _flamapy() -> Any:
+class _Flamapy(NamedTuple):
+    """The flamapy modules robomda uses (imported on demand: flamapy is an optional extra)."""
+
+    ast: Any  # flamapy.core.models.ast: formulas
+    fm: Any  # flamapy.metamodels.fm_metamodel.models.feature_model: the feature tree
+    ops: Any  # flamapy.metamodels.pysat_metamodel.operations: the SAT analyses
+    sat: Any  # flamapy.metamodels.pysat_metamodel.transformations: feature model -> CNF
+
+
+def _flamapy() -> _Flamapy:
     """The flamapy modules robomda uses, or VAR040 (exit 2) naming the extra."""
     try:
         from flamapy.core.models import ast
@@ -45,7 +54,7 @@ def _flamapy() -> Any:
     except ImportError as exc:
         raise RobomdaError([Diagnostic("error", "VAR040", "the feature model analysis needs flamapy, the optional "
                                        f"extra of robomda: {_EXTRA} ({exc})")], EXIT_INPUT) from exc
-    return ast, feature_model, operations, transformations
+    return _Flamapy(ast, feature_model, operations, transformations)
 
 
 def _parsed(kind: str, path: Path) -> etree._ElementTree:
@@ -56,26 +65,25 @@ def _parsed(kind: str, path: Path) -> etree._ElementTree:
     return etree.parse(str(path), etree.XMLParser(resolve_entities=False, no_network=True))
 
 
-def _feature(fl: Any, el: etree._Element, lines: dict[str, int]) -> Any:
+def _feature(fl: _Flamapy, el: etree._Element, lines: dict[str, int]) -> Any:
     """The flamapy feature of FeatureIDE element ``el`` (and, or, alt, feature) with its subtree."""
-    fm = fl[1]
     name = el.get("name", "")
     lines[name] = el.sourceline or 0
-    node = fm.Feature(name, [], is_abstract=el.get("abstract") == "true")
+    node = fl.fm.Feature(name, [], is_abstract=el.get("abstract") == "true")
     kids = [k for k in el if isinstance(k.tag, str) and (k.tag in _GROUPS or k.tag == "feature")]
     children = [_feature(fl, k, lines) for k in kids]
     if el.tag in ("or", "alt") and children:
-        node.add_relation(fm.Relation(node, children, 1, 1 if el.tag == "alt" else len(children)))
+        node.add_relation(fl.fm.Relation(node, children, 1, 1 if el.tag == "alt" else len(children)))
     else:
         for kid, child in zip(kids, children):
             low = 1 if kid.get("mandatory") == "true" else 0
-            node.add_relation(fm.Relation(node, [child], low, 1))
+            node.add_relation(fl.fm.Relation(node, [child], low, 1))
     return node
 
 
-def _formula(fl: Any, el: etree._Element, names: set[str], unknown: set[str]) -> Any:
+def _formula(fl: _Flamapy, el: etree._Element, names: set[str], unknown: set[str]) -> Any:
     """The flamapy AST node of a formula (var, not, conj, disj, imp, eq) in either namespace."""
-    ast = fl[0]
+    ast = fl.ast
     tag = etree.QName(el).localname
     if tag == "var":
         name = (el.text or "").strip()
@@ -94,67 +102,72 @@ def _formula(fl: Any, el: etree._Element, names: set[str], unknown: set[str]) ->
     return node
 
 
-def _model(fl: Any, tree: etree._ElementTree, lines: dict[str, int]) -> Any:
+def _model(fl: _Flamapy, tree: etree._ElementTree, lines: dict[str, int]) -> Any:
     """The flamapy feature model of a FeatureIDE ``featureModel`` document."""
     root = next(k for k in tree.getroot().find("struct") if isinstance(k.tag, str))
     top = _feature(fl, root, lines)
     rules = [next(k for k in rule if isinstance(k.tag, str) and k.tag != "description")
              for rule in tree.getroot().iterfind("constraints/rule")]
-    ctcs = [fl[1].Constraint(f"rule{i}", fl[0].AST(_formula(fl, r, set(lines), set())))
+    ctcs = [fl.fm.Constraint(f"rule{i}", fl.ast.AST(_formula(fl, r, set(lines), set())))
             for i, r in enumerate(rules, 1)]
-    return fl[1].FeatureModel(top, ctcs)
+    return fl.fm.FeatureModel(top, ctcs)
 
 
-def _satisfiable(fl: Any, model: Any, extra: Any) -> bool:
+def _satisfiable(fl: _Flamapy, model: Any, extra: Any) -> bool:
     """Whether some valid configuration of ``model`` also satisfies formula node ``extra``."""
-    model.ctcs.append(fl[1].Constraint("robomda-condition", fl[0].AST(extra)))
+    model.ctcs.append(fl.fm.Constraint("robomda-condition", fl.ast.AST(extra)))
     try:
-        return bool(fl[2].PySATSatisfiable().execute(fl[3].FmToPysat(model).transform()).get_result())
+        return bool(fl.ops.PySATSatisfiable().execute(fl.sat.FmToPysat(model).transform()).get_result())
     finally:
         model.ctcs.pop()
 
 
-def _feature_findings(fl: Any, model: Any, path: Path, lines: dict[str, int]) -> Analysis:
+def _feature_findings(fl: _Flamapy, model: Any, path: Path, lines: dict[str, int]) -> Analysis:
     """VAR041 (void), VAR042 (dead), VAR043 (false-optional), VAR044 (the number of products)."""
-    sat = fl[3].FmToPysat(model).transform()
+    sat = fl.sat.FmToPysat(model).transform()
     done = Analysis()
-    if not fl[2].PySATSatisfiable().execute(sat).get_result():
+    if not fl.ops.PySATSatisfiable().execute(sat).get_result():
         done.diagnostics.append(Diagnostic("error", "VAR041", "the feature model is void: no configuration "
                                            "satisfies it (its constraints contradict its tree)", file=str(path),
                                            line=lines[model.root.name], element_kind="feature",
                                            element_name=model.root.name))
         return done
     for code, text, operation in (
-            ("VAR042", "a dead feature: no valid configuration selects it", fl[2].PySATDeadFeatures()),
+            ("VAR042", "a dead feature: no valid configuration selects it", fl.ops.PySATDeadFeatures()),
             ("VAR043", "a false-optional feature: optional in the tree, yet every valid configuration that "
-                       "selects its parent selects it", fl[2].PySATFalseOptionalFeatures())):
+                       "selects its parent selects it", fl.ops.PySATFalseOptionalFeatures())):
         for name in sorted(operation.execute(sat).get_result(), key=lambda n: lines.get(n, 0)):
             done.diagnostics.append(Diagnostic("warning", code, text, file=str(path), line=lines.get(name),
                                                element_kind="feature", element_name=name))
-    done.products = int(fl[2].PySATConfigurationsNumber().execute(sat).get_result())
+    done.products = int(fl.ops.PySATConfigurationsNumber().execute(sat).get_result())
     done.diagnostics.append(Diagnostic("info", "VAR044", f"the feature model has {done.products} valid "
                                        "configurations (products)", file=str(path), line=lines[model.root.name],
                                        element_kind="feature", element_name=model.root.name))
     return done
 
 
-def _condition_findings(fl: Any, model: Any, path: Path, names: set[str]) -> list[Diagnostic]:
-    """VAR045 (a presence condition never holds), VAR046 (always holds), VAR047 (names an unknown feature)."""
+def _condition_findings(fl: _Flamapy, model: Any, path: Path, names: set[str]) -> list[Diagnostic]:
+    """VAR045 (a presence condition never holds), VAR046 (always holds), VAR047 (an unknown feature), VAR048
+    (no condition)."""
     found = []
     for present in _parsed("resolution", path).getroot().iterfind(f"{_R}present"):
         where = {"file": str(path), "line": present.sourceline, "element_kind": "present",
                  "element_name": present.get("element", "")}
-        unknown: set[str] = set()
+        when = present.get("when")
         formulas = [k for k in present if isinstance(k.tag, str)]
-        cond = (_formula(fl, formulas[0], names, unknown) if formulas
-                else _formula(fl, etree.fromstring(f"<var>{present.get('when', '')}</var>"), names, unknown))
+        if when is None and not formulas:
+            found.append(Diagnostic("error", "VAR048", "the presence condition is empty: give @when (a feature) "
+                                    "or a formula", **where))
+            continue
+        unknown = {when} - names if when is not None else set()
+        cond = fl.ast.Node(when) if when is not None else _formula(fl, formulas[0], names, unknown)
         if unknown:
             found.append(Diagnostic("error", "VAR047", "the presence condition names features the feature model "
                                     f"does not have: {', '.join(sorted(unknown))}", **where))
         elif not _satisfiable(fl, model, cond):
             found.append(Diagnostic("warning", "VAR045", "no valid configuration satisfies the presence "
                                     "condition: the element is in no variant", **where))
-        elif not _satisfiable(fl, model, fl[0].Node(fl[0].ASTOperation.NOT, cond)):
+        elif not _satisfiable(fl, model, fl.ast.Node(fl.ast.ASTOperation.NOT, cond)):
             found.append(Diagnostic("info", "VAR046", "every valid configuration satisfies the presence "
                                     "condition: the element is in every variant", **where))
     return found
