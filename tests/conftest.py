@@ -45,7 +45,19 @@ def _needs_toolchain(item: pytest.Item) -> bool:
     return any(item.get_closest_marker(m) is not None for m in _TOOLCHAIN_MARKERS)
 
 
+# Module fixtures that build something costly once for all of a file's tests (a catkin
+# workspace, every fixture's generated package, every diagram rendered): under
+# pytest-xdist (tests/run.sh --dist loadgroup) their tests share one worker, so the
+# fixture is built once, not once per worker.
+_SHARED_FIXTURES = ("catkin_ws", "runs", "drawn", "built", "built_slow", "workspace", "mixed", "tmp_root")
+
+
+@pytest.hookimpl(tryfirst=True)  # before xdist reads the groups
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    for item in items:
+        shared = [name for name in _SHARED_FIXTURES if name in getattr(item, "fixturenames", ())]
+        if shared:
+            item.add_marker(pytest.mark.xdist_group(f"{item.nodeid.split('::')[0]}:{shared[0]}"))
     if not _CI:
         return
     kept = [item for item in items if not _needs_toolchain(item)]

@@ -64,5 +64,6 @@ fi
 python3 -m venv .venv
 .venv/bin/python -m pip install -q --disable-pip-version-check -e '.[test]'
 # One worker per core (pytest-xdist); ROBOMDA_TEST_JOBS=0 runs in this process
-# (pdb, -x), and a later -n of the caller's wins.
-exec .venv/bin/python -m pytest -n "${ROBOMDA_TEST_JOBS:-auto}" "$@"
+# (pdb, -x), and a later -n of the caller's wins. loadgroup: the tests of a costly
+# module fixture (tests/conftest.py) stay on one worker.
+exec .venv/bin/python -m pytest -n "${ROBOMDA_TEST_JOBS:-auto}" --dist loadgroup "$@"

@@ -138,7 +138,9 @@ def test_every_operation_call_reaches_every_target(app: str, target: str, runs) 
         assert 'advertiseService("setCompliant"' in code or 'create_service<std_srvs::srv::SetBool>(\n    "~/setCompliant"' in code
         assert 'serviceClient<std_srvs::SetBool>("setCompliant")' in code or 'create_client<std_srvs::srv::SetBool>("setCompliant")' in code
         launch = "".join(text for path, text in files.items() if path.startswith("launch/"))
-        assert launch.count('<remap from="setCompliant" to="/atf/driver/jointCtrl/setCompliant"/>') == 1
+        # named from the root: ROS 1 absolutely, ROS 2 under the namespace the launch is pushed into
+        root = "/" if target == "ros1" else "$(var ros_namespace '')/"
+        assert launch.count(f'<remap from="setCompliant" to="{root}atf/driver/jointCtrl/setCompliant"/>') == 1
 
 
 def _connections(binding: etree._Element) -> list[tuple[str, str, str, str]]:
@@ -183,7 +185,8 @@ def test_every_instance_and_connection_reaches_the_ros_launch(app: str, target: 
     # both ends of every connection are remapped onto one topic (named from the root in a namespace)
     for connection in binding.findall(f"{PIM}connection"):
         name = connection.get("name")
-        assert launch.count(f'to="{name}"') + launch.count(f'to="/{name}"') >= 2
+        rooted = launch.count(f'to="/{name}"') + launch.count(f'to="$(var ros_namespace \'\')/{name}"')
+        assert launch.count(f'to="{name}"') + rooted >= 2
 
 
 def test_a_changed_library_regenerates_both_applications_and_nothing_else(tmp_path: Path) -> None:

@@ -56,6 +56,11 @@ CASES_BY_RULE: dict[str, tuple[Path, str | None, Path, list[tuple[str, str]]]] =
     "APP004": (PIM_RULES, None, PID_PIM, [(r'(port="_pid076q"[^>]*?)interface="_pid065i"', r'\1interface="_pid067i"')]),
     "APP005": (PIM_RULES, None, PID_PIM, [('size="1"', 'size="2"')]),
     "APP006": (PIM_RULES, None, PID_PIM, [(r'(<pim:data-port port="_pid076q")', r'\1 direction-source="guessed"')]),
+    # the realizing class's getDesiredPosition() returns another type than its port carries, or no type
+    "CMP020": (PIM_RULES, None, PID_PIM, [(r'(<pim:parameter id="_pid017p"[^>]*?)primitive="float64"',
+                                          r'\1primitive="int32"')]),
+    "CMP021": (PIM_RULES, None, PID_PIM, [(r'(<pim:parameter id="_pid017p"[^>]*?) type-name="Real" '
+                                          r'type-library="uml" primitive="float64"', r'\1')]),
     "APP050": (PIM_RULES, None, PID_PIM, [(r'<pim:reader instance="PIDController" port="_pid077q"[^>]*/>\s*', '')]),
     "APP010": (PIM_RULES, None, PID_PIM, [('hostname="controlPC"', 'hostname=" "')]),
     "APP011": (PIM_RULES, None, PID_PIM, [('hostname="controlPC"', 'hostname="control PC"')]),

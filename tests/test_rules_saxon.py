@@ -36,8 +36,9 @@ def test_each_rule_case_finds_the_same_on_both_engines(rule: str) -> None:
 def _diagnostics(case: str) -> tuple[int, list[str]]:
     args = (BROKEN / case / "args").read_text(encoding="utf-8").split()
     target = args[args.index("--target") + 1] if "--target" in args else None
+    replace = [args[i + 1] for i, a in enumerate(args) if a == "--replace"]
     try:
-        done = check(Path("fixtures/broken") / case / "model.xmi", target)
+        done = check(Path("fixtures/broken") / case / "model.xmi", target, replace=replace)
     except RobomdaError as exc:  # input that cannot be read: the same either way, checked all the same
         return exc.exit_code, [d.format() for d in exc.diagnostics]
     return done.exit_code, [d.format() for d in done.diagnostics]
@@ -48,7 +49,7 @@ def test_the_broken_corpus_checks_the_same_with_every_rule_on_saxon(case: str,
                                                                      monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.chdir(ROOT)
     args = (BROKEN / case / "args").read_text(encoding="utf-8").split()
-    if any(a not in ("--target", "orocos", "ros1", "ros2") for a in args):
+    if any(a not in ("--target", "orocos", "ros1", "ros2", "openrtm", "--replace") and "=" not in a for a in args):
         pytest.skip(f"options beyond --target: {args}")
     on_libxslt = _diagnostics(case)
     monkeypatch.setattr(pipeline, "SAXON_FROM", 0)
