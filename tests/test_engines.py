@@ -145,7 +145,7 @@ def test_each_stage_writes_the_same_bytes(engine: Cli, case: Path, step: str, wo
 # hosts, composites and operation calls, data types), since test_each_stage_writes_the_same_bytes
 # already compares every stage of every case on SaxonJS.
 RUNNER_ON_SAXONJS = ("distributed", "learning", "structured")
-RUNNER_RUNS = [pytest.param(engine, case, id=f"{case.name}-{engine.id}", marks=engine.marks)
+RUNNER_RUNS = [pytest.param(engine.values[0], case, id=f"{case.name}-{engine.id}", marks=engine.marks)
                for engine in ENGINES for case in CASES + ONE_TARGET
                if engine.id != "saxonjs" or case.name in RUNNER_ON_SAXONJS]
 
