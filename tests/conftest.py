@@ -45,11 +45,12 @@ def _needs_toolchain(item: pytest.Item) -> bool:
     return any(item.get_closest_marker(m) is not None for m in _TOOLCHAIN_MARKERS)
 
 
-# Module fixtures that build something costly once for all of a file's tests (a catkin
-# workspace, every fixture's generated package, every diagram rendered): under
+# Module fixtures that build something costly once for all of a file's tests (every
+# fixture's generated package, every diagram rendered; test_ros's catkin workspace is
+# shared by the workers through a lock of its own): under
 # pytest-xdist (tests/run.sh --dist loadgroup) their tests share one worker, so the
 # fixture is built once, not once per worker.
-_SHARED_FIXTURES = ("catkin_ws", "runs", "drawn", "built", "built_slow", "workspace", "mixed", "tmp_root")
+_SHARED_FIXTURES = ("runs", "drawn", "built", "built_slow", "workspace", "mixed", "tmp_root")
 
 
 @pytest.hookimpl(tryfirst=True)  # before xdist reads the groups

@@ -10,6 +10,7 @@ the layout of tests/test_golden.py; regenerate with ROBOMDA_REGEN_ROS=1.
 from __future__ import annotations
 
 import contextlib
+import fcntl
 import os
 import re
 import shutil
@@ -213,11 +214,25 @@ def test_ros2_launch_xml_against_launch_ros_rules(case: Path) -> None:
 
 
 # ------------------------------------------------------ ROS 1: real tools
-@pytest.fixture(scope="module")
+@pytest.fixture(scope="session")
 def catkin_ws(tmp_path_factory) -> Path:
-    """Every case's ROS 1 package in one catkin workspace, built once."""
+    """Every case's ROS 1 package in one catkin workspace, built once per run: under pytest-xdist
+    the first worker builds it in the folder the run's workers share, the others wait for it."""
     _need("catkin_make")
-    ws = tmp_path_factory.mktemp("catkin_ws")
+    root = tmp_path_factory.getbasetemp()
+    if os.environ.get("PYTEST_XDIST_WORKER"):
+        root = root.parent
+    ws = root / "catkin_ws_all"
+    with open(root / "catkin_ws_all.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if not (ws / ".built").is_file():
+            shutil.rmtree(ws, ignore_errors=True)
+            _build_catkin_ws(ws, tmp_path_factory)
+            (ws / ".built").write_text("built\n")
+    return ws
+
+
+def _build_catkin_ws(ws: Path, tmp_path_factory) -> None:
     for case in CASES:
         generate(case / "model.xmi", ws / "src" / case.name, "ros1")
     # the distributed fixture with every process on ROS 1: two machines, a set, a thread
@@ -229,7 +244,6 @@ def catkin_ws(tmp_path_factory) -> Path:
                           env=_ros_env(PWD=str(ws)),
                           capture_output=True, text=True, timeout=1200)
     assert proc.returncode == 0 and (ws / "devel").is_dir(), proc.stdout[-4000:] + proc.stderr[-4000:]
-    return ws
 
 
 @pytest.mark.parametrize("case", CASES, ids=[c.name for c in CASES])
