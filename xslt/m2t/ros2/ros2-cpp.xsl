@@ -155,7 +155,10 @@
         '  // parameters (R4), declared with their type and the model default',
         for $p in $node/r:parameter return
         let $read := concat('this->declare_parameter&lt;', $p/@param2, '&gt;(', fp:cpp-string($p/@name), ', ',
-                            (if ($p/@param2 eq 'std::string') then concat('std::string(', $p/@cpp-default, ')') else $p/@cpp-default), ')')
+                            (if ($p/@param2 eq 'std::string') then concat('std::string(', $p/@cpp-default, ')')
+                             (: a braced list names its type: an empty brace alone also converts to a ParameterDescriptor :)
+                             else if (starts-with($p/@cpp-default, '{')) then concat($p/@param2, $p/@cpp-default)
+                             else $p/@cpp-default), ')')
         return if ($p/@kind = ('enum', 'sequence'))
           then ('  {', '    const ' || $p/@param2 || ' value = ' || $read || ';',
                 fp:indent(4, fp:parameter-assign($p, $p/@param2, 'RCLCPP_ERROR(this->get_logger(), ')), '  }')
