@@ -29,16 +29,10 @@ SRC=$RTM/src
 BLD=$RTM/build
 JOBS=${JOBS:-2}
 NICE=${NICE:-19}
-CHECK=0 APT=1 SOURCES_ONLY=0
-for arg in "$@"; do
-  case $arg in
-    --check) CHECK=1 ;;
-    --no-apt) APT=0 ;;
-    --sources-only) SOURCES_ONLY=1 ;;
-    -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
-    *) echo "build.sh: unknown option $arg (see --help)" >&2; exit 2 ;;
-  esac
-done
+# say, missing, parse_options, apt_step, fetch_sources, _run (toolchains/common.sh)
+# shellcheck disable=SC1091
+source "$HERE/../common.sh"
+parse_options "$@"
 
 # Debian packages: compilers, CMake, omniORB (ORB, IDL compiler, naming service and its client)
 APT_PACKAGES=(build-essential cmake git ca-certificates pkg-config uuid-dev
@@ -46,40 +40,13 @@ APT_PACKAGES=(build-essential cmake git ca-certificates pkg-config uuid-dev
 PROGRAMS=(bin/rtcd2 bin/rtm2-config)
 LIBRARIES=(lib/libRTC2.so)  # coil is linked into libRTC2
 
-# say, missing, apt_step (toolchains/common.sh)
-source "$HERE/../common.sh"
-
 apt_step
 
 # --- sources ----------------------------------------------------------------------------------------
-while IFS=$'\t' read -r name url ref commit; do
-  case $name in ''|'#'*) continue ;; esac
-  dest=$SRC/$name
-  if [ -d "$dest/.git" ]; then
-    got=$(git -C "$dest" rev-parse HEAD)
-    if [ "$got" = "$commit" ]; then say "source $name: at the verified $commit"
-    elif [ $CHECK = 1 ]; then say "source $name: at $got, not the verified $commit"
-    else git -C "$dest" -c advice.detachedHead=false checkout -q "$commit"; say "source $name: checked out $commit"; fi
-    continue
-  fi
-  if [ $CHECK = 1 ]; then missing "source $name ($url $ref) in $SRC"; continue; fi
-  mkdir -p "$SRC"
-  from=$url
-  if [ -n "${MIRROR:-}" ] && [ -d "$MIRROR/OpenRTM+$name/repo" ]; then from=$MIRROR/OpenRTM+$name/repo; fi
-  say "source $name: git clone --branch $ref $from"
-  git clone -q --branch "$ref" "$from" "$dest"
-  git -C "$dest" -c advice.detachedHead=false checkout -q "$commit"
-done < "$HERE/sources.tsv"
-if [ $SOURCES_ONLY = 1 ] && [ $CHECK = 0 ]; then say "sources fetched into $SRC"; exit 0; fi
+fetch_sources "$HERE/sources.tsv" OpenRTM
 
 # --- check --------------------------------------------------------------------------------------------
-_run() {  # _run LABEL EXPECTED CMD...: CMD (60 s at most, stdin closed) must exit 0 and print EXPECTED
-  local label=$1 expected=$2 out rc=0
-  shift 2
-  out=$(timeout -k 5 60 "$@" </dev/null 2>&1) || rc=$?
-  if [ $rc = 0 ] && grep -q -- "$expected" <<<"$out"; then say "run: $label: OK"
-  else missing "run: $label failed (exit $rc): $(tail -n 5 <<<"$out" | tr '\n' ' ')"; fi
-}
+# _run LABEL EXPECTED CMD... (toolchains/common.sh)
 
 check_runs() {
   # shellcheck disable=SC1091

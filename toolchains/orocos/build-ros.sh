@@ -32,16 +32,10 @@ PREFIX=$WS/install
 SRC=$WS/src
 JOBS=${JOBS:-2}
 NICE=${NICE:-19}
-CHECK=0 APT=1 SOURCES_ONLY=0
-for arg in "$@"; do
-  case $arg in
-    --check) CHECK=1 ;;
-    --no-apt) APT=0 ;;
-    --sources-only) SOURCES_ONLY=1 ;;
-    -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
-    *) echo "build-ros.sh: unknown option $arg (see --help)" >&2; exit 2 ;;
-  esac
-done
+# say, missing, parse_options, apt_step, fetch_sources, _run (toolchains/common.sh)
+# shellcheck disable=SC1091
+source "$HERE/../common.sh"
+parse_options "$@"
 
 # Debian packages: catkin and the ROS 1 libraries rtt_ros_integration builds on (roscpp, rostime,
 # rospack, roslib), the message generators and std_msgs (the typekit), libxml2 (rtt_ros), and the tools
@@ -59,8 +53,6 @@ PLUGINS=(rtt_ros/plugins/librtt_ros_service-gnulinux.so rtt_rosnode/plugins/libr
          rtt_std_msgs/types/librtt-std_msgs-ros-transport-gnulinux.so
          rtt_std_msgs/plugins/librtt-ros-primitives-transport-gnulinux.so)
 
-# say, missing, apt_step (toolchains/common.sh)
-source "$HERE/../common.sh"
 
 # --- Debian packages ------------------------------------------------------------------------------
 apt_step
@@ -74,25 +66,7 @@ done
 if [ $MISSING = 1 ] && [ $CHECK = 0 ]; then say "build the Orocos toolchain first"; exit 1; fi
 
 # --- source -----------------------------------------------------------------------------------------
-while IFS=$'\t' read -r name url ref commit; do
-  case $name in ''|'#'*) continue ;; esac
-  dest=$SRC/$name
-  if [ -d "$dest/.git" ]; then
-    got=$(git -C "$dest" rev-parse HEAD)
-    if [ "$got" = "$commit" ]; then say "source $name: at the verified $commit"
-    elif [ $CHECK = 1 ]; then say "source $name: at $got, not the verified $commit"
-    else git -C "$dest" -c advice.detachedHead=false checkout -q "$commit"; say "source $name: checked out $commit"; fi
-    continue
-  fi
-  if [ $CHECK = 1 ]; then missing "source $name ($url $ref) in $SRC"; continue; fi
-  mkdir -p "$SRC"
-  from=$url
-  if [ -n "${MIRROR:-}" ] && [ -d "$MIRROR/orocos+$name/repo" ]; then from=$MIRROR/orocos+$name/repo; fi
-  say "source $name: git clone --branch $ref $from"
-  git clone -q --branch "$ref" "$from" "$dest"
-  git -C "$dest" -c advice.detachedHead=false checkout -q "$commit"
-done < "$HERE/sources-ros.tsv"
-if [ $SOURCES_ONLY = 1 ] && [ $CHECK = 0 ]; then say "source fetched into $SRC"; exit 0; fi
+fetch_sources "$HERE/sources-ros.tsv" orocos
 
 # --- check: files, then one run both ways ------------------------------------------------------------
 check_runs() {

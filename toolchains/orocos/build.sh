@@ -27,16 +27,10 @@ SRC=$ORO/src
 BLD=$ORO/build
 JOBS=${JOBS:-2}
 NICE=${NICE:-19}
-CHECK=0 APT=1 SOURCES_ONLY=0
-for arg in "$@"; do
-  case $arg in
-    --check) CHECK=1 ;;
-    --no-apt) APT=0 ;;
-    --sources-only) SOURCES_ONLY=1 ;;
-    -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
-    *) echo "build.sh: unknown option $arg (see --help)" >&2; exit 2 ;;
-  esac
-done
+# say, missing, parse_options, apt_step, fetch_sources, _run (toolchains/common.sh)
+# shellcheck disable=SC1091
+source "$HERE/../common.sh"
+parse_options "$@"
 
 # Debian packages: compilers, Boost, Lua 5.1 (rttlua), omniORB (CORBA transport, omniNames, nameclt)
 APT_PACKAGES=(build-essential cmake git ca-certificates pkg-config libboost-all-dev libxml-xpath-perl
@@ -47,8 +41,6 @@ PROGRAMS=(bin/deployer bin/deployer-corba bin/rttlua bin/rttlua-corba)
 LIBRARIES=(lib/liborocos-rtt-gnulinux.so lib/liborocos-rtt-corba-gnulinux.so lib/liborocos-rtt-mqueue-gnulinux.so
            lib/liborocos-ocl-deployment-corba-gnulinux.so)
 
-# say, missing, apt_step (toolchains/common.sh)
-source "$HERE/../common.sh"
 
 # --- Debian packages ------------------------------------------------------------------------------
 apt_step
@@ -56,25 +48,7 @@ apt_step
 # --- sources ----------------------------------------------------------------------------------------
 # From MIRROR/orocos-toolchain+<name>/repo when that exists (fetched bare mirrors), else from the public
 # URL; then the verified commit is checked out (an existing clone is only compared with it).
-while IFS=$'\t' read -r name url ref commit; do
-  case $name in ''|'#'*) continue ;; esac
-  dest=$SRC/$name
-  if [ -d "$dest/.git" ]; then
-    got=$(git -C "$dest" rev-parse HEAD)
-    if [ "$got" = "$commit" ]; then say "source $name: at the verified $commit"
-    elif [ $CHECK = 1 ]; then say "source $name: at $got, not the verified $commit"
-    else git -C "$dest" -c advice.detachedHead=false checkout -q "$commit"; say "source $name: checked out $commit"; fi
-    continue
-  fi
-  if [ $CHECK = 1 ]; then missing "source $name ($url $ref) in $SRC"; continue; fi
-  mkdir -p "$SRC"
-  from=$url
-  if [ -n "${MIRROR:-}" ] && [ -d "$MIRROR/orocos-toolchain+$name/repo" ]; then from=$MIRROR/orocos-toolchain+$name/repo; fi
-  say "source $name: git clone --branch $ref $from"
-  git clone -q --branch "$ref" "$from" "$dest"
-  git -C "$dest" -c advice.detachedHead=false checkout -q "$commit"
-done < "$HERE/sources.tsv"
-if [ $SOURCES_ONLY = 1 ] && [ $CHECK = 0 ]; then say "sources fetched into $SRC"; exit 0; fi
+fetch_sources "$HERE/sources.tsv" orocos-toolchain
 
 # --- check: files, then one run of each tool ---------------------------------------------------------
 # _run LABEL EXPECTED CMD... (toolchains/common.sh)
