@@ -19,6 +19,7 @@ from lxml import etree
 
 from robomda.api import generate, import_model, targets
 from robomda.cli import main
+from test_golden import _check_all  # every golden of a run compared, all differences reported
 
 ROOT = Path(__file__).resolve().parent.parent
 CAMP = ROOT / "fixtures" / "variability" / "researchcamp"
@@ -44,17 +45,6 @@ def _cli(capsys: pytest.CaptureFixture[str], argv: list[str]) -> tuple[int, str,
     code = main(argv)
     captured = capsys.readouterr()
     return code, captured.out, captured.err
-
-
-def _check_all(file_regression, items: list[tuple[str, Path]]) -> None:
-    failures = []
-    for text, golden in items:
-        try:
-            file_regression.check(text, fullpath=golden, binary=False)
-        except (AssertionError, pytest.fail.Exception) as exc:
-            failures.append(f"{golden.relative_to(ROOT)}: {str(exc).strip().splitlines()[0]}")
-    if failures:
-        pytest.fail("\n".join(failures))
 
 
 @pytest.mark.parametrize("line", sorted(LINES))
