@@ -30,6 +30,7 @@
     exclude-result-prefixes="#all">
 
   <xsl:include href="../common/text.xsl"/>
+  <xsl:include href="../common/user-class.xsl"/>
   <xsl:include href="openrtm-cpp.xsl"/>
   <xsl:include href="openrtm-profile.xsl"/>
   <xsl:include href="openrtm-deploy.xsl"/>
@@ -60,8 +61,12 @@
         <xsl:sequence select="$fp:file-margin, fp:file(concat('include/', $pkg, '/', @generated-class, '.h'), 'generated', $fp:cpp-xsl, fp:rtm-header(.))"/>
         <xsl:sequence select="$fp:file-margin, fp:file(concat('src/', @generated-class, '.cpp'), 'generated', $fp:cpp-xsl, fp:rtm-source(.))"/>
         <xsl:if test="@kind eq 'base'">
-          <xsl:sequence select="$fp:file-margin, fp:file(concat('include/', $pkg, '/', @class, '.h'), 'user', $fp:cpp-xsl, fp:rtm-user-header(.))"/>
-          <xsl:sequence select="$fp:file-margin, fp:file(concat('src/', @class, '.cpp'), 'user', $fp:cpp-xsl, fp:rtm-user-source(.))"/>
+          <!-- user files as on every target: what they implement and what the base requires of
+               them, so that the writer's drift checks (OUT003, OUT004) see them -->
+          <xsl:variable name="requires" as="xs:string+"
+              select="'RTC::ReturnCode_t onInitialize()', r:hook[@name ne 'configure'] ! fp:rtm-action-signature(@name)"/>
+          <xsl:sequence select="$fp:file-margin, fp:user-class-file(concat('include/', $pkg, '/', @class, '.h'), $fp:cpp-xsl, ., $requires, fp:rtm-user-header(.))"/>
+          <xsl:sequence select="$fp:file-margin, fp:user-class-file(concat('src/', @class, '.cpp'), $fp:cpp-xsl, ., $requires, fp:rtm-user-source(.))"/>
         </xsl:if>
         <xsl:sequence select="$fp:file-margin, fp:file(concat('rtc/', @class, '/RTC.xml'), 'generated', $fp:profile-xsl, fp:rtc-profile(., $fp:rtm-version))"/>
       </xsl:for-each>
