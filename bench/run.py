@@ -150,7 +150,8 @@ def _batch(count: int, java_models: int, workdir: Path) -> tuple[list[str], dict
         lines.append(f"  robomda -j{jobs}: {report.seconds:.1f} s, {rate[jobs] * 1000:.0f} ms per model")
     java = shutil.which("java")
     if java and SAXON_JAR.is_file():
-        steps = pipeline.load(pipeline_path("orocos")).steps
+        # the steps a model without a product-line configuration runs (no configure step)
+        steps = pipeline.for_context(pipeline.load(pipeline_path("orocos")), {}).steps
         started = time.perf_counter()
         for i in range(java_models):
             model = next((src / f"m{i:04d}").iterdir())
@@ -206,7 +207,9 @@ def _small(workdir: Path, runs: int) -> dict[str, float]:
     from robomda import pipeline, resources
 
     compileall.compile_dir(str(Path(pipeline.__file__).parent), quiet=1)
-    stylesheets = [str(step.stylesheet) for step in pipeline.load(resources.pipeline_path("orocos")).steps]
+    # what a fresh command compiles: the chain without the configure step a model without features skips
+    chain = pipeline.for_context(pipeline.load(resources.pipeline_path("orocos")), {})
+    stylesheets = [str(step.stylesheet) for step in chain.steps]
     out = workdir / "small-out"
     robomda = [sys.executable, "-m", "robomda"]
     return {
