@@ -233,9 +233,28 @@ def run_batch(folder: Path, out: Path, target: str | None = None, *, package_nam
     folder, out = folder.resolve(), out.resolve()
     models = find_models(folder, exclude=out)
     tools = toolchain_hash(target, package_name, type_map, package)
-    map_arg = str(type_map.resolve()) if type_map is not None else None
     search = tuple(Path(d).resolve() for d in model_path)
-    path_arg = tuple(str(d) for d in search)
+    results, todo = _plan(models, folder, out, search, tools, force or bool(check))
+    total = len(models)
+    for index, skipped in enumerate(results, start=1):
+        if progress:
+            progress(index, total, skipped)
+    # what each model's generation takes besides its model, its output folder and its prefix
+    args = (target, package_name, str(type_map.resolve()) if type_map is not None else None, package,
+            tuple(str(d) for d in search), check)
+    try:
+        _generate_all(todo, folder, args, jobs, results, lambda done, result: progress and progress(done, total, result))
+    finally:  # the models done are recorded, also when a signal stops the batch (check mode writes nothing)
+        if not check:
+            _write_state(out, target, tools, results)
+    results.sort(key=lambda r: r.model)
+    return BatchReport(results, time.perf_counter() - started)
+
+
+def _plan(models: list[Path], folder: Path, out: Path, search: tuple[Path, ...], tools: str,
+          regenerate: bool) -> tuple[list[ModelResult], list[tuple[Path, Path, str]]]:
+    """The models not to generate (libraries of other models, unchanged since the last run unless
+    ``regenerate``), as results, and the (model, output folder, input digest) of the others."""
     links = {model: linked_files(model, search) for model in models}
     # by real path: a model may reach a library of the batch through a symlinked folder
     used_by = {lib.resolve(): model for model in models for lib in links[model]}
@@ -253,46 +272,41 @@ def run_batch(folder: Path, out: Path, target: str | None = None, *, package_nam
         digest = _input_hash(model, links[model])
         dest = _output_folder(model, folder, out)
         seen = state.get(rel, {})
-        if (not force and not check and seen.get("input") == digest and seen.get("toolchain") == tools
+        if (not regenerate and seen.get("input") == digest and seen.get("toolchain") == tools
                 and _outputs_intact(dest)):
             results.append(ModelResult(model=rel, status="skipped", input_hash=digest))
         else:
             todo.append((model, dest, digest))
+    return results, todo
 
-    done_count = len(results)
-    total = len(models)
-    for skipped in results:
-        if progress:
-            progress(done_count, total, skipped)
+
+def _generate_all(todo: list[tuple[Path, Path, str]], folder: Path, args: tuple, jobs: int | None,
+                  results: list[ModelResult], progress: Callable[[int, ModelResult], object]) -> None:
+    """Generate the models of ``todo`` (``args``: the rest of ``_generate_one``'s arguments), in this
+    process or in a pool of ``jobs`` worker processes, appending each result to ``results`` as it ends."""
     workers = max(1, min(jobs or os.cpu_count() or 1, len(todo) or 1))
-    try:
-        if todo and workers == 1:
-            for model, dest, digest in todo:
-                result = _generate_one(str(model), str(dest), target, package_name, map_arg, package, path_arg, check,
-                                       _prefix(model, folder))
-                done_count += 1
-                results.append(_finish(result, model, folder, digest, progress, done_count, total))
-        elif todo:
-            # spawn, not fork: each worker starts its own Saxon engine cleanly
-            pool = ProcessPoolExecutor(max_workers=workers, mp_context=get_context("spawn"),
-                                       initializer=_worker_init)
-            try:
-                futures = {pool.submit(_generate_one, str(m), str(d), target, package_name, map_arg, package,
-                                       path_arg, check, _prefix(m, folder)): (m, dg)
-                           for m, d, dg in todo}
-                for future in as_completed(futures):
-                    model, digest = futures[future]
-                    done_count += 1
-                    results.append(_finish(future.result(), model, folder, digest, progress, done_count, total))
-            except BaseException:
-                _stop(pool)
-                raise
-            pool.shutdown()
-    finally:  # the models done are recorded, also when a signal stops the batch (check mode writes nothing)
-        if not check:
-            _write_state(out, target, tools, results)
-    results.sort(key=lambda r: r.model)
-    return BatchReport(results, time.perf_counter() - started)
+
+    def finish(result: ModelResult, model: Path, digest: str) -> None:
+        result.model = model.relative_to(folder).as_posix()
+        result.input_hash = digest
+        results.append(result)
+        progress(len(results), result)
+
+    if todo and workers == 1:
+        for model, dest, digest in todo:
+            finish(_generate_one(str(model), str(dest), *args, _prefix(model, folder)), model, digest)
+    elif todo:
+        # spawn, not fork: each worker starts its own Saxon engine cleanly
+        pool = ProcessPoolExecutor(max_workers=workers, mp_context=get_context("spawn"), initializer=_worker_init)
+        try:
+            futures = {pool.submit(_generate_one, str(m), str(d), *args, _prefix(m, folder)): (m, dg)
+                       for m, d, dg in todo}
+            for future in as_completed(futures):
+                finish(future.result(), *futures[future])
+        except BaseException:
+            _stop(pool)
+            raise
+        pool.shutdown()
 
 
 def _write_state(out: Path, target: str | None, tools: str, results: list[ModelResult]) -> None:
@@ -318,15 +332,6 @@ def _stop(pool: ProcessPoolExecutor) -> None:
             process.terminate()
     for process in processes:
         process.join(timeout=5)
-
-
-def _finish(result: ModelResult, model: Path, folder: Path, digest: str,
-            progress: Callable[[int, int, ModelResult], None] | None, done: int, total: int) -> ModelResult:
-    result.model = model.relative_to(folder).as_posix()
-    result.input_hash = digest
-    if progress:
-        progress(done, total, result)
-    return result
 
 
 class ProgressBar:
