@@ -263,6 +263,14 @@ def _stages(shape: str, sizes: list[int], target: str = "orocos", repeat: int = 
     return json.loads(proc.stdout.strip().splitlines()[-1])[0]
 
 
+def _identity_of(measured: dict[str, object], stage: str) -> float | None:
+    """The identity transform's growth over the first doubling, on the input of ``stage``."""
+    for small, large, _, identity in ratios(measured):
+        if large == 2 * small:
+            return identity[measured["stages"].index(stage)]
+    return None
+
+
 def _other_targets(args: argparse.Namespace) -> dict[tuple[str, str], dict[str, object]]:
     """Each stylesheet of the other targets' chains alone (--stage-targets) on the composite and deployment
     shapes among --shapes, at --stage-sizes."""
@@ -500,6 +508,15 @@ def main() -> int:
     print("\nper shape (Markdown, for the README's Performance section; seconds: the whole chain, wall time):")
     for line in _shape_table(rows, stages):
         print(line)
+    if others:
+        print("\nthe other targets' chains, stage by stage (Markdown; CPU, bench/stages.py):")
+        print("| target | shape | worst stage t(2n) / t(n) | its identity's |")
+        print("|---|---|---|---:|")
+        for (target, shape), measured in others.items():
+            worst = worst_doubling(measured)
+            identity = _identity_of(measured, worst[1]) if worst else None
+            print(f"| {target} | {shape} | " + (f"{worst[0]:.2f} ({worst[1]}, n = {measured['sizes'][0]:,}) | "
+                                               f"{identity:.2f} |" if worst and identity else "- | - |"))
     return 0
 
 
