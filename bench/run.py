@@ -15,8 +15,10 @@ XSD validation and in the Schematron rules per step, peak resident memory
 same XMI as a floor, and the floor of the whole chain (the identity over
 each stage's input, validation, rules, writing). Then, per shape, each
 stylesheet alone at 2,000 and 4,000 components (--stage-sizes; bench/stages.py
-in a fresh process, CPU seconds): each stage's growth when the model
-doubles (issue 35: at most 2.2). Every figure comes from the
+in a fresh process, CPU seconds, the least of --stage-repeat runs): each
+stage's growth when the model doubles (issue 35: at most 2.2); likewise
+the ROS 1, ROS 2 and OpenRTM chains on the composite and deployment
+shapes (--stage-targets). Every figure comes from the
 same run; compare ratios, not absolute seconds, across machines. Models and
 outputs go to a RAM file system (/dev/shm) where there is one: on a shared
 disk, creating the same 3,000 files took from 0.14 to 2.3 s within minutes
@@ -251,14 +253,32 @@ def _in_child(flag: str, value: int, workdir: Path, shape: str = "ring") -> dict
     return json.loads(proc.stdout.strip().splitlines()[-1])
 
 
-def _stages(shape: str, sizes: list[int]) -> dict[str, object]:
-    """Each stylesheet of the chain alone on ``shape`` at ``sizes`` (bench/stages.py, CPU seconds, in a fresh
-    process): issue 35's per-stage growth, measured in this run."""
-    proc = subprocess.run([sys.executable, str(HERE / "stages.py"), *map(str, sizes), "--shapes", shape, "--json"],
-                          capture_output=True, text=True)
+def _stages(shape: str, sizes: list[int], target: str = "orocos", repeat: int = 1) -> dict[str, object]:
+    """Each stylesheet of ``target``'s chain alone on ``shape`` at ``sizes`` (bench/stages.py, CPU seconds, the
+    least of ``repeat`` runs, in a fresh process): issue 35's per-stage growth, measured in this run."""
+    proc = subprocess.run([sys.executable, str(HERE / "stages.py"), *map(str, sizes), "--shapes", shape, "--json",
+                           "--target", target, "--repeat", str(repeat)], capture_output=True, text=True)
     if proc.returncode != 0:
         raise RuntimeError(f"bench/stages.py on {shape} failed:\n{proc.stderr}")
     return json.loads(proc.stdout.strip().splitlines()[-1])[0]
+
+
+def _identity_of(measured: dict[str, object], stage: str) -> float | None:
+    """The identity transform's growth over the first doubling, on the input of ``stage``."""
+    for small, large, _, identity in ratios(measured):
+        if large == 2 * small:
+            return identity[measured["stages"].index(stage)]
+    return None
+
+
+def _other_targets(args: argparse.Namespace) -> dict[tuple[str, str], dict[str, object]]:
+    """Each stylesheet of the other targets' chains alone (--stage-targets) on the composite and deployment
+    shapes among --shapes, at --stage-sizes."""
+    if len(args.stage_sizes) < 2:
+        return {}
+    shapes = [shape for shape in args.shapes if shape in ("composite", "deployment")]
+    return {(target, shape): _stages(shape, args.stage_sizes, target, args.stage_repeat)
+            for target in args.stage_targets for shape in shapes}
 
 
 def _verdict(name: str, measured: str, limit: str, met: bool | None) -> str:
@@ -410,6 +430,13 @@ def main() -> int:
     parser.add_argument("--stage-sizes", type=int, nargs="*", default=[2000, 4000],
                         help="sizes at which bench/stages.py times each stylesheet alone, per shape (issue 35: "
                              "t(4,000) / t(2,000) <= 2.2 on every stage); none: skip")
+    parser.add_argument("--stage-repeat", type=int, default=2,
+                        help="runs of each stage at each stage size: the least CPU time is kept (bench/stages.py "
+                             "--repeat)")
+    parser.add_argument("--stage-targets", nargs="*", choices=("ros1", "ros2", "openrtm"),
+                        default=["ros1", "ros2", "openrtm"],
+                        help="other targets whose chains are timed stage by stage too, on the composite and "
+                             "deployment shapes (those of --shapes), at --stage-sizes; none: the Orocos chain only")
     parser.add_argument("--quick", action="store_true", help="CI smoke run: one composite of 500 and 1,000 parts "
                         "(a quadratic path shows in its growth), batch of 20, one run each")
     parser.add_argument("--one", type=int, help=argparse.SUPPRESS)
@@ -426,7 +453,7 @@ def main() -> int:
 
     if args.quick:
         args.shapes, args.sizes, args.batch, args.java_models, args.repeat = ["composite"], [500, 1000], 20, 2, 1
-        args.stage_sizes = [500, 1000]
+        args.stage_sizes, args.stage_targets, args.stage_repeat = [500, 1000], [], 1
     rows: dict[str, list[dict[str, object]]] = {}
     stages: dict[str, dict[str, object]] = {}
     batch_lines: list[str] = []
@@ -446,15 +473,23 @@ def main() -> int:
             try:
                 rows[shape] = [_measure(shape, size, args.repeat, Path(tmp)) for size in args.sizes]
                 if len(args.stage_sizes) > 1:
-                    stages[shape] = _stages(shape, args.stage_sizes)
+                    stages[shape] = _stages(shape, args.stage_sizes, repeat=args.stage_repeat)
             except RuntimeError as exc:
                 print(f"shape {shape}: {exc}", file=sys.stderr)
                 return 1
+        try:
+            others = _other_targets(args)
+        except RuntimeError as exc:
+            print(str(exc), file=sys.stderr)
+            return 1
 
     for shape, shape_rows in rows.items():
         _report(shape, shape_rows)
         if shape in stages:
             _report_stages(stages[shape])
+    for (target, shape), measured in others.items():
+        print(f"\n== target {target}, shape {shape}")
+        _report_stages(measured)
     print("\n(CPU ratio: the driver's CPU seconds over the identity's, steadier than wall time on a busy machine;")
     print(" it leaves out the checker process's, which validates large stages on the other core meanwhile.")
     print(" XSD s of a large stage: the time the run waited for the checker. peak MiB: the driver's peak plus")
@@ -465,9 +500,23 @@ def main() -> int:
     print()
     for line in _targets(small, watch, rows, batch, stages):
         print(line)
+    for (target, shape), measured in others.items():
+        worst = worst_doubling(measured)
+        print(_verdict(f"{target}, {shape}: every stage t(2n) / t(n)", f"{worst[0]:.2f} ({worst[1]}, n = "
+                       f"{measured['sizes'][0]})" if worst else "-", "<= 2.2 (n = 2,000)",
+                       worst[0] <= 2.2 if worst and measured["sizes"][0] == 2000 else None))
     print("\nper shape (Markdown, for the README's Performance section; seconds: the whole chain, wall time):")
     for line in _shape_table(rows, stages):
         print(line)
+    if others:
+        print("\nthe other targets' chains, stage by stage (Markdown; CPU, bench/stages.py):")
+        print("| target | shape | worst stage t(2n) / t(n) | its identity's |")
+        print("|---|---|---|---:|")
+        for (target, shape), measured in others.items():
+            worst = worst_doubling(measured)
+            identity = _identity_of(measured, worst[1]) if worst else None
+            print(f"| {target} | {shape} | " + (f"{worst[0]:.2f} ({worst[1]}, n = {measured['sizes'][0]:,}) | "
+                                               f"{identity:.2f} |" if worst and identity else "- | - |"))
     return 0
 
 

@@ -107,6 +107,9 @@ def _component(i: int, n: int, shape: str) -> str:
     integer, real = _PRIM.format("Integer"), _PRIM.format("Real")
     gain = f"gain{i % _GROUP}" if shape == "nested" else "gain"
     calls = _calls_operations(i, n) if shape == "calls" else ""
+    # the accessors carry the ports' data (CMP020): the structured type of each interface on shape datatypes
+    datum = (lambda k: f'<type xmi:type="uml:DataType" xmi:idref="_T{k}"/>') if shape == "datatypes" else (
+        lambda k: f'<type xmi:type="uml:PrimitiveType" href="{integer}"/>')
     ports = ""
     if shape == "calls":
         ports = f"""        <ownedAttribute xmi:type="uml:Port" xmi:id="_C{i}_srv" name="srv" type="_S{i}" aggregation="composite"/>
@@ -125,10 +128,10 @@ def _component(i: int, n: int, shape: str) -> str:
         </ownedOperation>
         <ownedOperation xmi:id="_D{i}_u" name="update" visibility="public"/>
         <ownedOperation xmi:id="_D{i}_get" name="getValue{i}" visibility="public">
-          <ownedParameter xmi:id="_D{i}_getr" direction="return"><type xmi:type="uml:PrimitiveType" href="{integer}"/></ownedParameter>
+          <ownedParameter xmi:id="_D{i}_getr" direction="return">{datum(i)}</ownedParameter>
         </ownedOperation>
         <ownedOperation xmi:id="_D{i}_set" name="setValue{prev}" visibility="public">
-          <ownedParameter xmi:id="_D{i}_setp" name="v"><type xmi:type="uml:PrimitiveType" href="{integer}"/></ownedParameter>
+          <ownedParameter xmi:id="_D{i}_setp" name="v">{datum(prev)}</ownedParameter>
         </ownedOperation>
         <ownedOperation xmi:id="_D{i}_k" name="setGain" visibility="protected">
           <ownedParameter xmi:id="_D{i}_kp" name="gain"><type xmi:type="uml:PrimitiveType" href="{real}"/></ownedParameter>

@@ -373,3 +373,35 @@ def test_a_deployment_owned_by_one_node_with_another_as_client_deploys_once_on_i
     pim = etree.fromstring(done.stages["import"].encode())
     deployments = pim.findall(".//{urn:robomda:pim:1}deployment[@id='_7r_06xjuD8PlcTvtlRdcOv']")
     assert len(deployments) == 1 and deployments[0].getparent().get("name") == "rttVision"
+
+
+def _class_model(features: str) -> str:
+    """A Papyrus model of one class holding ``features`` (ownedAttribute / ownedOperation elements)."""
+    return f"""<?xml version="1.0" encoding="UTF-8"?>
+<xmi:XMI xmi:version="20131001" xmlns:xmi="http://www.omg.org/spec/XMI/20131001" xmlns:uml="http://www.eclipse.org/uml2/5.0.0/UML">
+  <uml:Model xmi:id="_m" name="M">
+    <packagedElement xmi:type="uml:Class" xmi:id="_C" name="C">
+{features}
+    </packagedElement>
+  </uml:Model>
+</xmi:XMI>
+"""
+
+
+def test_elements_without_ids_are_numbered_among_their_siblings_of_that_name(tmp_path: Path) -> None:
+    """An element without xmi:id gets "robomda.<anchor>.<name>-<n>", n its place among its parent's
+    children of its name, those with ids included (a look-up per element, not a count of the siblings:
+    issue 35); a name alone under its parent has no number; many siblings keep their places."""
+    many = 300
+    attributes = "\n".join(f'      <ownedAttribute name="a{i}"/>' if i != 2 else '      <ownedAttribute xmi:id="_A2" name="a2"/>'
+                           for i in range(1, many + 1))
+    model = tmp_path / "model.uml"
+    model.write_text(_class_model(attributes + '\n      <ownedOperation name="run"/>'))
+    doc = validated(run_import(model))
+    ids = {a.get("name"): a.get("id") for a in doc.iterfind(".//p:attribute", NS)}
+    assert ids["a1"] == "robomda._C.ownedAttribute-1"
+    assert ids["a2"] == "_A2"
+    assert ids["a3"] == "robomda._C.ownedAttribute-3"
+    assert ids[f"a{many}"] == f"robomda._C.ownedAttribute-{many}"
+    assert len(set(ids.values())) == many
+    assert one(doc, ".//p:operation").get("id") == "robomda._C.ownedOperation"

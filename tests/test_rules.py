@@ -291,3 +291,26 @@ def test_every_rule_context_is_an_element(rules: Path) -> None:
         steps = _outside_predicates(context)
         for other in ("@", "attribute::", "node()", "text()", "comment()", "processing-instruction("):
             assert other not in steps, context
+
+
+def test_compiled_rules_are_kept_in_the_cache_folder_and_read_back(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The skeleton's XSLT of a rule file lands in $XDG_CACHE_HOME/robomda/schematron; a fresh process
+    (the per-process cache emptied) reads that file instead of compiling; an edited rule file gets a
+    file of its own."""
+    from robomda import rules
+
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
+    source = tmp_path / "r.sch"
+    source.write_bytes(PIM_RULES.read_bytes())
+    rules._compiled.cache_clear()
+    compiled = rules._compiled(source, None)
+    [kept] = (tmp_path / "cache" / "robomda" / "schematron").iterdir()
+    assert kept.read_text(encoding="utf-8") == compiled.validator_xslt and "svrl:schematron-output" in kept.read_text()
+    kept.write_text(compiled.validator_xslt.replace("schematron-output", "schematron-output-read-back"), encoding="utf-8")
+    rules._compiled.cache_clear()
+    assert "schematron-output-read-back" in rules._compiled(source, None).validator_xslt
+    source.write_text(source.read_text().replace("</sch:schema>", "<!-- edited --></sch:schema>"))
+    rules._compiled.cache_clear()
+    assert "schematron-output-read-back" not in rules._compiled(source, None).validator_xslt
+    assert len(list(kept.parent.iterdir())) == 2
+    rules._compiled.cache_clear()

@@ -156,7 +156,7 @@ class Engine:
                         tree = Tree(value.head.get_node_value())
                         text = self._serialize(tree)
                 else:
-                    text = executable.apply_templates_returning_string(xdm_value=node)
+                    text = _returning_text(executable, node)
             except PySaxonApiError as exc:
                 failure = exc
         saved = executable.get_xsl_messages()
@@ -182,6 +182,20 @@ class Engine:
         serializer = self._serializer.clone()  # as in run: the compiled one must not hold the tree
         serializer.set_global_context_item(xdm_item=tree.node)
         return serializer.apply_templates_returning_string(xdm_value=tree.node)
+
+
+def _returning_text(executable: object, node: object) -> str:
+    """The result of ``executable`` on ``node``, serialized as its xsl:output says, through a temporary file:
+    Saxon's own string of a large result cost more than writing and reading it (the Orocos text stage of 4,000
+    components: 4.96 against 4.33 s of CPU, twice the time at 2,000 against 2.1 times; same bytes)."""
+    handle, name = tempfile.mkstemp(prefix="robomda-stage-", suffix=".xml")
+    os.close(handle)
+    try:
+        executable.apply_templates_returning_file(xdm_value=node, output_file=name)
+        with open(name, encoding="utf-8", newline="") as result:
+            return result.read()
+    finally:
+        os.unlink(name)
 
 
 _SHARED: Engine | None = None

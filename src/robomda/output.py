@@ -42,7 +42,6 @@ directory is inside the output stays in the old, removed tree: ``cd .``.
 from __future__ import annotations
 
 import ctypes
-import difflib
 import errno
 import hashlib
 import json
@@ -113,6 +112,8 @@ def _unified(rel: str, old: bytes | None, new: bytes | None) -> str:
     """A git-style unified diff of one file (``patch -p1`` inside the folder applies it)."""
     def text(data: bytes | None) -> list[str]:
         return data.decode("utf-8", "replace").splitlines(keepends=True) if data is not None else []
+
+    import difflib  # only to compare a folder with a file set: a command that writes one never loads it
 
     lines = list(difflib.unified_diff(text(old), text(new), "a/" + rel if old is not None else "/dev/null",
                                       "b/" + rel if new is not None else "/dev/null"))

@@ -4,7 +4,11 @@ The rules live in ``schemas/*/1/*.sch`` next to the XSD of the model they
 check. They use the standard XSLT 1.0 query binding (with ``xsl:key`` for
 look-ups), so any ISO Schematron engine runs them unchanged. robomda
 compiles each rule set once per process to XSLT with lxml's ISO Schematron
-implementation (the ISO reference skeleton). On a large model that
+implementation (the ISO reference skeleton), and keeps that XSLT in the
+user's cache folder (``$XDG_CACHE_HOME/robomda``, else ``~/.cache/robomda``;
+named by a digest of the rules, the phase, the compile options and lxml's
+version), so that a fresh command reads it instead of running the skeleton
+again. On a large model that
 stylesheet runs in SaxonC, on the tree of the stage Saxon already holds, so
 no lxml tree of the stage is needed unless a finding must be located (at
 10,000 components such a tree is 0.3 to 0.6 GiB); on a small one (below
@@ -20,11 +24,13 @@ xmi:id the failing model element (or its nearest ancestor) carries.
 from __future__ import annotations
 
 import functools
+import hashlib
+import os
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
-from lxml import etree, isoschematron
+from lxml import etree
 
 from robomda.diagnostics import Diagnostic, XmiLocator, model_element_id
 from robomda.engine import Engine, Tree, shared
@@ -51,21 +57,61 @@ class Finding:
 SAXON_FROM = 1 << 20
 
 
+# the skeleton's parameters: no svrl:fired-rule per matched element: only
+# failures and reports are read, and the full trace was larger than the model
+# itself. Every rule context of ours is an element (tests/test_rules.py
+# checks), so the walk visits elements only: the skeleton guesses attribute
+# contexts from any "@" or "attribute" in a context (pim:attribute,
+# r:host[@...]) and then applies templates to every attribute of the model
+# too (at 10,000 components, 1.9 million attributes: the PIM rules took
+# 1.8 s, 0.7 s without them, the same report).
+_COMPILE_PARAMS = {"generate-fired-rule": "'false'", "attributes": "'false'", "only-child-elements": "'true'"}
+
+
+@dataclass
+class CompiledRules:
+    """A rule set compiled by the ISO skeleton: its XSLT 1.0 text (writing the SVRL report), run on Saxon, and
+    that stylesheet on libxslt (made on first use)."""
+
+    validator_xslt: str
+    _libxslt: etree.XSLT | None = field(default=None, repr=False)
+
+    def report(self, tree: etree._Element) -> etree._Element:
+        """The SVRL report of the rules on ``tree``, run on libxslt."""
+        if self._libxslt is None:
+            self._libxslt = etree.XSLT(etree.fromstring(self.validator_xslt.encode("utf-8")))
+        return self._libxslt(tree).getroot()
+
+
+def _cache_file(rules: Path, phase: str | None) -> Path:
+    """Where the compiled form of ``rules`` (in ``phase``) is kept: named by a digest of what it is made from."""
+    digest = hashlib.sha256(b"\0".join([rules.read_bytes(), (phase or "").encode(), repr(sorted(_COMPILE_PARAMS.items())).encode(),
+                                         etree.__version__.encode()])).hexdigest()[:32]
+    base = Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache")
+    return base / "robomda" / "schematron" / f"{rules.stem}-{digest}.xsl"
+
+
 @functools.lru_cache(maxsize=None)
-def _compiled(rules: Path, phase: str | None) -> isoschematron.Schematron:
-    """The rule set compiled by the ISO skeleton (once per process): runs on libxslt, and its XSLT
-    (XSLT 1.0, writing the SVRL report) on Saxon."""
-    # no svrl:fired-rule per matched element: only failures and reports are
-    # read, and the full trace was larger than the model itself. Every rule
-    # context of ours is an element (tests/test_rules.py checks), so the walk
-    # visits elements only: the skeleton guesses attribute contexts from any
-    # "@" or "attribute" in a context (pim:attribute, r:host[@...]) and then
-    # applies templates to every attribute of the model too (at 10,000
-    # components, 1.9 million attributes: the PIM rules took 1.8 s, 0.7 s
-    # without them, the same report).
-    return isoschematron.Schematron(etree.parse(str(rules)), phase=phase, store_report=True, store_xslt=True,
-                                    compile_params={"generate-fired-rule": "'false'", "attributes": "'false'",
-                                                    "only-child-elements": "'true'"})
+def _compiled(rules: Path, phase: str | None) -> CompiledRules:
+    """The rule set compiled by the ISO skeleton (once per process, and read from the user's cache folder when
+    an earlier process compiled the same rules there)."""
+    cached = _cache_file(rules, phase)
+    try:
+        return CompiledRules(cached.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError):
+        pass
+    from lxml import isoschematron  # only to compile: a fresh command with the cache filled never imports it
+
+    text = str(isoschematron.Schematron(etree.parse(str(rules)), phase=phase, store_xslt=True,
+                                        compile_params=_COMPILE_PARAMS).validator_xslt)
+    try:  # a folder that cannot be written leaves the rules compiled for this process only
+        cached.parent.mkdir(parents=True, exist_ok=True)
+        partial = cached.with_name(f"{cached.name}.{os.getpid()}.tmp")
+        partial.write_text(text, encoding="utf-8")
+        os.replace(partial, cached)  # whole or not at all, whatever another process does meanwhile
+    except OSError:
+        pass
+    return CompiledRules(text)
 
 
 def _report(rules: Path, phase: str | None, tree: etree._Element | Callable[[], etree._Element],
@@ -73,11 +119,10 @@ def _report(rules: Path, phase: str | None, tree: etree._Element | Callable[[], 
     """The SVRL report of ``rules``: run in SaxonC on ``source``, else on libxslt on ``tree``."""
     compiled = _compiled(rules, phase)
     if source is None:
-        compiled.validate(_tree(tree))
-        return compiled.validation_report.getroot()
+        return compiled.report(_tree(tree))
     engine = engine or shared()
     name = rules.with_name(f"{rules.name}.{phase or 'all'}.xsl")  # what the compiled rules are known by
-    engine.compile(name, str(compiled.validator_xslt))
+    engine.compile(name, compiled.validator_xslt)
     return etree.fromstring(engine.run(name, {}, source, keep_tree=False)[0].encode("utf-8"))
 
 

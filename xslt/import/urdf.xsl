@@ -50,6 +50,7 @@
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
     xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:map="http://www.w3.org/2005/xpath-functions/map"
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
     xmlns:x="urn:robomda:import:xmi"
@@ -236,8 +237,12 @@
     <xsl:param name="root-link" as="xs:string?"/>
     <xsl:param name="tip-link" as="xs:string?"/>
     <xsl:variable name="all" as="element()*" select="$robot/*:joint"/>
+    <!-- each joint's position among them, by node identity (built once: a
+         count of the preceding joints per joint was quadratic) -->
+    <xsl:variable name="positions" as="map(xs:string, xs:integer)"
+        select="map:merge(for $i in 1 to count($all) return map:entry(generate-id($all[$i]), $i))"/>
     <!-- from the tip up: the joints above it, tip first -->
-    <xsl:variable name="up" as="xs:integer*" select="fp:urdf-up($robot, $tip-link, ())"/>
+    <xsl:variable name="up" as="xs:integer*" select="fp:urdf-up($robot, $positions, $tip-link, map{})"/>
     <!-- how many of them are on the chain: up to the one that hangs from
          the root link; () when none does (the tip is not below the root) -->
     <xsl:variable name="on-chain" as="xs:integer?"
@@ -246,7 +251,7 @@
                 else (for $i in 1 to count($up) return $i[string($all[$up[$i]]/*:parent/@link) eq $root-link])[1]"/>
     <xsl:variable name="chain" as="xs:integer*"
         select="if (exists($tip-link)) then reverse(subsequence($up, 1, ($on-chain, 0)[1]))
-                else if (exists($root-link)) then (fp:urdf-below($robot, $root-link, ())/.) ! fp:urdf-position(.)
+                else if (exists($root-link)) then (fp:urdf-below($robot, $root-link, map{})/.) ! $positions(generate-id(.))
                 else 1 to count($all)"/>
     <xsl:variable name="wrong" as="xs:integer*"
         select="for $i in $chain return $i[not(fp:urdf-type($all[$i]) = $fp:urdf-types)
@@ -281,12 +286,6 @@
     <xsl:sequence select="normalize-space($joint/@type)"/>
   </xsl:function>
 
-  <!-- the position of $joint among its robot's joints -->
-  <xsl:function name="fp:urdf-position" as="xs:integer">
-    <xsl:param name="joint" as="element()"/>
-    <xsl:sequence select="count($joint/preceding-sibling::*:joint) + 1"/>
-  </xsl:function>
-
   <!-- IMP047 about $joint, a joint of the chain that robomda does not count -->
   <xsl:function name="fp:unknown-joint" as="map(*)">
     <xsl:param name="joint" as="element()"/>
@@ -301,25 +300,31 @@
   </xsl:function>
 
   <!-- the joints from link $link up to the root of the tree, $link's own
-       first, as their positions among the robot's joints (each link once:
-       a URDF with a cycle ends there) -->
+       first, as their positions among the robot's joints ($positions:
+       generate-id of a joint to its position; each link once, $seen the
+       links passed as a set: a URDF with a cycle ends there) -->
   <xsl:function name="fp:urdf-up" as="xs:integer*">
     <xsl:param name="robot" as="element()"/>
+    <xsl:param name="positions" as="map(xs:string, xs:integer)"/>
     <xsl:param name="link" as="xs:string?"/>
-    <xsl:param name="seen" as="xs:string*"/>
+    <xsl:param name="seen" as="map(xs:string, xs:boolean)"/>
     <xsl:variable name="joint" as="element()?" select="key('fp:urdf-joint-by-child', $link, root($robot))[1]"/>
-    <xsl:sequence select="if (empty($joint) or $link = $seen) then ()
-        else (fp:urdf-position($joint), fp:urdf-up($robot, string($joint/*:parent/@link), ($seen, $link)))"/>
+    <xsl:sequence select="if (empty($joint) or map:contains($seen, $link)) then ()
+        else ($positions(generate-id($joint)),
+              fp:urdf-up($robot, $positions, string($joint/*:parent/@link), map:put($seen, $link, true())))"/>
   </xsl:function>
 
-  <!-- the joints below the links $links, at any depth (each link once) -->
+  <!-- the joints below the links $links, at any depth (each link once;
+       $seen: the links passed, as a set) -->
   <xsl:function name="fp:urdf-below" as="element()*">
     <xsl:param name="robot" as="element()"/>
     <xsl:param name="links" as="xs:string*"/>
-    <xsl:param name="seen" as="xs:string*"/>
+    <xsl:param name="seen" as="map(xs:string, xs:boolean)"/>
     <xsl:variable name="joints" as="element()*" select="key('fp:urdf-joint-by-parent', $links, root($robot))"/>
+    <xsl:variable name="passed" as="map(xs:string, xs:boolean)"
+        select="map:merge(($seen, $links ! map:entry(., true())), map{'duplicates': 'use-first'})"/>
     <xsl:variable name="next" as="xs:string*"
-        select="distinct-values($joints/*:child/@link ! string(.))[not(. = ($seen, $links))]"/>
-    <xsl:sequence select="$joints, if (exists($next)) then fp:urdf-below($robot, $next, ($seen, $links)) else ()"/>
+        select="distinct-values($joints/*:child/@link ! string(.))[not(map:contains($passed, .))]"/>
+    <xsl:sequence select="$joints, if (exists($next)) then fp:urdf-below($robot, $next, $passed) else ()"/>
   </xsl:function>
 </xsl:stylesheet>

@@ -312,14 +312,36 @@
                                        $steps ! fp:step(.)), '.')"/>
   </xsl:function>
 
+  <!-- an element's siblings of its name (itself among them), in document
+       order: a look-up per step, not a scan of the siblings per element -->
+  <xsl:key name="fp:same-name-siblings" match="*" use="fp:sibling-key(.)"/>
+
+  <xsl:function name="fp:sibling-key" as="xs:string">
+    <xsl:param name="element" as="element()"/>
+    <xsl:sequence select="generate-id($element/..) || '|' || namespace-uri($element) || '|' || local-name($element)"/>
+  </xsl:function>
+
   <xsl:function name="fp:step" as="xs:string">
     <xsl:param name="text" as="element()"/>
     <xsl:variable name="name" as="xs:string"
         select="if (namespace-uri($text) = ($U, $X)) then local-name($text) else replace(name($text), ':', '-')"/>
-    <xsl:variable name="same" as="element()*" select="$text/../*[node-name(.) eq node-name($text)]"/>
-    <xsl:sequence select="if (count($same) gt 1)
-                          then $name || '-' || (count($text/preceding-sibling::*[node-name(.) eq node-name($text)]) + 1)
-                          else $name"/>
+    <xsl:variable name="same" as="element()*"
+        select="if (root($text) instance of document-node()) then key('fp:same-name-siblings', fp:sibling-key($text), root($text))
+                else $text/../*[node-name(.) eq node-name($text)]"/>
+    <xsl:sequence select="if (count($same) gt 1) then $name || '-' || fp:place($same, $text, 1, count($same)) else $name"/>
+  </xsl:function>
+
+  <!-- the position of $node in $nodes (distinct, in document order), looked
+       for between $low and $high by halving -->
+  <xsl:function name="fp:place" as="xs:integer">
+    <xsl:param name="nodes" as="node()+"/>
+    <xsl:param name="node" as="node()"/>
+    <xsl:param name="low" as="xs:integer"/>
+    <xsl:param name="high" as="xs:integer"/>
+    <xsl:variable name="middle" as="xs:integer" select="($low + $high) idiv 2"/>
+    <xsl:sequence select="if ($low ge $high) then $low
+                          else if ($nodes[$middle] &lt;&lt; $node) then fp:place($nodes, $node, $middle + 1, $high)
+                          else fp:place($nodes, $node, $low, $middle)"/>
   </xsl:function>
 
   <!-- a derived id for the n-th (n > 1) PIM element made from one XMI element -->

@@ -131,12 +131,13 @@
 
   <!-- the transport children of the o:connection of $connection: o:stream
        per port that streams (MQueue, ROS), o:remote per CORBA pair, made
-       in the later process of the two ($order: process ids in start
-       order); ORO014 for a pair no transport joins -->
+       in the later process of the two ($order: each process id's place
+       in start order, a look-up per pair); ORO014 for a pair no transport
+       joins -->
   <xsl:function name="fp:oro-legs" as="element()*">
     <xsl:param name="connection" as="element(pim:connection)"/>
     <xsl:param name="targets" as="map(xs:string, xs:boolean)"/>
-    <xsl:param name="order" as="xs:string*"/>
+    <xsl:param name="order" as="map(xs:string, xs:integer)"/>
     <xsl:param name="package" as="xs:string"/>
     <xsl:param name="transportable" as="xs:boolean"/><!-- the data has MQueue / CORBA / ROS transports -->
     <xsl:variable name="root" as="document-node()" select="root($connection)"/>
@@ -173,7 +174,7 @@
     </xsl:for-each-group>
     <!-- one CORBA link per writer / reader pair, made by the later process -->
     <xsl:for-each select="$pairs[@transport eq 'corba'][@direction eq 'writer']">
-      <xsl:variable name="later-is-me" as="xs:boolean" select="index-of($order, string(@my-process))[1] gt index-of($order, string(@other-process))[1]"/>
+      <xsl:variable name="later-is-me" as="xs:boolean" select="$order(string(@my-process)) gt $order(string(@other-process))"/>
       <o:remote process="{if ($later-is-me) then @my-process else @other-process}" proxy="{if ($later-is-me) then @other else @me}"
                 writer="{@me}" writer-port="{@my-port}" reader="{@other}" reader-port="{@other-port}"/>
     </xsl:for-each>

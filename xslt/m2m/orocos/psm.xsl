@@ -169,12 +169,20 @@
     <xsl:variable name="files" as="map(xs:string, xs:string)"
         select="map:merge($order ! map:entry(string(@xmi-id),
                   if ($single) then f:snake-case(root(.)/pim:model/@name) else fp:oro-process-file(.)))"/>
+    <!-- each process id's place in start order (the first, as index-of
+         gave: a later duplicate id does not move it) -->
+    <xsl:variable name="places" as="map(xs:string, xs:integer)"
+        select="map:merge(for $i in 1 to count($order) return map:entry(string($order[$i]/@xmi-id), $i),
+                          map{'duplicates': 'use-first'})"/>
     <xsl:variable name="connections" as="element(o:connection)*"
         select="$binding/pim:connection[fp:kept-connection(., $binding, $targets)]
-                ! fp:oro-connection(., $targets, $order ! string(@xmi-id), $files, $package)"/>
+                ! fp:oro-connection(., $targets, $places, $files, $package)"/>
     <xsl:variable name="corba" as="xs:boolean" select="exists($connections/o:remote) or not($single)"/>
+    <!-- the deployment files that stream over ROS, as a set (a look-up per process) -->
+    <xsl:variable name="ros-files" as="map(xs:string, xs:boolean)"
+        select="map:merge(distinct-values($connections/o:stream[@transport eq 'ros']/@process ! string(.)) ! map:entry(., true()))"/>
     <xsl:variable name="processes" as="element(o:process)*"
-        select="fp:oro-processes($instances, $corba, $order[map:get($files, string(@xmi-id)) = $connections/o:stream[@transport eq 'ros']/@process]/@name)"/>
+        select="fp:oro-processes($instances, $corba, $order[map:contains($ros-files, map:get($files, string(@xmi-id)))]/@name)"/>
     <o:deployment xmi-id="{@id}" model-name="{@name}" deploy-name="{f:snake-case(@name)}"
                   package="{$package}" namespace="{$package}" source="{@source}">
       <xsl:variable name="children" as="element()*">
@@ -207,7 +215,7 @@
   <xsl:function name="fp:oro-connection" as="element(o:connection)">
     <xsl:param name="connection" as="element(pim:connection)"/>
     <xsl:param name="targets" as="map(xs:string, xs:boolean)"/>
-    <xsl:param name="order" as="xs:string*"/>
+    <xsl:param name="order" as="map(xs:string, xs:integer)"/>
     <xsl:param name="files" as="map(xs:string, xs:string)"/>
     <xsl:param name="package" as="xs:string"/>
     <xsl:variable name="policy" as="element(pim:policy)?" select="$connection/pim:policy"/>

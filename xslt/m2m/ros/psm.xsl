@@ -155,6 +155,7 @@
   <xsl:key name="fp:node" match="r:node" use="@xmi-id"/>
   <xsl:key name="fp:instance-by-name" match="pim:binding/pim:instance" use="@name"/>
   <xsl:key name="fp:process" match="pim:process" use="@xmi-id"/>
+  <xsl:key name="fp:thread" match="pim:thread" use="@xmi-id"/>
   <xsl:key name="fp:component-set" match="pim:component-set" use="@xmi-id"/>
 
   <xsl:variable name="fp:builtin-types" as="document-node()" select="doc('types.xml')"/>
@@ -283,7 +284,15 @@
           select="key('fp:process', current-grouping-key(), root(current-group()[1]))"/>
       <xsl:variable name="members" as="element(pim:instance)*" select="current-group()"/>
       <xsl:if test="exists($process)">
-        <xsl:variable name="threads" as="element(pim:thread)*" select="$process/pim:thread[@xmi-id = $members/@thread]"/>
+        <!-- thread id -> its members (one pass, not a scan of the members per thread) -->
+        <xsl:variable name="by-thread" as="map(xs:string, element(pim:instance)+)">
+          <xsl:map>
+            <xsl:for-each-group select="$members[@thread]" group-by="string(@thread)">
+              <xsl:map-entry key="current-grouping-key()" select="current-group()"/>
+            </xsl:for-each-group>
+          </xsl:map>
+        </xsl:variable>
+        <xsl:variable name="threads" as="element(pim:thread)*" select="$process/pim:thread[map:contains($by-thread, string(@xmi-id))]"/>
         <!-- an execution environment named after its middleware (the
              unprofiled convention) stands for the middleware, not a process -->
         <xsl:if test="$ros-version eq '1' and count($members) gt 1 and upper-case($process/@name) ne $process/@middleware">
@@ -293,7 +302,7 @@
         <xsl:for-each select="$threads[$ros-version eq '1']">
           <xsl:variable name="thread" as="element(pim:thread)" select="."/>
           <xsl:sequence select="f:warn('ROS112', @xmi-id, 'thread ''' || @name || ''' of process ''' || $process/@name
-              || ''': ROS 1 nodes cannot share a thread; ''' || string-join($members[@thread eq $thread/@xmi-id]/@name, ''', ''')
+              || ''': ROS 1 nodes cannot share a thread; ''' || string-join($by-thread(string($thread/@xmi-id))/@name, ''', ''')
               || ''' each run in their own, with the thread''s period')"/>
         </xsl:for-each>
         <xsl:if test="$ros-version eq '1' and $process/@managed = 'true'">
@@ -786,7 +795,7 @@
       <!-- its process (a container), component set and thread, by name -->
       <xsl:for-each select="key('fp:process', string($instance/@execution-environment), root($instance))">
         <xsl:attribute name="process" select="@name"/>
-        <xsl:for-each select="pim:thread[@xmi-id eq $instance/@thread]">
+        <xsl:for-each select="key('fp:thread', string($instance/@thread), root($instance))[.. is current()]">
           <xsl:attribute name="thread" select="@name"/>
         </xsl:for-each>
       </xsl:for-each>

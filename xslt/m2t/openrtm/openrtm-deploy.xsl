@@ -32,6 +32,18 @@
     xmlns:fp="urn:robomda:xslt:function:private"
     exclude-result-prefixes="#all">
 
+  <!-- look-ups in the PSM (the document main.xsl reads; its r:system is
+       the document element): a process by its file, an instance by its
+       name, the instances of a process, a component by its class. No scan
+       of every instance or component per instance, connection or process
+       (issue 35) -->
+  <xsl:key name="fp:rtm-process" match="r:system/r:process" use="@file"/>
+  <xsl:key name="fp:rtm-instance" match="r:system/r:instance" use="@name"/>
+  <xsl:key name="fp:rtm-instance-in" match="r:system/r:instance" use="@process"/>
+  <xsl:key name="fp:rtm-component" match="r:system/r:component" use="@class"/>
+  <!-- the connections with an end in a process (the only ones its manager may make) -->
+  <xsl:key name="fp:rtm-connection-in" match="r:system/r:connection" use="(r:writer | r:reader)/@process"/>
+
   <xsl:function name="fp:instance-conf" as="xs:string">
     <xsl:param name="i" as="element(r:instance)"/>
     <xsl:sequence select="fp:lines((
@@ -56,7 +68,7 @@
     <xsl:param name="a" as="element()"/>
     <xsl:param name="b" as="element()"/>
     <xsl:param name="s" as="element(r:system)"/>
-    <xsl:variable name="processes" as="element(r:process)+" select="$s/r:process[@file = ($a/@process, $b/@process)]"/>
+    <xsl:variable name="processes" as="element(r:process)+" select="key('fp:rtm-process', ($a/@process, $b/@process) ! string(.), root($s))"/>
     <xsl:sequence select="$processes[last()]"/>
   </xsl:function>
 
@@ -65,22 +77,22 @@
     <xsl:param name="port" as="xs:string"/>
     <xsl:param name="s" as="element(r:system)"/>
     <xsl:param name="process" as="element(r:process)"/>
-    <xsl:sequence select="(if ($s/r:instance[@name eq $instance]/@process eq $process/@file) then '' else 'rtcname://*/') || $instance || '.' || $port"/>
+    <xsl:sequence select="(if (key('fp:rtm-instance', $instance, root($s))/@process eq $process/@file) then '' else 'rtcname://*/') || $instance || '.' || $port"/>
   </xsl:function>
 
   <xsl:function name="fp:rtc-conf" as="xs:string">
     <xsl:param name="s" as="element(r:system)"/>
     <xsl:param name="p" as="element(r:process)"/>
-    <xsl:variable name="members" as="element(r:instance)*" select="$s/r:instance[@process eq $p/@file]"/>
+    <xsl:variable name="members" as="element(r:instance)*" select="key('fp:rtm-instance-in', string($p/@file), root($s))"/>
     <xsl:variable name="connects" as="xs:string*"
-        select="for $r in $s/r:connection/r:reader, $w in $r/../r:writer[fp:rtm-maker(., $r, $s) is $p] return (
+        select="for $r in key('fp:rtm-connection-in', string($p/@file), root($s))/r:reader, $w in $r/../r:writer[fp:rtm-maker(., $r, $s) is $p] return (
                   fp:rtm-port-ref($w, $p) || '?port=' || fp:rtm-port-ref($r, $p)
                   || '&amp;dataflow_type=' || $r/../@dataflow-type || '&amp;interface_type=' || $r/../@interface-type
                   || '&amp;subscription_type=' || $r/../@subscription-type || '&amp;buffer.length=' || $r/../@buffer-length
                   || '&amp;buffer.write.full_policy=' || $r/../@full-policy)"/>
     <xsl:variable name="calls" as="xs:string*"
         select="for $k in $s/r:service-connection
-                return (if (fp:rtm-maker($s/r:instance[@name eq $k/@caller], $s/r:instance[@name eq $k/@provider], $s) is $p)
+                return (if (fp:rtm-maker(key('fp:rtm-instance', string($k/@caller), root($s)), key('fp:rtm-instance', string($k/@provider), root($s)), $s) is $p)
                         then $k else ())
                 ! (
                   fp:rtm-service-ref(@caller, @caller-port, $s, $p) || '?port=' || fp:rtm-service-ref(@provider, @provider-port, $s, $p))"/>

@@ -94,7 +94,7 @@
     <xsl:param name="s" as="element(r:system)"/>
     <xsl:param name="version" as="xs:string"/>
     <xsl:variable name="component-id" as="map(xs:string, xs:string)"
-        select="map:merge(for $i in $s/r:instance return map:entry(string($i/@name), fp:rtc-id($s/r:component[@class eq $i/@component])))"
+        select="map:merge(for $i in $s/r:instance return map:entry(string($i/@name), fp:rtc-id(key('fp:rtm-component', string($i/@component), root($s)))))"
         xmlns:map="http://www.w3.org/2005/xpath-functions/map"/>
     <xsl:sequence select="fp:lines((
       '&lt;?xml version=&quot;1.0&quot; encoding=&quot;UTF-8&quot;?&gt;',
@@ -120,9 +120,9 @@
     <xsl:param name="i" as="element(r:instance)"/>
     <xsl:param name="s" as="element(r:system)"/>
     <xsl:param name="id" as="xs:string"/>
-    <xsl:variable name="c" as="element(r:component)" select="$s/r:component[@class eq $i/@component]"/>
+    <xsl:variable name="c" as="element(r:component)" select="key('fp:rtm-component', string($i/@component), root($s))"/>
     <xsl:sequence select="(
-      '  &lt;rts:Components ' || string-join((fp:att('rts:id', $id), fp:att('rts:pathUri', $s/r:process[@file eq $i/@process]/@host || '/' || $i/@name || '.rtc'),
+      '  &lt;rts:Components ' || string-join((fp:att('rts:id', $id), fp:att('rts:pathUri', key('fp:rtm-process', string($i/@process), root($s))/@host || '/' || $i/@name || '.rtc'),
           fp:att('rts:instanceName', $i/@name), fp:att('rts:activeConfigurationSet', 'default'), fp:att('rts:compositeType', 'None'),
           fp:att('rts:isRequired', 'true')), ' ') || '&gt;',
       $c/r:data-port ! ('    &lt;rts:DataPorts ' || fp:att('rts:name', $i/@name || '.' || @name) || '/&gt;'),
@@ -142,7 +142,7 @@
     <xsl:for-each select="$k/r:writer">
       <xsl:variable name="w" as="element(r:writer)" select="."/>
       <xsl:variable name="timed" as="xs:string"
-          select="$s/r:component[@class eq $s/r:instance[@name eq $w/@instance]/@component]/r:data-port[@name eq $w/@port]/@timed"/>
+          select="key('fp:rtm-component', string(key('fp:rtm-instance', string($w/@instance), root($s))/@component), root($s))/r:data-port[@name eq $w/@port]/@timed"/>
       <xsl:for-each select="$k/r:reader">
         <xsl:variable name="name" as="xs:string" select="$k/@name || (if (count($k/r:writer) * count($k/r:reader) gt 1) then '_' || $w/@instance || '_' || @instance else '')"/>
         <xsl:sequence select="(

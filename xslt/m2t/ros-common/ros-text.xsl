@@ -34,11 +34,13 @@
     fp:ros1-type / fp:ros2-type  (header, C++ type) of a message or service
     fp:ros-children($key, $package, $values)  the instances (sets) of a host,
                            the members of a set, the hosts and processes by
-                           name, a host's and a set's processes: through keys
-                           fp:ros-on-host, fp:ros-set-on-host, fp:ros-in-set,
-                           fp:ros-host, fp:ros-process, fp:ros-process-on-host
-                           and fp:ros-process-in-set, so that a launch file
-                           does not scan every instance, host or process
+                           name, a host's and a set's processes, the nodes by
+                           class: through keys fp:ros-on-host,
+                           fp:ros-set-on-host, fp:ros-in-set, fp:ros-host,
+                           fp:ros-process, fp:ros-process-on-host,
+                           fp:ros-process-in-set and fp:ros-node, so that a
+                           launch file does not scan every instance, host,
+                           process or node
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -59,13 +61,15 @@
   <xsl:key name="fp:ros-process" match="r:package/r:process" use="@name"/>
   <xsl:key name="fp:ros-process-on-host" match="r:package/r:process" use="@host"/>
   <xsl:key name="fp:ros-process-in-set" match="r:package/r:process" use="@set"/>
+  <xsl:key name="fp:ros-node" match="r:package/r:node" use="@class"/>
 
   <!-- the children of $package that key $key finds for any of $values, in
        document order: as $package/r:instance[@host = $values] (fp:ros-on-host),
        r:set[@host = $values] (fp:ros-set-on-host), r:instance[@set = $values]
        (fp:ros-in-set), r:host[@name = $values] (fp:ros-host),
        r:process[@name = $values] (fp:ros-process), r:process[@host = $values]
-       (fp:ros-process-on-host) or r:process[@set = $values] (fp:ros-process-in-set) -->
+       (fp:ros-process-on-host), r:process[@set = $values] (fp:ros-process-in-set)
+       or r:node[@class = $values] (fp:ros-node) -->
   <xsl:function name="fp:ros-children" as="element()*">
     <xsl:param name="key" as="xs:string"/>
     <xsl:param name="package" as="element(r:package)"/>
@@ -78,6 +82,7 @@
                           else if ($key eq 'fp:ros-host') then $package/r:host[@name = $values]
                           else if ($key eq 'fp:ros-process') then $package/r:process[@name = $values]
                           else if ($key eq 'fp:ros-process-on-host') then $package/r:process[@host = $values]
+                          else if ($key eq 'fp:ros-node') then $package/r:node[@class = $values]
                           else $package/r:process[@set = $values]"/>
   </xsl:function>
 

@@ -68,7 +68,7 @@
     <xsl:param name="package" as="element(r:package)"/>
     <xsl:param name="i" as="element(r:instance)"/>
     <xsl:param name="n" as="xs:integer"/>
-    <xsl:variable name="node" as="element(r:node)" select="$package/r:node[@class eq $i/@node]"/>
+    <xsl:variable name="node" as="element(r:node)" select="fp:ros-children('fp:ros-node', $package, string($i/@node))"/>
     <xsl:sequence select="fp:indent($n, (
         concat('&lt;composable_node pkg=&quot;', $package/@name, '&quot; plugin=&quot;',
                if ($i/@managed) then $node/@lifecycle-type-name else $node/@type-name, '&quot; ', fp:node-name-attributes($i, 'namespace'), '&gt;'),
