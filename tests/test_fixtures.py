@@ -462,6 +462,9 @@ def test_profile_matches_spec(profile):
         "Category": (["Component"], ["kind"]),
         "Alternative": (["Component"], ["replaces"]),
         "Constant": (["Port", "Interface"], []),
+        # seed 004 §4.3 (docs/jobs.md)
+        "Job": (["InstanceSpecification"], []),
+        "Subsystem": (["StateMachine"], []),
     }
     assert {k: (v["metas"], list(v["tags"])) for k, v in profile.items()} == expected
     assert profile["Category"]["tags"]["kind"] == "generic"  # as xslt/import/profile-defaults.xml

@@ -14,7 +14,8 @@
   Writes:  a PIM valid against schemas/pim/1/pim.xsd (urn:robomda:pim:1):
            application (application.xsl; with the deployment-sequence
            dependencies, pim:dependency), platform (platform.xsl),
-           stereotypes and comments (stereotypes.xsl). Deterministic and
+           stereotypes and comments (stereotypes.xsl), jobs and
+           subsystems (jobs.xsl: pim:coordination, docs/jobs.md). Deterministic and
            engine-independent: no generate-id(), no clock; ids missing in
            the XMI become "robomda.<path>" (xmi-common.xsl, fp:id).
   Params:  source-name (xs:string, default ''): the XMI file's name without
@@ -32,6 +33,7 @@
            IMP042-IMP048),
            check.xsl (dangling references), application.xsl,
            connector-ends.xsl (nested connector ends), platform.xsl,
+           jobs.xsl (jobs and subsystems),
            stereotypes.xsl, dialect-*.xsl, ../common/profile.xsl (the
            robomda profile URI); data:
            ../common/primitive-types.xml.
@@ -111,6 +113,7 @@
   <xsl:include href="application.xsl"/>
   <xsl:include href="connector-ends.xsl"/>
   <xsl:include href="platform.xsl"/>
+  <xsl:include href="jobs.xsl"/>
   <xsl:include href="report.xsl"/>
   <xsl:include href="dialect-eclipse.xsl"/>
   <xsl:include href="dialect-ea.xsl"/>
@@ -189,6 +192,10 @@
               <xsl:with-param name="href-types" as="map(*)" select="$href-types" tunnel="yes"/>
               <xsl:with-param name="chains" as="map(*)" tunnel="yes"
                   select="map:merge($chains ! map:entry(?device, ?items[. instance of element()]))"/>
+            </xsl:call-template>
+            <!-- jobs and subsystems (jobs.xsl, docs/jobs.md) -->
+            <xsl:call-template name="tp:coordination">
+              <xsl:with-param name="root" as="element()" select="$root" tunnel="yes"/>
             </xsl:call-template>
           </pim:model>
         </xsl:document>

@@ -17,7 +17,8 @@
            ports.xsl (bound components, data ports), connections.xsl
            (connection points and policies), sequence.xsl (deployment
            sequence), composites.xsl (composites of any depth flattened,
-           connector ends resolved through delegations). This file: the keys, the entry, the reference checks
+           connector ends resolved through delegations), jobs.xsl (jobs
+           and subsystems: JOB001-JOB009, JOB030). This file: the keys, the entry, the reference checks
            and fp:binding, which puts the binding together.
 
   What it resolves (docs/profile.md: stereotypes of profile "robomda" first,
@@ -159,6 +160,7 @@
   <xsl:include href="bind/services.xsl"/>
   <xsl:include href="bind/devices.xsl"/>
   <xsl:include href="bind/runtime.xsl"/>
+  <xsl:include href="bind/jobs.xsl"/>
 
   <xsl:output method="xml" indent="no" encoding="UTF-8"/>
 
@@ -376,14 +378,20 @@
     <xsl:sequence select="fp:check-devices($root), fp:warn-dof($root, $instances, $bound, $raw-connections)"/>
     <xsl:variable name="processes" as="element(pim:process)*" select="fp:processes(., $instances, $hosts)"/>
     <xsl:sequence select="f:fail-all(fp:process-problems($root, $processes))"/>
+    <xsl:variable name="sequenced" as="document-node()">
+      <xsl:document><xsl:sequence select="fp:sequence(., $instances, $instance-tree)"/></xsl:document>
+    </xsl:variable>
+    <!-- jobs and subsystems (bind/jobs.xsl, docs/jobs.md) -->
+    <xsl:sequence select="f:fail-all(fp:job-problems(., $sequenced))"/>
     <pim:binding instances-from="{if (exists($tops)) then 'parts' else 'components'}"
                  connections-from="{if (exists($uses)) then 'connectors' else 'interfaces'}">
       <xsl:sequence select="$hosts ! fp:host(., count($hosts))"/>
       <xsl:sequence select="fp:default-host(.)[@xmi-id = $instances/@host]"/>
       <xsl:sequence select="fp:links(., $hosts), $processes, fp:component-sets(., $hosts)"/>
       <xsl:sequence select="fp:libraries(.)"/>
-      <xsl:sequence select="$bound, $instance-tree/pim:composite-instance, fp:sequence(., $instances, $instance-tree)"/>
+      <xsl:sequence select="$bound, $instance-tree/pim:composite-instance, fp:with-initial-values(., $sequenced/pim:instance)"/>
       <xsl:sequence select="fp:uniquely-named($raw-connections), fp:uniquely-named($calls)"/>
+      <xsl:sequence select="fp:bound-jobs(., $sequenced)"/>
     </pim:binding>
   </xsl:template>
 

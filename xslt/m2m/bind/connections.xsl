@@ -7,7 +7,8 @@
   Params:  none.  Keys: those of bind.xsl.
   Provides: fp:policy, fp:policy-of, fp:connection-name, fp:connections-from-interfaces,
            fp:connections-from-connectors.
-  Errors:  BND007 a connector that joins nothing, BND008 an input fed twice (raised together).
+  Errors:  BND007 a connector that joins nothing, BND008 an input fed twice (raised together;
+           not by writers no job runs together: bind/jobs.xsl, fp:job-mates).
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -104,6 +105,7 @@
     <!-- fp:connector-pairs of $uses -->
     <xsl:param name="resolved" as="element()*"/>
     <xsl:variable name="pairs" as="element(fp:pair)*" select="$resolved/self::fp:pair"/>
+    <xsl:variable name="mates" as="map(xs:string, xs:string*)" select="fp:job-mates($root)"/>
     <!-- the connectors that join something, as a set (one look-up per connector) -->
     <xsl:variable name="joining" as="map(xs:string, xs:boolean)"
         select="map:merge(distinct-values(($pairs, $resolved/(self::fp:unresolved | self::fp:call-pair))/@connector ! string(.))
@@ -121,7 +123,11 @@
             || string-join(pim:end ! fp:end-data($root, .), ', ') || ')' }"/>
       </xsl:for-each>
       <xsl:for-each-group select="$pairs" group-by="@r-instance || '.' || @r-dp">
-        <xsl:if test="count(distinct-values(current-group()/(@w-instance || '.' || @w-dp))) gt 1">
+        <!-- writers no job runs together (seed 004's swap of a source between jobs) are no conflict -->
+        <xsl:variable name="writers" as="xs:string*" select="distinct-values(current-group()/@w-instance)"/>
+        <xsl:if test="count(distinct-values(current-group()/(@w-instance || '.' || @w-dp))) gt 1
+                      and (some $a in $writers, $b in $writers[. ne $a] satisfies
+                           (empty($mates($a)) or empty($mates($b)) or $mates($a) = $mates($b)))">
           <xsl:sequence select="map { 'code': 'BND008', 'id': string(current-group()[1]/@r-port),
               'message': 'input port ' || current-grouping-key() || ' is fed by several output ports ('
               || string-join(distinct-values(current-group()/(@w-instance || '.' || @w-dp)), ', ') || ')' }"/>

@@ -89,6 +89,8 @@
             or required interface that fits no std_srvs service, two ports
             of one interface and role, two required operations of one name)
   Warnings (f:warn):
+    JOB040  a subsystem with jobs on ROS: no job coordinator generated yet (common/psm-kit.xsl,
+            fp:warn-jobs-not-switched; docs/jobs.md)
     ROS100  no instance is deployed on the target's middleware: the
             instances of the others are generated for ROS anyway (once)
     ROS110  an instance deployed on another middleware is left to its target
@@ -188,6 +190,8 @@
          middleware, all when none is -->
     <xsl:variable name="instances" as="element(pim:instance)*"
         select="$binding/pim:instance[fp:on-target(., $fp:target-middleware)]"/>
+    <!-- jobs (docs/jobs.md): no coordinator on this target yet -->
+    <xsl:sequence select="fp:warn-jobs-not-switched($binding, $instances, 'JOB040', 'ROS ' || $ros-version)"/>
     <xsl:variable name="targets" as="map(xs:string, xs:boolean)"
         select="map:merge($instances ! map:entry(string(@name), true()))"/>
     <xsl:variable name="components" as="element(pim:bound-component)*"
