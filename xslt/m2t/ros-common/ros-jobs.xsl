@@ -16,11 +16,14 @@
         an rclcpp::Parameter (ROS 2) or a setter of the parameter server
         (ROS 1)
     fp:ros-job-value($value, $version)  one value of that table
-    fp:ros-job-event-loop($coordinator, $spin)  the coordinator's main loop:
-        it takes the events the event topic queued ($spin: the call that
-        runs the callbacks once), runs the switch from the current job on
-        that event and publishes the new job
+    fp:ros-job-event-loop($ok, $spin, $info, $warn, $error)  the
+        coordinator's main loop: while $ok, it runs the callbacks ($spin),
+        which queue the events of the event topic, runs the switch from the
+        current job on each event (run_switch) and publishes the new job
+        (publish_job); $info / $warn / $error open a log call
     fp:ros-job-instance($coordinator, $name)  the r:instance of that name
+    fp:ros-switched($node)  whether a switch sets values on an instance of
+        $node (it then takes them while it runs)
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -30,6 +33,15 @@
     exclude-result-prefixes="#all">
 
   <xsl:key name="fp:ros-instance-by-name" match="r:package/r:instance" use="@name"/>
+
+  <!-- true when a job coordinator sets values on an instance of $node
+       (xslt/m2m/ros/jobs.xsl): it then writes them into the atomic code
+       (ROS 2: a parameter callback; ROS 1: ~reload_parameters) -->
+  <xsl:function name="fp:ros-switched" as="xs:boolean">
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:sequence select="exists($node/../r:coordinator/r:transition/*[r:value]/@instance
+                                 [. = $node/../r:instance[@node eq $node/@class]/@name])"/>
+  </xsl:function>
 
   <xsl:function name="fp:ros-job-instance" as="element(r:instance)">
     <xsl:param name="coordinator" as="element(r:coordinator)"/>

@@ -90,7 +90,7 @@
         'private:',
         fp:ros2-members($node, 'rclcpp_lifecycle::LifecyclePublisher'),
         '  bool configured_;',
-        if (fp:ros2-switched($node)) then '  rclcpp::node_interfaces::PostSetParametersCallbackHandle::SharedPtr post_set_parameters_;' else (),
+        if (fp:ros-switched($node)) then '  rclcpp::node_interfaces::PostSetParametersCallbackHandle::SharedPtr post_set_parameters_;' else (),
         '};',
         '',
         '}  // namespace lifecycle',
@@ -126,7 +126,7 @@
                fp:double-literal($node/@period), '), running_(false), configured_(false)'),
         '{',
         fp:ros2-parameters($node),
-        if (fp:ros2-switched($node)) then fp:ros2-post-set-parameters($node) else (),
+        if (fp:ros-switched($node)) then fp:ros2-post-set-parameters($node) else (),
         '}',
         '',
         concat($class, '::~', $class, '()'),
@@ -164,14 +164,6 @@
         concat('}  // namespace ', $package),
         '',
         concat('RCLCPP_COMPONENTS_REGISTER_NODE(', $node/@lifecycle-type-name, ')')))"/>
-  </xsl:function>
-
-  <!-- true when a job coordinator sets values on an instance of $node
-       (xslt/m2m/ros/jobs.xsl): it then writes them into the atomic code -->
-  <xsl:function name="fp:ros2-switched" as="xs:boolean">
-    <xsl:param name="node" as="element(r:node)"/>
-    <xsl:sequence select="exists($node/../r:coordinator/r:transition/*[r:value]/@instance
-                                 [. = $node/../r:instance[@node eq $node/@class]/@name])"/>
   </xsl:function>
 
   <!-- the parameter callback of a node whose values a job switch sets: each
