@@ -39,7 +39,10 @@
        (ROS 2: a parameter callback; ROS 1: ~reload_parameters) -->
   <xsl:function name="fp:ros-switched" as="xs:boolean">
     <xsl:param name="node" as="element(r:node)"/>
-    <xsl:sequence select="exists($node/../r:coordinator/r:transition/*[r:value]/@instance
+    <!-- ROS 1 sets a starting node's values in its launch file: only a
+         reconfigured one reloads them -->
+    <xsl:sequence select="exists($node/../r:coordinator/r:transition/*[r:value]
+                                 [$node/../@ros-version eq '2' or self::r:reconfigure]/@instance
                                  [. = $node/../r:instance[@node eq $node/@class]/@name])"/>
   </xsl:function>
 
