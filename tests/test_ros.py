@@ -423,7 +423,7 @@ def test_ros1_configuration_constant_reaches_a_late_subscriber(catkin_ws: Path) 
 
 
 def _pid(env: dict, node: str) -> int:
-    info = subprocess.run(["rosnode", "info", "-q", node], env=env, capture_output=True, text=True, timeout=30).stdout
+    info = subprocess.run(["rosnode", "info", node], env=env, capture_output=True, text=True, timeout=30).stdout
     found = re.search(r"Pid: (\d+)", info)
     assert found, info
     return int(found.group(1))
