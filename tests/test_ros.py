@@ -275,10 +275,13 @@ def test_ros1_launch_files_load_with_roslaunch(case: Path, catkin_ws: Path) -> N
     assert len(launches) >= 2
     env = _ros_env(ROS_PACKAGE_PATH=str(catkin_ws / "src") + ":/usr/share",
                    CMAKE_PREFIX_PATH=str(catkin_ws / "devel") + ":/usr")
-    # a node inside a composite part runs in the namespace of its path
-    expected = sorted("/" + "".join(i.get("namespace", "") + "/" if i.get("namespace") else "")
-                      + i.get("node-name", i.get("name")) for i in etree.fromstring(
-        _run(case, "ros1").stages["psm"].encode()).iter("{urn:robomda:psm-ros:1}instance"))
+    # a node inside a composite part runs in the namespace of its path; a job's instance that only a
+    # switch starts (idle) is in its job's launch file instead, and each job coordinator is a node
+    psm = etree.fromstring(_run(case, "ros1").stages["psm"].encode())
+    expected = sorted(["/" + "".join(i.get("namespace", "") + "/" if i.get("namespace") else "")
+                       + i.get("node-name", i.get("name")) for i in psm.iter("{urn:robomda:psm-ros:1}instance")
+                       if i.get("idle") != "true"]
+                      + ["/" + c.get("node") for c in psm.iter("{urn:robomda:psm-ros:1}coordinator")])
     for launch in launches:
         nodes = _roslaunch_config(launch, env, "print('\\n'.join(sorted(n.namespace + n.name for n in c.nodes)))")
         if launch.name == f"{_deploy_name(case)}.launch":
