@@ -25,6 +25,8 @@
     JOB008  a job names one instance twice (two slots for one part)
     JOB009  an instance in jobs of two subsystems: two coordinators would
             switch it
+    JOB012  a subsystem named like a component instance (its coordinator
+            is a component named after the subsystem)
   Warnings: JOB030 a job that no subsystem runs (only checked, never
   switched to).
 -->
@@ -128,6 +130,11 @@
             || local-name() || 's are named ''' || f:cpp-identifier(@name) || '''' }"/>
       </xsl:if>
     </xsl:for-each-group>
+    <!-- a coordinator is a component named after its subsystem -->
+    <xsl:for-each select="$model/pim:coordination/pim:subsystem[f:cpp-identifier(@name) = $instances//pim:instance/@name]">
+      <xsl:sequence select="map { 'code': 'JOB012', 'id': string(@id), 'message': 'subsystem ''' || @name
+          || ''' has the name of a component instance: its coordinator is a component of that name; rename one of them' }"/>
+    </xsl:for-each>
     <!-- an instance switched by two subsystems -->
     <xsl:for-each-group select="$model/pim:coordination/pim:subsystem ! (let $s := . return
                                   distinct-values(pim:state ! fp:state-job(.)/pim:member/@part) ! map { 'part': ., 's': $s })"

@@ -51,6 +51,8 @@
     RTM004  two component types map to the same C++ class name
     RTM005  nothing to generate: the model has no component instance
   Warnings (f:warn):
+    JOB041  a subsystem with jobs on OpenRTM: no job coordinator generated (common/psm-kit.xsl;
+            docs/jobs.md)
     RTM001  a data port whose datum OpenRTM's Timed types cannot carry (a
             data type, enumeration, array or 64-bit integer): no port
     RTM006  no instance is deployed on OpenRTM: all are generated anyway
@@ -122,6 +124,8 @@
     <xsl:variable name="binding" as="element(pim:binding)" select="pim:binding"/>
     <xsl:variable name="package" as="xs:string" select="fp:package-name($package-name, .)"/>
     <xsl:variable name="instances" as="element(pim:instance)*" select="$binding/pim:instance[fp:on-target(., 'OpenRTM')]"/>
+    <!-- jobs (docs/jobs.md): no coordinator on this target yet -->
+    <xsl:sequence select="fp:warn-jobs-not-switched($binding, $instances, 'JOB041', 'OpenRTM')"/>
     <xsl:sequence select="fp:check-targets(., $instances, 'OpenRTM', 'OpenRTM', ('RTM005', 'RTM006', 'RTM007'))"/>
     <!-- the names of the package's instances, as a set; its components, by key -->
     <xsl:variable name="targets" as="map(xs:string, xs:boolean)"

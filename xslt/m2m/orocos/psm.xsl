@@ -51,6 +51,9 @@
   text stage loads, configures and starts them in that order; each keeps
   its constraints on other Orocos instances as o:start-after.
 
+  Jobs (seed 004 §4.3, jobs.xsl): an o:coordinator per subsystem; an
+  instance of a job that is not the initial one is idle (configured, not
+  started: the coordinator starts it on a switch).
   Errors (urn:robomda:error, f:fail):
     ORO001  a port, operation parameter or Configurable property has a type
             robomda cannot map to C++ / cpf XML (names the element)
@@ -96,6 +99,7 @@
   <xsl:include href="../common/psm-kit.xsl"/>
   <xsl:include href="types.xsl"/>
   <xsl:include href="processes.xsl"/>
+  <xsl:include href="jobs.xsl"/>
 
   <xsl:param name="package-name" as="xs:string" select="''">
     <!-- the component package (CMake project, deployer Import); '' = lower snake-case of the model name -->
@@ -177,7 +181,7 @@
         select="fp:oro-processes($instances, $corba, $order[map:get($files, string(@xmi-id)) = $connections/o:stream[@transport eq 'ros']/@process]/@name)"/>
     <o:deployment xmi-id="{@id}" model-name="{@name}" deploy-name="{f:snake-case(@name)}"
                   package="{$package}" namespace="{$package}" source="{@source}">
-      <xsl:variable name="children" as="element()*">
+      <xsl:variable name="parts" as="element()*">
         <xsl:sequence select="$binding/pim:library ! fp:psm-library(., $package)"/>
         <xsl:sequence select="fp:oro-types($task-contexts/o:task-context, $package, root(.))"/>
         <xsl:sequence select="$task-contexts/o:task-context, fp:oro-thread-task-context($processes, $package)"/>
@@ -195,6 +199,9 @@
           <xsl:sequence select="fp:oro-instance(., $package, $binding, $task-contexts, $targets, $process, $thread, $corba)"/>
         </xsl:for-each>
       </xsl:variable>
+      <!-- the job coordinators (jobs.xsl, docs/jobs.md) -->
+      <xsl:variable name="children" as="element()*"
+          select="$parts, fp:oro-coordinators($binding, $parts/self::o:instance, f:snake-case(@name))"/>
       <xsl:call-template name="t:indented-content">
         <xsl:with-param name="children" select="$children"/>
         <xsl:with-param name="margin" select="'&#10;'"/>
@@ -416,6 +423,8 @@
                 [fp:kept-connection(., $binding, $targets)]"/>
     <o:instance xmi-id="{$instance/@xmi-id}" name="{$instance/@name}" task-context="{$class}"
                 type-name="{$package}::{$class}" process="{$process/@file}" server="{$server}">
+      <!-- in a job, not in the initial one: configured at deployment, started by a switch (jobs.xsl) -->
+      <xsl:if test="fp:oro-idle($instance)"><xsl:attribute name="idle" select="'true'"/></xsl:if>
       <xsl:for-each select="key('fp:id', $instance/@host, root($instance))">
         <xsl:attribute name="host" select="(key('fp:host', @id, root($instance))/@hostname, @name)[1]"/>
       </xsl:for-each>

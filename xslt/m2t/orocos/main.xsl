@@ -25,7 +25,7 @@
   Errors:  none (the PSM is complete and valid).
   Modules: ../common/text.xsl (the text kit every target shares),
            ../common/package-manifest.xsl, ../common/user-class.xsl (the
-           user files, shared with ROS), ../common/data-types.xsl, orocos-cpp.xsl, orocos-build.xsl, orocos-deploy.xsl,
+           user files, shared with ROS), ../common/data-types.xsl, orocos-cpp.xsl, orocos-build.xsl, orocos-deploy.xsl, orocos-jobs.xsl (job coordinators),
            orocos-types.xsl.
 -->
 <xsl:stylesheet version="3.0"
@@ -44,6 +44,7 @@
   <xsl:include href="orocos-cpp.xsl"/>
   <xsl:include href="orocos-build.xsl"/>
   <xsl:include href="orocos-deploy.xsl"/>
+  <xsl:include href="orocos-jobs.xsl"/>
   <xsl:include href="orocos-processes.xsl"/>
   <xsl:include href="../common/data-types.xsl"/>
   <xsl:include href="orocos-types.xsl"/>
@@ -102,6 +103,10 @@
         <xsl:sequence select="$fp:file-margin, fp:file(concat('deploy/', @file, '.ops'), 'generated', $fp:deploy-xsl, fp:deploy-ops($view))"/>
         <xsl:sequence select="$fp:file-margin, fp:file(concat('deploy/', @file, '.lua'), 'generated', $fp:deploy-xsl, fp:deploy-lua($view))"/>
         <xsl:sequence select="$fp:file-margin, fp:file(concat('deploy/', @file, '-check.lua'), 'generated', $fp:deploy-xsl, fp:deploy-check-lua($view))"/>
+      </xsl:for-each>
+      <!-- the job coordinators' programs (orocos-jobs.xsl, docs/jobs.md) -->
+      <xsl:for-each select="o:coordinator">
+        <xsl:sequence select="$fp:file-margin, fp:file('deploy/' || @script, 'generated', $fp:jobs-xsl, fp:coordinator-lua(., $deployment))"/>
       </xsl:for-each>
       <!-- several processes: a start script per host -->
       <xsl:if test="count(o:process) gt 1">

@@ -185,7 +185,9 @@
        registered ... for type int") -->
   <xsl:function name="fp:deploy-imports" as="xs:string*">
     <xsl:param name="deployment" as="element(o:deployment)"/>
-    <xsl:sequence select="if ($deployment/o:connection[@transport eq 'ros']) then fp:deploy-imports-ros() else ()"/>
+    <xsl:sequence select="(if ($deployment/o:connection[@transport eq 'ros']) then fp:deploy-imports-ros() else (),
+                          (: OCL's components: the job coordinators are OCL::LuaComponent (orocos-jobs.xsl) :)
+                          if ($deployment/o:coordinator) then 'ocl' else ())"/>
   </xsl:function>
   <!-- those packages (also the package.xml's dependencies, orocos-build.xsl) -->
   <xsl:function name="fp:deploy-imports-ros" as="xs:string+">
@@ -264,6 +266,8 @@
         fp:process-note($deployment) ! ('  ' || .),
         if ($deployment/o:instance/o:property-value)
         then '  from this folder: the tuned values (*.user.cpf, yours) are read from the working directory.'
+        else if ($deployment/o:coordinator)
+        then '  from this folder: the job coordinators'' programs are read from the working directory.'
         else (),
         '--&gt;',
         '&lt;!DOCTYPE properties SYSTEM &quot;cpf.dtd&quot;&gt;',
@@ -296,6 +300,7 @@
         return ('', concat('  &lt;!-- deployment sequence: ', $note, '. The deployer loads, configures and starts'),
                 '       the components in the order of this file. --&gt;'),
         $deployment/o:instance ! fp:xml-instance(.),
+        $deployment/o:coordinator ! fp:xml-coordinator(.),
         '&lt;/properties&gt;'))"/>
   </xsl:function>
 
@@ -320,7 +325,8 @@
           concat('    ', fp:simple('Server', 'boolean', '1')),
           concat('    ', fp:simple('UseNamingService', 'boolean', '1'))) else (),
         concat('    ', fp:simple('AutoConf', 'boolean', '1')),
-        concat('    ', fp:simple('AutoStart', 'boolean', '1')),
+        if ($instance/@idle = 'true') then '    &lt;!-- in a job that runs later: its coordinator starts it --&gt;' else (),
+        concat('    ', fp:simple('AutoStart', 'boolean', if ($instance/@idle = 'true') then '0' else '1')),
         if ($instance/o:peer) then (
           '    &lt;struct name=&quot;Peers&quot; type=&quot;PropertyBag&quot;&gt;',
           $instance/o:peer ! (concat('      ', fp:simple((), 'string', @instance))),
@@ -347,6 +353,7 @@
         fp:process-note($deployment) ! ('// ' || .),
         concat('// Run: ', fp:deployer-command($deployment, $file, fp:naming-address($deployment), string($deployment/@address)), if ($deployment/o:instance/o:property-value)
                then ' from this folder (the tuned values, *.user.cpf, are read from the working directory);'
+               else if ($deployment/o:coordinator) then ' from this folder (the job coordinators'' programs are read from the working directory);'
                else ' (from any folder;'),
         '// RTT_COMPONENT_PATH must hold the installed package.',
         '// A failing configure() or start() is logged as an [ ERROR ] line; nothing starts when a configure() failed.',
@@ -398,16 +405,18 @@
           let $k := ., $e := fp:connection-ends(.)
           return for $j in 1 to count($e) idiv 2
                  return concat('connect(', fp:cpp-string($e[2 * $j - 1]), ', ', fp:cpp-string($e[2 * $j]), ', cp_', $k/@name, ')')),
+        fp:ops-coordinators($deployment),
         '',
         '// lifecycle: configure all, then start all',
         fp:sequence-note($deployment) ! (concat('// in start order (deployment sequence: ', ., ')')),
-        $deployment/o:instance ! (
+        if ($deployment/o:instance/@idle = 'true') then '// (the instances of the jobs that run later are only configured: their coordinator starts them)' else (),
+        ($deployment/o:instance, $deployment/o:coordinator) ! (
           concat('if ( !', @name, '.configure() ) then {'),
           concat('  print.log(Error, ', fp:cpp-string(concat($file, ': ', @name, '.configure() failed')), ')'),
           '  configured = false',
           '}'),
         'if ( configured ) then {',
-        $deployment/o:instance ! (concat('  if ( !', @name, '.start() ) then print.log(Error, ',
+        ($deployment/o:instance[not(@idle = 'true')], $deployment/o:coordinator) ! (concat('  if ( !', @name, '.start() ) then print.log(Error, ',
                                  fp:cpp-string(concat($file, ': ', @name, '.start() failed')), ')')),
         '} else {',
         concat('  print.log(Error, ', fp:cpp-string(concat($file, ': not started, a step before the start failed')), ')'),
@@ -592,6 +601,10 @@
         'if tc:getName() == &quot;lua&quot; then depl = tc:getPeer(&quot;Deployer&quot;) else depl = tc end',
         concat('local names = {', string-join($deployment/o:instance/@name ! fp:cpp-string(.), ', '), '}'),
         'local comps = {}',
+        if ($deployment/o:coordinator) then (
+          '-- the instances of the jobs that run later: configured only, their coordinator starts them',
+          concat('local idle = {', string-join($deployment/o:instance[@idle = 'true'] ! (fp:cpp-string(@name) ! ('[' || . || '] = true')), ', '), '}'),
+          'local coordinators = {}') else (),
         '',
         fp:deploy-libraries($deployment) ! concat('check(depl:loadLibrary(', fp:cpp-string(.), '), &quot;loadLibrary ', ., '&quot;)'),
         fp:deploy-imports($deployment) ! concat('check(depl:import(', fp:cpp-string(.), '), &quot;import ', ., '&quot;)'),
@@ -608,12 +621,17 @@
         $deployment/o:instance ! fp:lua-activity(.),
         fp:lua-settings($deployment),
         $deployment/o:connection ! fp:lua-connection(.),
+        fp:lua-coordinators($deployment),
         '',
         '  -- lifecycle: configure all, then start all',
         fp:sequence-note($deployment) ! (concat('  -- in start order (deployment sequence: ', ., ')')),
         '  for _, n in ipairs(names) do check(comps[n]:configure(), n .. &quot;.configure()&quot;) end',
+        $deployment/o:coordinator ! concat('  check(coordinators[', fp:cpp-string(@name), ']:configure(), &quot;', @name, '.configure()&quot;)'),
         '  if #failures == 0 then',
-        '    for _, n in ipairs(names) do check(comps[n]:start(), n .. &quot;.start()&quot;) end',
+        if ($deployment/o:coordinator)
+        then '    for _, n in ipairs(names) do if not idle[n] then check(comps[n]:start(), n .. &quot;.start()&quot;) end end'
+        else '    for _, n in ipairs(names) do check(comps[n]:start(), n .. &quot;.start()&quot;) end',
+        $deployment/o:coordinator ! concat('    check(coordinators[', fp:cpp-string(@name), ']:start(), &quot;', @name, '.start()&quot;)'),
         '  end',
         'end',
         '',
@@ -621,7 +639,9 @@
         concat('  error(', fp:cpp-string(concat($file, ': deployment failed: ')), ' .. table.concat(failures, &quot;, &quot;), 0)'),
         'end',
         '-- what the check script (or another script that runs this one with dofile) reads',
-        'return { deployer = depl, names = names, components = comps }'))"/>
+        if ($deployment/o:coordinator)
+        then 'return { deployer = depl, names = names, components = comps, idle = idle, coordinators = coordinators }'
+        else 'return { deployer = depl, names = names, components = comps }'))"/>
   </xsl:function>
 
   <!-- the self-check: deploy with <model>.lua, read back what can be read
@@ -720,10 +740,20 @@
         'if loaded then',
         '  local depl, comps, names = deployment.deployer, deployment.components, deployment.names',
         '  rtt.sleep(1, 0)  -- let it run 1 s',
+        if ($deployment/o:coordinator) then (
+          '  -- the instances of the jobs that run later are configured, not started',
+          '  for _, n in ipairs(names) do',
+          '    local s, w = comps[n]:getState(), deployment.idle[n] and &quot;Stopped&quot; or &quot;Running&quot;',
+          '    check(s == w, n .. &quot; &quot; .. w .. &quot; (is &quot; .. tostring(s) .. &quot;)&quot;)',
+          '  end',
+          '  for c, coordinator in pairs(deployment.coordinators) do',
+          '    local s = coordinator:getState()',
+          '    check(s == &quot;Running&quot;, c .. &quot; Running (is &quot; .. tostring(s) .. &quot;)&quot;)',
+          '  end') else (
         '  for _, n in ipairs(names) do',
         '    local s = comps[n]:getState()',
         '    check(s == &quot;Running&quot;, n .. &quot; Running (is &quot; .. tostring(s) .. &quot;)&quot;)',
-        '  end',
+        '  end'),
         '  -- numbers read back as doubles (a float property to about 7 digits)',
         '  local function near(a, b) return math.abs(a - b) &lt;= 1e-6 * math.max(1, math.abs(b)) end',
         if ($deployment//o:value[@enum = 'true'])
@@ -732,6 +762,10 @@
         $deployment/o:instance ! fp:lua-instance-checks(.),
         $deployment/o:proxy ! concat('  check(depl:getPeer(', fp:cpp-string(@name), '):getState() == &quot;Running&quot;, &quot;', @name,
                  ' (a component of another process) Running&quot;)'),
+        if ($deployment/o:coordinator) then (
+          '  -- the coordinators first (no switch while the rest stops)',
+          '  for c, coordinator in pairs(deployment.coordinators) do coordinator:stop(); coordinator:cleanup(); depl:unloadComponent(c) end')
+        else (),
         '  -- in the reverse start order',
         '  for i = #names, 1, -1 do comps[names[i]]:stop() end',
         if ($corba) then (

@@ -108,6 +108,8 @@
           <xsl:sequence select="o:property-value, o:start-after"/>
         </xsl:copy>
       </xsl:for-each>
+      <!-- the job coordinators of this process (orocos-jobs.xsl) -->
+      <xsl:sequence select="$deployment/o:coordinator[@process eq $p]"/>
     </o:deployment>
   </xsl:function>
 
