@@ -15,7 +15,12 @@
   publishes get<Datum>() of each output; each subscription callback calls
   set<Datum>() and, when the node is data-driven (period 0), step().
   tearDown() calls stop() and cleanup(). Calls are qualified with the
-  realizing class's C++ name.
+  realizing class's C++ name. Before configure(), setUp() reads each
+  configuration constant («Constant» input, seed 004) once: the latched
+  message, waited for up to 10 s (fp:ros1-read-constants). A node whose
+  values a job switch changes while it runs (ros1-jobs.xsl) has the
+  service ~reload_parameters (std_srvs/Empty), which reads the parameters
+  into the atomic code again.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
