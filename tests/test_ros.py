@@ -275,10 +275,13 @@ def test_ros1_launch_files_load_with_roslaunch(case: Path, catkin_ws: Path) -> N
     assert len(launches) >= 2
     env = _ros_env(ROS_PACKAGE_PATH=str(catkin_ws / "src") + ":/usr/share",
                    CMAKE_PREFIX_PATH=str(catkin_ws / "devel") + ":/usr")
-    # a node inside a composite part runs in the namespace of its path
-    expected = sorted("/" + "".join(i.get("namespace", "") + "/" if i.get("namespace") else "")
-                      + i.get("node-name", i.get("name")) for i in etree.fromstring(
-        _run(case, "ros1").stages["psm"].encode()).iter("{urn:robomda:psm-ros:1}instance"))
+    # a node inside a composite part runs in the namespace of its path; a job's instance that only a
+    # switch starts (idle) is in its job's launch file instead, and each job coordinator is a node
+    psm = etree.fromstring(_run(case, "ros1").stages["psm"].encode())
+    expected = sorted(["/" + "".join(i.get("namespace", "") + "/" if i.get("namespace") else "")
+                       + i.get("node-name", i.get("name")) for i in psm.iter("{urn:robomda:psm-ros:1}instance")
+                       if i.get("idle") != "true"]
+                      + ["/" + c.get("node") for c in psm.iter("{urn:robomda:psm-ros:1}coordinator")])
     for launch in launches:
         nodes = _roslaunch_config(launch, env, "print('\\n'.join(sorted(n.namespace + n.name for n in c.nodes)))")
         if launch.name == f"{_deploy_name(case)}.launch":
@@ -420,6 +423,78 @@ def test_ros1_configuration_constant_reaches_a_late_subscriber(catkin_ws: Path) 
                               capture_output=True, text=True)
         # the latched sample, once: nothing is published per cycle
         assert re.findall(r"data: (\S+)", late.stdout) == ["5.0"], late.stdout + late.stderr
+
+
+def _pid(env: dict, node: str) -> int:
+    info = subprocess.run(["rosnode", "info", node], env=env, capture_output=True, text=True, timeout=30).stdout
+    found = re.search(r"Pid: (\d+)", info)
+    assert found, info
+    return int(found.group(1))
+
+
+def _job(env: dict, want: str, log: Path) -> None:
+    """Waits until the coordinator publishes job ``want`` on /arm/job (latched)."""
+    deadline = time.monotonic() + 60
+    while True:
+        said = subprocess.run(["rostopic", "echo", "-n", "1", "/arm/job"], env=env, capture_output=True,
+                              text=True, timeout=30).stdout
+        if f"data: \"{want}\"" in said:
+            return
+        assert time.monotonic() < deadline, said + log.read_text(errors="replace")[-4000:]
+        time.sleep(0.5)
+
+
+def _flows(env: dict, topic: str, count: int = 3) -> list[float]:
+    echo = subprocess.run(["rostopic", "echo", "-n", str(count), topic], env=env, capture_output=True,
+                          text=True, timeout=30)
+    values = [float(v) for v in re.findall(r"data: (\S+)", echo.stdout)]
+    assert len(values) == count, echo.stdout + echo.stderr
+    return values
+
+
+def _nodes(env: dict) -> set[str]:
+    return set(subprocess.run(["rosnode", "list"], env=env, capture_output=True, text=True).stdout.split())
+
+
+def _until_nodes(env: dict, present: set[str], absent: set[str], log: Path) -> None:
+    deadline = time.monotonic() + 30
+    while not (present <= _nodes(env) and not absent & _nodes(env)):
+        assert time.monotonic() < deadline, f"{sorted(_nodes(env))}\n" + log.read_text(errors="replace")[-4000:]
+        time.sleep(0.5)
+
+
+def test_ros1_teleop_switches_jobs_and_never_restarts_the_shared_robot(catkin_ws: Path, tmp_path: Path) -> None:
+    """Seed 004 §4.3 on ROS 1 (docs/jobs.md): the launch file starts job teleoperation; event play on
+    /arm/event shuts the trackball down, reloads invkin's gain and starts the player; teleoperate goes
+    back. The shared robot interface is never restarted (its PID), data flows before and after each
+    switch, and the robot's cycle counter never starts again."""
+    log = tmp_path / "teleop.log"
+    with _roscore_running(catkin_ws, catkin_ws / "src/teleop/launch/teleop.launch", log) as env:
+        _wait_for(env, {"/trackball", "/invkin", "/robot", "/arm_coordinator"}, {"/command", "/joint", "/arm/job"})
+        _job(env, "teleoperation", log)
+        assert "/player" not in _nodes(env)  # idle: only a switch starts it
+        robot = _pid(env, "/robot")
+        _flows(env, "/trackballPose"), _flows(env, "/command")
+        before = _flows(env, "/cycles", 1)[0]
+        assert subprocess.run(["rosparam", "get", "/invkin/gain"], env=env, capture_output=True,
+                              text=True).stdout.strip() == "1.0"
+        for event, job, gone, came, gain in (("play", "playback", "/trackball", "/player", "2.0"),
+                                             ("teleoperate", "teleoperation", "/player", "/trackball", "1.0")):
+            pub = subprocess.run(["rostopic", "pub", "-1", "/arm/event", "std_msgs/String", f"data: '{event}'"],
+                                 env=env, capture_output=True, text=True, timeout=60)
+            assert pub.returncode == 0, pub.stderr
+            _job(env, job, log)
+            _until_nodes(env, {came, "/robot", "/invkin"}, {gone}, log)
+            assert _pid(env, "/robot") == robot  # the shared node: never restarted
+            assert subprocess.run(["rosparam", "get", "/invkin/gain"], env=env, capture_output=True,
+                                  text=True).stdout.strip() == gain
+            _flows(env, "/trackballPose"), _flows(env, "/command")  # the new source feeds invkin
+            now = _flows(env, "/cycles", 1)[0]
+            assert now > before, (before, now)  # counting on: the robot interface ran through the switch
+            before = now
+    text = log.read_text(errors="replace")
+    assert "job playback active (event play)" in text and "job teleoperation active (event teleoperate)" in text, text[-4000:]
+    assert "/invkin: 1 values reloaded" in text and "/trackball: shut down" in text, text[-4000:]
 
 
 def test_ros1_package_moved_away_names_the_option_then_configures(tmp_path: Path) -> None:

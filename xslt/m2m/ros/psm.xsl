@@ -70,6 +70,12 @@
       operation; the generated <Class>Base declares them (pure virtual) and
       holds the parameters' members (r:member), so a hook the model no
       longer has fails to compile where the user's class overrides it.
+  N10 jobs (seed 004, docs/jobs.md; jobs.xsl): an instance in the jobs of
+      a subsystem is switched by the subsystem's coordinator (r:coordinator,
+      r:instance/@job; @idle when it is in no initial job, so no launch file
+      starts it); on ROS 2 it is a lifecycle node (@managed) that the
+      coordinator, not the host's lifecycle manager, configures and
+      activates. Warnings JOB050-JOB052 (jobs.xsl).
 
   Errors (urn:robomda:error, f:fail):
     ROS001  a port, service or Configurable parameter has a type the type
@@ -89,8 +95,6 @@
             or required interface that fits no std_srvs service, two ports
             of one interface and role, two required operations of one name)
   Warnings (f:warn):
-    JOB040  a subsystem with jobs on ROS: no job coordinator generated yet (common/psm-kit.xsl,
-            fp:warn-jobs-not-switched; docs/jobs.md)
     ROS100  no instance is deployed on the target's middleware: the
             instances of the others are generated for ROS anyway (once)
     ROS110  an instance deployed on another middleware is left to its target
@@ -110,6 +114,7 @@
             type the ROS type map cannot carry (it is no parameter)
     ROS108  a bounded array in a ROS 1 message (types.xsl)
     ROS109  a data type no port carries that cannot be declared (types.xsl)
+    JOB050, JOB051, JOB052  the job coordinators (jobs.xsl)
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -131,6 +136,7 @@
   <xsl:include href="../../common/profile.xsl"/>
   <xsl:include href="../common/psm-kit.xsl"/>
   <xsl:include href="types.xsl"/>
+  <xsl:include href="jobs.xsl"/>
 
   <xsl:param name="ros-version" as="xs:string" select="'1'">
     <!-- '1' (catkin / roscpp) or '2' (ament / rclcpp) -->
@@ -190,8 +196,6 @@
          middleware, all when none is -->
     <xsl:variable name="instances" as="element(pim:instance)*"
         select="$binding/pim:instance[fp:on-target(., $fp:target-middleware)]"/>
-    <!-- jobs (docs/jobs.md): no coordinator on this target yet -->
-    <xsl:sequence select="fp:warn-jobs-not-switched($binding, $instances, 'JOB040', 'ROS ' || $ros-version)"/>
     <xsl:variable name="targets" as="map(xs:string, xs:boolean)"
         select="map:merge($instances ! map:entry(string(@name), true()))"/>
     <xsl:variable name="components" as="element(pim:bound-component)*"
@@ -232,6 +236,7 @@
         <xsl:sequence select="fp:ros-sets($instances, $host-keys)"/>
         <xsl:sequence select="$connections ! fp:topic(., $targets)"/>
         <xsl:sequence select="$instances ! fp:ros-instance(., $nodes, $host-keys, $targets)"/>
+        <xsl:sequence select="fp:ros-coordinators($binding, $instances, $nodes, $host-keys)"/>
       </xsl:variable>
       <xsl:call-template name="t:indented-content">
         <xsl:with-param name="children" select="$children"/>
@@ -241,11 +246,13 @@
   </xsl:template>
 
   <!-- instance $instance is a ROS 2 managed (lifecycle) node: its process
-       asks for it (Middleware managed, N8) -->
+       asks for it (Middleware managed, N8), or a subsystem's coordinator
+       switches it (N10) -->
   <xsl:function name="fp:managed" as="xs:boolean">
     <xsl:param name="instance" as="element(pim:instance)"/>
     <xsl:sequence select="$ros-version eq '2'
-        and key('fp:process', string($instance/@execution-environment), root($instance))/@managed = 'true'"/>
+        and (key('fp:process', string($instance/@execution-environment), root($instance))/@managed = 'true'
+             or exists(fp:ros-job-of($instance)))"/>
   </xsl:function>
 
   <xsl:function name="fp:host-key" as="xs:string">
@@ -267,7 +274,8 @@
               name="{current-grouping-key()}" machine="{current-grouping-key()}"
               hostname="{($pim-host/@hostname, 'localhost')[1]}" address="{($pim-host/@address, 'localhost')[1]}"
               launch="{current-grouping-key()}">
-        <xsl:if test="some $i in current-group() satisfies fp:managed($i)">
+        <!-- the lifecycle manager: the managed nodes no coordinator switches -->
+        <xsl:if test="some $i in current-group() satisfies (fp:managed($i) and empty(fp:ros-job-of($i)))">
           <xsl:attribute name="lifecycle-manager" select="current-grouping-key() || '_lifecycle_manager'"/>
         </xsl:if>
         <xsl:sequence select="$pim-host ! fp:psm-host-resources(.)"/>
@@ -810,18 +818,27 @@
       <xsl:if test="fp:managed($instance)">
         <xsl:attribute name="managed" select="true()"/>
       </xsl:if>
+      <!-- switched by the coordinator of its subsystem (N10); idle: in no
+           initial job, started by a switch only -->
+      <xsl:for-each select="fp:ros-job-of($instance)">
+        <xsl:attribute name="job" select="."/>
+        <xsl:if test="fp:ros-job-idle($instance)">
+          <xsl:attribute name="idle" select="true()"/>
+        </xsl:if>
+      </xsl:for-each>
       <xsl:attribute name="period" select="$activity/@period"/>
       <xsl:attribute name="periodic" select="number($activity/@period) ne 0"/>
       <xsl:for-each select="$node/r:port">
         <xsl:variable name="port" as="element(r:port)" select="."/>
         <xsl:variable name="connections" as="element(pim:connection)*"
             select="key('fp:connection-by-end', $instance/@name || '/' || $port/@name, root($instance))"/>
-        <xsl:if test="count($connections) gt 1">
+        <!-- writers a coordinator switches share their reader's topic (jobs.xsl) -->
+        <xsl:if test="count(distinct-values($connections ! fp:ros-alternatives(.)/@name)) gt 1">
           <xsl:sequence select="f:warn('ROS103', $port/@xmi-id, 'port ''' || $port/@name || ''' of instance '''
               || $instance/@name || ''' is in connections ''' || string-join($connections/@name, ''', ''')
               || ''': ROS remaps a port to one topic; ''' || $connections[1]/@name || ''' is used')"/>
         </xsl:if>
-        <xsl:for-each select="$connections[1]">
+        <xsl:for-each select="$connections[1] ! fp:ros-alternatives(.)">
           <!-- a node in a namespace resolves a relative name in it: the
                topic is named from the root so that all ends meet (from-root:
                the launch's root, which a pushed namespace moves) -->

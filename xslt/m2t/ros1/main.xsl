@@ -12,13 +12,16 @@
              CMakeLists.txt, package.xml
              launch/<model>.launch, launch/<model>_<host>.launch, launch/<model>_<set>.launch
              config/<instance>.yaml
+             src/<subsystem>_coordinator.cpp, launch/<model>_<job>_<instance>.launch
+                                     per job coordinator (ros1-jobs.xsl)
            One fs:file a line, as f:indent (common/indent.xsl) would indent
            the file set, written so directly (t:indented-content: no copy of
            all the text).
   Params:  model-dir-from-output (xslt/m2t/ros-common/ros-text.xsl).
   Errors:  none (the PSM is complete and valid).
   Modules: ../ros-common/ros-text.xsl, ../common/user-class.xsl,
-           ../ros-common/ros-user.xsl, ros1-cpp.xsl, ros1-build.xsl, ros1-launch.xsl.
+           ../ros-common/ros-user.xsl, ros1-cpp.xsl, ros1-build.xsl, ros1-launch.xsl,
+           ../ros-common/ros-jobs.xsl, ros1-jobs.xsl.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -42,6 +45,8 @@
   <xsl:include href="ros1-cpp.xsl"/>
   <xsl:include href="ros1-build.xsl"/>
   <xsl:include href="ros1-launch.xsl"/>
+  <xsl:include href="../ros-common/ros-jobs.xsl"/>
+  <xsl:include href="ros1-jobs.xsl"/>
 
   <xsl:output method="xml" indent="no" encoding="UTF-8" cdata-section-elements="fs:file"/>
   <xsl:mode name="m:emit-files" on-no-match="fail"/>
@@ -49,6 +54,7 @@
   <xsl:variable name="fp:cpp-xsl" as="xs:string" select="'m2t/ros1/ros1-cpp.xsl'"/>
   <xsl:variable name="fp:build-xsl" as="xs:string" select="'m2t/ros1/ros1-build.xsl'"/>
   <xsl:variable name="fp:launch-xsl" as="xs:string" select="'m2t/ros1/ros1-launch.xsl'"/>
+  <xsl:variable name="fp:jobs-xsl" as="xs:string" select="'m2t/ros1/ros1-jobs.xsl'"/>
 
   <xsl:template match="r:package" mode="m:emit-files" as="element(fs:files)">
     <xsl:variable name="pkg" as="xs:string" select="@name"/>
@@ -72,6 +78,12 @@
       <xsl:for-each select="r:set">
         <xsl:sequence select="fp:file(concat('launch/', $package/@deploy-name, '_', @launch, '.launch'), 'generated', $fp:launch-xsl,
                                       fp:ros1-set-launch($package, .))"/>
+      </xsl:for-each>
+      <xsl:for-each select="r:coordinator">
+        <xsl:sequence select="fp:file(concat('src/', @executable, '.cpp'), 'generated', $fp:jobs-xsl, fp:ros1-coordinator(.))"/>
+        <xsl:for-each select="fp:ros1-job-starts(.)">
+          <xsl:sequence select="fp:file('launch/' || fp:ros1-job-launch-name(.), 'generated', $fp:jobs-xsl, fp:ros1-job-launch(.))"/>
+        </xsl:for-each>
       </xsl:for-each>
       <xsl:for-each select="r:instance">
         <xsl:sequence select="fp:file(concat('config/', @name, '.yaml'), 'generated', $fp:launch-xsl, fp:params-yaml(., $fp:launch-xsl))"/>

@@ -25,6 +25,7 @@
   <xsl:function name="fp:ros1-deps" as="xs:string*">
     <xsl:param name="package" as="element(r:package)"/>
     <xsl:sequence select="sort(distinct-values(('roscpp',
+        if ($package/r:coordinator) then ('std_msgs', 'std_srvs') else (),
         ($package/r:node/r:port/r:message/@msg, $package/r:node/r:service/@srv, $package/r:node/r:service-client/@srv)[contains(., '/')] ! substring-before(., '/'))))"/>
   </xsl:function>
 
@@ -62,8 +63,15 @@
           concat('add_dependencies(${PROJECT_NAME}_', $n/@executable, ' ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})'),
           fp:library-depends($package, concat('${PROJECT_NAME}_', $n/@executable)),
           concat('target_link_libraries(${PROJECT_NAME}_', $n/@executable, ' ${catkin_LIBRARIES} ', string-join(fp:library-vars($package), ' '), ')')),
+        for $c in $package/r:coordinator return (
+          '',
+          concat('# the job coordinator of subsystem ', $c/@name),
+          concat('add_executable(${PROJECT_NAME}_', $c/@executable, ' src/', $c/@executable, '.cpp)'),
+          concat('set_target_properties(${PROJECT_NAME}_', $c/@executable, ' PROPERTIES OUTPUT_NAME ', $c/@executable, ')'),
+          concat('add_dependencies(${PROJECT_NAME}_', $c/@executable, ' ${catkin_EXPORTED_TARGETS})'),
+          concat('target_link_libraries(${PROJECT_NAME}_', $c/@executable, ' ${catkin_LIBRARIES})')),
         '',
-        concat('install(TARGETS ', string-join(sort($package/r:node/@executable) ! (concat('${PROJECT_NAME}_', .)), ' ')),
+        concat('install(TARGETS ', string-join(sort(($package/r:node/@executable, $package/r:coordinator/@executable)) ! (concat('${PROJECT_NAME}_', .)), ' ')),
         '  RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})',
         'install(DIRECTORY include/${PROJECT_NAME}/',
         '  DESTINATION ${CATKIN_PACKAGE_INCLUDE_DESTINATION})',

@@ -15,7 +15,12 @@
   publishes get<Datum>() of each output; each subscription callback calls
   set<Datum>() and, when the node is data-driven (period 0), step().
   tearDown() calls stop() and cleanup(). Calls are qualified with the
-  realizing class's C++ name.
+  realizing class's C++ name. Before configure(), setUp() reads each
+  configuration constant («Constant» input, seed 004) once: the latched
+  message, waited for up to 10 s (fp:ros1-read-constants). A node whose
+  values a job switch changes while it runs (ros1-jobs.xsl) has the
+  service ~reload_parameters (std_srvs/Empty), which reads the parameters
+  into the atomic code again.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -30,6 +35,8 @@
     <xsl:variable name="pkg" as="xs:string" select="$node/@namespace"/>
     <xsl:sequence select="'#include &lt;ros/ros.h&gt;',
         distinct-values(($node/r:port/r:message/@msg, $node/r:service/@srv, $node/r:service-client/@srv) ! (concat('#include &lt;', fp:ros1-type(., $pkg)[1], '&gt;'))),
+        if (fp:ros-switched($node)) then '#include &lt;std_srvs/Empty.h&gt;' else (),
+        if ($node/r:port[@direction eq 'in'][@constant = 'true']) then '#include &lt;ros/topic.h&gt;' else (),
         '#include &lt;string&gt;',
         concat('#include &lt;', $node/r:realizing-class/@header, '&gt;'), fp:conversions-include($node)"/>
   </xsl:function>
@@ -68,6 +75,10 @@
         $node/r:port[@direction eq 'in'] ! (concat('  void on_', @name, '(const ', fp:ros1-type(r:message/@msg, $package)[2], '::ConstPtr&amp; msg);')),
         $node/r:service ! (concat('  bool on_', @name, '(', fp:ros1-type(@srv, $package)[2], '::Request&amp; request, ',
                          fp:ros1-type(@srv, $package)[2], '::Response&amp; response);')),
+        if (fp:ros-switched($node)) then (
+          '  /// ~reload_parameters: the parameters read again into the atomic code (a job switch set them)',
+          '  bool on_reload_parameters(std_srvs::Empty::Request&amp; request, std_srvs::Empty::Response&amp; response);',
+          '  ros::ServiceServer srv_reload_parameters_;') else (),
         '',
         '  ros::NodeHandle nh_;',
         '  ros::NodeHandle private_nh_;',
@@ -130,6 +141,14 @@
         '  step();',
         '}',
         fp:ros1-callbacks($node),
+        if (fp:ros-switched($node)) then (
+          '',
+          concat('bool ', $class, '::on_reload_parameters(std_srvs::Empty::Request&amp; /*request*/, std_srvs::Empty::Response&amp; /*response*/)'),
+          '{',
+          fp:ros1-read-parameters($node),
+          '  ROS_INFO(&quot;%s: parameters reloaded&quot;, ros::this_node::getName().c_str());',
+          '  return true;',
+          '}') else (),
         '',
         concat('}  // namespace ', $package)))"/>
   </xsl:function>
@@ -142,16 +161,9 @@
     <xsl:variable name="package" as="xs:string" select="$node/@namespace"/>
     <xsl:variable name="realizing-class" as="xs:string" select="$node/r:realizing-class/@cpp-name"/>
     <xsl:sequence select="(
-        '  // parameters (R4), private: ~name',
-        for $parameter in $node/r:parameter return (
-          '  {',
-          concat('    ', $parameter/@param1, ' value;'),
-          concat('    private_nh_.param&lt;', $parameter/@param1, '&gt;(', fp:cpp-string(translate($parameter/@name, '.', '/')), ', value, ',
-               (if ($parameter/@param1 eq 'std::string') then concat('std::string(', $parameter/@cpp-default, ')')
-                else $parameter/@cpp-default), ');'),
-          fp:indent(4, fp:parameter-assign($parameter, $parameter/@param1, 'ROS_ERROR(')),
-          '  }'),
+        fp:ros1-read-parameters($node),
         '  private_nh_.param&lt;double&gt;(&quot;update_period&quot;, period_, period_);',
+        fp:ros1-read-constants($node),
         for $hook in $node/r:hook[@name = ('configure', 'start')][@call] return
           if (xs:boolean($hook/@returns-bool))
           then (concat('  if (!', $realizing-class, '::', $hook/@call, '()) {'),
@@ -167,6 +179,8 @@
         $node/r:service ! concat('  ', @member, ' = private_nh_.advertiseService(', fp:cpp-string(@name), ', &amp;',
              $class, '::on_', @name, ', this);'),
         fp:ros-publish-constants($node, $node/r:port[@direction eq 'out'] ! fp:ros1-type(r:message/@msg, $package)[2], '.publish'),
+        if (fp:ros-switched($node)) then concat('  srv_reload_parameters_ = private_nh_.advertiseService(&quot;reload_parameters&quot;, &amp;',
+                                                $class, '::on_reload_parameters, this);') else (),
         $node/r:service-client ! concat('  ', @member, ' = nh_.serviceClient&lt;', fp:ros1-type(@srv, $package)[2], '&gt;(',
              fp:cpp-string(@name), ');'),
         '  if (period_ &gt; 0.0) {',
@@ -174,6 +188,43 @@
         '  }',
         '  running_ = true;',
         '  return true;')"/>
+  </xsl:function>
+
+  <!-- the private parameters (R4) read into the realizing class's members -->
+  <xsl:function name="fp:ros1-read-parameters" as="xs:string+">
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:sequence select="(
+        '  // parameters (R4), private: ~name',
+        for $parameter in $node/r:parameter return (
+          '  {',
+          concat('    ', $parameter/@param1, ' value;'),
+          concat('    private_nh_.param&lt;', $parameter/@param1, '&gt;(', fp:cpp-string(translate($parameter/@name, '.', '/')), ', value, ',
+               (if ($parameter/@param1 eq 'std::string') then concat('std::string(', $parameter/@cpp-default, ')')
+                else $parameter/@cpp-default), ');'),
+          fp:indent(4, fp:parameter-assign($parameter, $parameter/@param1, 'ROS_ERROR(')),
+          '  }'))"/>
+  </xsl:function>
+
+  <!-- each configuration constant («Constant» input, seed 004) read once
+       before configure(), as Orocos reads it in configureHook: the latched
+       message of its writer, waited for up to 10 s; none fails setUp() -->
+  <xsl:function name="fp:ros1-read-constants" as="xs:string*">
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:variable name="rc" as="xs:string" select="$node/r:realizing-class/@cpp-name"/>
+    <xsl:for-each select="$node/r:port[@direction eq 'in'][@constant = 'true']">
+      <xsl:sequence select="
+          concat('  {  // configuration constant ', @name, ': read before configure()'),
+          concat('    const auto msg = ros::topic::waitForMessage&lt;', fp:ros1-type(r:message/@msg, $node/@namespace)[2], '&gt;(',
+                 fp:cpp-string(@topic), ', nh_, ros::Duration(10.0));'),
+          '    if (!msg) {',
+          concat('      ROS_ERROR(&quot;', $node/@class, ': no configuration constant on %s&quot;, nh_.resolveName(', fp:cpp-string(@topic), ').c_str());'),
+          '      return false;',
+          '    }',
+          if (xs:boolean(@accessor-declared))
+          then concat('    ', $rc, '::', @accessor, '(', fp:from-msg(r:message, '(*msg)'), ');')
+          else concat('    (void)msg;  // ', ../r:realizing-class/@name, ' declares no ', @accessor, '()'),
+          '  }'"/>
+    </xsl:for-each>
   </xsl:function>
 
   <!-- the subscription and service callbacks, each after an empty line -->

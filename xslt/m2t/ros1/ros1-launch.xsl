@@ -13,7 +13,10 @@
                                 component set, with machine=, its private
                                 parameters (<rosparam> of config/<instance>.yaml)
                                 and a <remap> per connected port, and an
-                                <include> of each component set on the host
+                                <include> of each component set on the host;
+                                not the instances of the jobs that only a switch
+                                starts (idle), but each job coordinator of the
+                                host (ros1-jobs.xsl)
   launch/<model>_<set>.launch   one per component set (seed 002): the
                                 <machine>s and <node>s of its members
   launch/<model>.launch         includes every host file
@@ -75,7 +78,8 @@
         '--&gt;',
         '&lt;launch&gt;',
         fp:ros1-machines($host),
-        for $i in fp:ros-children('fp:ros-on-host', $package, $host/@name)[not(@set)] return fp:ros1-node($package, $i),
+        for $i in fp:ros-children('fp:ros-on-host', $package, $host/@name)[not(@set)][not(@idle)] return fp:ros1-node($package, $i),
+        $package/r:coordinator[@host eq $host/@name] ! fp:ros1-coordinator-node($package, .),
         fp:ros-children('fp:ros-set-on-host', $package, $host/@name) ! ('', concat('  &lt;include file=&quot;$(find ', $package/@name, ')/launch/', $package/@deploy-name, '_', @launch, '.launch&quot;/&gt;')),
         '&lt;/launch&gt;'))"/>
   </xsl:function>
@@ -93,7 +97,7 @@
         '--&gt;',
         '&lt;launch&gt;',
         fp:ros1-machines(fp:ros-children('fp:ros-host', $package, distinct-values($members/@host))),
-        for $i in $members return fp:ros1-node($package, $i),
+        for $i in $members[not(@idle)] return fp:ros1-node($package, $i),
         '&lt;/launch&gt;'))"/>
   </xsl:function>
 

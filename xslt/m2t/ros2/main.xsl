@@ -10,7 +10,8 @@
              src/<Class>Impl.cpp (mode user) per node without a realizing class
              include/<pkg>/lifecycle/<Class>.hpp, src/lifecycle/<Class>.cpp
                                      per node with a managed instance
-             src/lifecycle_manager.cpp  when an instance is managed
+             src/lifecycle_manager.cpp  when a host has a lifecycle manager
+             src/<subsystem>_coordinator.cpp  per job coordinator (ros2-jobs.xsl)
              msg/<Type>.msg          per generated message
              CMakeLists.txt, package.xml
              launch/<model>.launch.xml, launch/<model>_<host>.launch.xml,
@@ -22,7 +23,8 @@
   Params:  model-dir-from-output (xslt/m2t/ros-common/ros-text.xsl).
   Errors:  none (the PSM is complete and valid).
   Modules: ../../common/sequence.xsl, ../ros-common/ros-text.xsl, ../common/user-class.xsl,
-           ../ros-common/ros-user.xsl, ros2-cpp.xsl, ros2-build.xsl, ros2-launch.xsl, ros2-lifecycle.xsl.
+           ../ros-common/ros-user.xsl, ros2-cpp.xsl, ros2-build.xsl, ros2-launch.xsl, ros2-lifecycle.xsl,
+           ../ros-common/ros-jobs.xsl, ros2-jobs.xsl.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -48,6 +50,8 @@
   <xsl:include href="ros2-build.xsl"/>
   <xsl:include href="ros2-launch.xsl"/>
   <xsl:include href="ros2-lifecycle.xsl"/>
+  <xsl:include href="../ros-common/ros-jobs.xsl"/>
+  <xsl:include href="ros2-jobs.xsl"/>
 
   <xsl:output method="xml" indent="no" encoding="UTF-8" cdata-section-elements="fs:file"/>
   <xsl:mode name="m:emit-files" on-no-match="fail"/>
@@ -56,6 +60,7 @@
   <xsl:variable name="fp:build-xsl" as="xs:string" select="'m2t/ros2/ros2-build.xsl'"/>
   <xsl:variable name="fp:launch-xsl" as="xs:string" select="'m2t/ros2/ros2-launch.xsl'"/>
   <xsl:variable name="fp:lifecycle-xsl" as="xs:string" select="'m2t/ros2/ros2-lifecycle.xsl'"/>
+  <xsl:variable name="fp:jobs-xsl" as="xs:string" select="'m2t/ros2/ros2-jobs.xsl'"/>
 
   <xsl:template match="r:package" mode="m:emit-files" as="element(fs:files)">
     <xsl:variable name="pkg" as="xs:string" select="@name"/>
@@ -73,7 +78,10 @@
                                       fp:ros2-lifecycle-header(.))"/>
         <xsl:sequence select="fp:file(concat('src/lifecycle/', @class, '.cpp'), 'generated', $fp:lifecycle-xsl, fp:ros2-lifecycle-source(.))"/>
       </xsl:for-each>
-      <xsl:if test="r:node[@lifecycle-type-name]">
+      <xsl:for-each select="r:coordinator">
+        <xsl:sequence select="fp:file(concat('src/', @executable, '.cpp'), 'generated', $fp:jobs-xsl, fp:ros2-coordinator(.))"/>
+      </xsl:for-each>
+      <xsl:if test="r:host[@lifecycle-manager]">
         <xsl:sequence select="fp:file('src/lifecycle_manager.cpp', 'generated', $fp:lifecycle-xsl, fp:ros2-lifecycle-manager(.))"/>
       </xsl:if>
       <xsl:sequence select="fp:ros-type-files(.)"/>

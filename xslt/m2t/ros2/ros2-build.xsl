@@ -28,6 +28,7 @@
     <xsl:param name="package" as="element(r:package)"/>
     <xsl:sequence select="sort(distinct-values(('rclcpp', 'rclcpp_components',
         if ($package/r:node[@lifecycle-type-name]) then ('rclcpp_lifecycle', 'lifecycle_msgs') else (),
+        if ($package/r:coordinator) then 'std_msgs' else (),
         ($package/r:node/r:port/r:message/@msg, $package/r:node/r:service/@srv, $package/r:node/r:service-client/@srv)[contains(., '/')] ! substring-before(., '/'))))"/>
   </xsl:function>
 
@@ -70,7 +71,12 @@
           concat('# node of component ', $n/@name),
           concat('add_executable(', $n/@executable, ' src/', $n/@executable, '.cpp)'),
           concat('target_link_libraries(', $n/@executable, ' ', $lib, ')')),
-        if ($package/r:node[@lifecycle-type-name]) then (
+        for $c in $package/r:coordinator return (
+          '',
+          concat('# the job coordinator of subsystem ', $c/@name),
+          concat('add_executable(', $c/@executable, ' src/', $c/@executable, '.cpp)'),
+          concat('ament_target_dependencies(', $c/@executable, ' rclcpp lifecycle_msgs std_msgs)')),
+        if ($package/r:host[@lifecycle-manager]) then (
           '',
           '# configures, then activates, the managed nodes in the deployment sequence',
           'add_executable(lifecycle_manager src/lifecycle_manager.cpp)',
@@ -81,7 +87,8 @@
         '  ARCHIVE DESTINATION lib',
         '  LIBRARY DESTINATION lib',
         '  RUNTIME DESTINATION bin)',
-        concat('install(TARGETS ', string-join(($package/r:node/@executable, $package/r:node[@lifecycle-type-name][1] ! 'lifecycle_manager'), ' ')),
+        concat('install(TARGETS ', string-join(($package/r:node/@executable, $package/r:coordinator/@executable,
+                                                   $package/r:host[@lifecycle-manager][1] ! 'lifecycle_manager'), ' ')),
         '  DESTINATION lib/${PROJECT_NAME})',
         '# headers under include/${PROJECT_NAME}/: in a merged install, two packages'' data types',
         '# of one name (include/${PROJECT_NAME}/Type.hpp) stay apart',

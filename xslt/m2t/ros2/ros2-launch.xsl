@@ -19,7 +19,8 @@
         lifecycle class); a <node> per instance in no process; an <include>
         per component set on the host; a lifecycle_manager <node> when the
         host has managed instances, their names in start order (node_names,
-        after the pushed namespace)
+        after the pushed namespace; not the jobs' instances); the job
+        coordinator of each subsystem on the host (ros2-jobs.xsl)
   launch/<model>_<set>.launch.xml  one per component set (seed 002): the
         containers of the processes wholly in it, and its members in other
         processes loaded into theirs (<load_composable_node target>)
@@ -53,14 +54,19 @@
                              if (xs:boolean(@from-root)) then $fp:ros2-root else '', @to, '&quot;/&gt;'))))"/>
   </xsl:function>
 
-  <!-- instance $i as a node of its own -->
+  <!-- instance $i as a node of its own; a managed one (a lifecycle
+       component) in a container of its own, <instance>_container -->
   <xsl:function name="fp:ros2-node" as="xs:string+">
     <xsl:param name="package" as="element(r:package)"/>
     <xsl:param name="i" as="element(r:instance)"/>
-    <xsl:sequence select="
+    <xsl:sequence select="if ($i/@managed) then (
+        concat('  &lt;node_container pkg=&quot;rclcpp_components&quot; exec=&quot;component_container&quot; name=&quot;', $i/@name,
+               '_container&quot; namespace=&quot;/&quot; output=&quot;screen&quot;&gt;'),
+        fp:ros2-composable($package, $i, 4),
+        '  &lt;/node_container&gt;') else (
         concat('  &lt;node pkg=&quot;', $package/@name, '&quot; exec=&quot;', $i/@executable, '&quot; ', fp:node-name-attributes($i, 'namespace'), ' output=&quot;screen&quot;&gt;'),
         fp:ros2-node-settings($package, $i, 4),
-        '  &lt;/node&gt;'"/>
+        '  &lt;/node&gt;')"/>
   </xsl:function>
 
   <!-- instance $i as a composable node in a container, indented by $n -->
@@ -124,7 +130,8 @@
         for $i in $here[not(@process)][not(@set)] return fp:ros2-node($package, $i),
         fp:ros-children('fp:ros-set-on-host', $package, $host/@name) ! concat('  &lt;include file=&quot;$(find-pkg-share ', $package/@name, ')/launch/',
                                                        $package/@deploy-name, '_', @launch, '.launch.xml&quot;/&gt;'),
-        $host/@lifecycle-manager ! fp:ros2-lifecycle-manager-node($package, $host, $here[@managed]),
+        $host/@lifecycle-manager ! fp:ros2-lifecycle-manager-node($package, $host, $here[@managed][not(@job)]),
+        $package/r:coordinator[@host eq $host/@name] ! fp:ros2-coordinator-node($package, .),
         '&lt;/launch&gt;'))"/>
   </xsl:function>
 

@@ -29,7 +29,10 @@
                   context is gone and a transition would log errors), then
                   stop() / cleanup() if that transition could not run
   A hook that returns false fails its transition (the node stays where it
-  was). step() runs only while active (running_), so nothing is published
+  was). on_configure first reads each configuration constant («Constant»
+  input) once (fp:ros2-read-constants). A node whose values a job switch
+  sets (ros2-jobs.xsl) writes each parameter set into the atomic code at
+  once (a post-set parameters callback). step() runs only while active (running_), so nothing is published
   and update() is not called otherwise.
 
   src/lifecycle_manager.cpp (when an instance is managed): a node that takes
@@ -87,6 +90,7 @@
         'private:',
         fp:ros2-members($node, 'rclcpp_lifecycle::LifecyclePublisher'),
         '  bool configured_;',
+        if (fp:ros-switched($node)) then '  rclcpp::node_interfaces::PostSetParametersCallbackHandle::SharedPtr post_set_parameters_;' else (),
         '};',
         '',
         '}  // namespace lifecycle',
@@ -122,6 +126,7 @@
                fp:double-literal($node/@period), '), running_(false), configured_(false)'),
         '{',
         fp:ros2-parameters($node),
+        if (fp:ros-switched($node)) then fp:ros2-post-set-parameters($node) else (),
         '}',
         '',
         concat($class, '::~', $class, '()'),
@@ -135,7 +140,7 @@
         '  // and so here, where that transition could not run (the context already shut down)',
         fp:ros2-wind-down($stop, $cleanup),
         '}',
-        fp:ros2-transition($class, 'configure', (fp:ros2-hook-calls($node, 'configure', true()), fp:ros2-entities($node),
+        fp:ros2-transition($class, 'configure', (fp:ros2-read-constants($node), fp:ros2-hook-calls($node, 'configure', true()), fp:ros2-entities($node),
                                                  '  configured_ = true;')),
         fp:ros2-transition($class, 'activate', ($publishers ! concat('  ', @member, '-&gt;on_activate();'),
                                                 fp:ros2-hook-calls($node, 'start', true()),
@@ -159,6 +164,56 @@
         concat('}  // namespace ', $package),
         '',
         concat('RCLCPP_COMPONENTS_REGISTER_NODE(', $node/@lifecycle-type-name, ')')))"/>
+  </xsl:function>
+
+  <!-- the parameter callback of a node whose values a job switch sets: each
+       new value goes into the atomic code's member at once -->
+  <xsl:function name="fp:ros2-post-set-parameters" as="xs:string+">
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:sequence select="
+        '  // values a job switch sets (docs/jobs.md): into the atomic code at once, active or not',
+        '  post_set_parameters_ = add_post_set_parameters_callback([this](const std::vector&lt;rclcpp::Parameter&gt;&amp; parameters) {',
+        '    for (const auto&amp; parameter : parameters) {',
+        for $k in 1 to count($node/r:parameter) return let $p := $node/r:parameter[$k] return (
+          concat('      ', if ($k eq 1) then '' else '} else ', 'if (parameter.get_name() == ', fp:cpp-string($p/@name), ') {'),
+          concat('        const auto value = parameter.get_value&lt;', $p/@param2, '&gt;();'),
+          fp:indent(8, fp:parameter-assign($p, $p/@param2, 'RCLCPP_ERROR(get_logger(), '))),
+        if ($node/r:parameter) then '      }' else (),
+        '    }',
+        '  });'"/>
+  </xsl:function>
+
+  <!-- on_configure: each configuration constant («Constant» input, seed
+       004) read once before configure(), as Orocos reads it in
+       configureHook: the latched (transient local) sample its writer
+       published when it was activated, waited for up to 10 s on a
+       subscription of its own outside the executor; none fails the
+       transition -->
+  <xsl:function name="fp:ros2-read-constants" as="xs:string*">
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:variable name="rc" as="xs:string" select="$node/r:realizing-class/@cpp-name"/>
+    <xsl:for-each select="$node/r:port[@direction eq 'in'][@constant = 'true']">
+      <xsl:variable name="type" as="xs:string" select="fp:ros2-type(r:message/@msg, $node/@namespace, 'msg')[2]"/>
+      <xsl:sequence select="
+          concat('  {  // configuration constant ', @name, ': read before configure()'),
+          '    rclcpp::SubscriptionOptions options;',
+          '    options.callback_group = create_callback_group(rclcpp::CallbackGroupType::MutuallyExclusive, false);',
+          concat('    auto constant = create_subscription&lt;', $type, '&gt;(', fp:cpp-string(@topic), ', ', fp:ros2-qos(r:qos), ','),
+          concat('      [](', $type, '::ConstSharedPtr) {}, options);'),
+          '    rclcpp::WaitSet wait_set;',
+          '    wait_set.add_subscription(constant);',
+          concat('    auto msg = std::make_shared&lt;', $type, '&gt;();'),
+          '    rclcpp::MessageInfo info;',
+          '    if (wait_set.wait(std::chrono::seconds(10)).kind() != rclcpp::WaitResultKind::Ready || !constant-&gt;take(*msg, info)) {',
+          '      RCLCPP_ERROR(get_logger(), &quot;no configuration constant on %s&quot;, constant-&gt;get_topic_name());',
+          '      return CallbackReturn::FAILURE;',
+          '    }',
+          '    wait_set.remove_subscription(constant);',
+          if (xs:boolean(@accessor-declared))
+          then concat('    ', $rc, '::', @accessor, '(', fp:from-msg(r:message, '(*msg)'), ');')
+          else concat('    (void)msg;  // ', ../r:realizing-class/@name, ' declares no ', @accessor, '()'),
+          '  }'"/>
+    </xsl:for-each>
   </xsl:function>
 
   <!-- a transition callback of class $class running $body, then succeeding -->
