@@ -8,6 +8,7 @@
            indented as f:indent (common/indent.xsl) indents it.
   Data:    xslt/m2m/openrtm/types.xml (primitive kind -> TimedXxx, C++,
            configuration type).
+  Uses:    xslt/m2m/openrtm/types.xsl (port types, r:data-types; RTM021, RTM022).
   Uses:    xslt/m2m/common/psm-kit.xsl (wrapper, hooks, attributes, defaults).
   Params:  package-name (the CMake project; '' = lower snake case of the model name).
 
@@ -18,9 +19,12 @@
       has a realizing class (the RTC derives from it and its actions call the
       class's lifecycle operations), else "base" (a generated <class>Base and
       a user class <class>, written once).
-  R2  one data port per bound data port of a primitive datum: out ->
-      RTC::OutPort<RTC::TimedXxx>, in -> RTC::InPort<RTC::TimedXxx>
-      (types.xml); member m_<name>Out / m_<name>In, datum m_<name>.
+  R2  one data port per bound data port: out -> RTC::OutPort<T>, in ->
+      RTC::InPort<T>, T the TimedXxx of BasicDataType.idl for a single
+      primitive (types.xml), RTC::TimedXxxSeq for an array of one, else a
+      Timed type of the package's generated IDL (types.xsl); member
+      m_<name>Out / m_<name>In, datum m_<name>. The package's data types
+      get C++ headers (include/<Name>.hpp) and, those the ports carry, IDL.
   R3  configuration: the Configurable attributes of the realizing class (base
       kind: of the component), without any the convention's choice (public,
       protected, not static, not read-only), of a primitive type: one
@@ -50,9 +54,10 @@
     RTM003  the input has no pim:binding (run xslt/m2m/bind.xsl first)
     RTM004  two component types map to the same C++ class name
     RTM005  nothing to generate: the model has no component instance
+    RTM021, RTM022  (types.xsl) a data type that cannot be declared; a bad default of its attribute
   Warnings (f:warn):
-    RTM001  a data port whose datum OpenRTM's Timed types cannot carry (a
-            data type, enumeration, array or 64-bit integer): no port
+    RTM001  a data port whose datum has no OpenRTM data type (an
+            enumeration without a literal): no port
     RTM006  no instance is deployed on OpenRTM: all are generated anyway
     RTM007  an instance deployed on another middleware is left out
     RTM008  a value a part sets on an attribute that is no parameter
@@ -90,6 +95,7 @@
   <xsl:include href="../../common/profile.xsl"/>
   <xsl:include href="../../common/sequence.xsl"/>
   <xsl:include href="../common/psm-kit.xsl"/>
+  <xsl:include href="types.xsl"/>
 
   <xsl:param name="package-name" as="xs:string" select="''"/>
 
@@ -143,6 +149,7 @@
     <r:system xmi-id="{@id}" model-name="{@name}" deploy-name="{f:snake-case(@name)}" package="{$package}" source="{@source}">
       <xsl:variable name="children" as="element()*">
         <xsl:sequence select="$binding/pim:library ! fp:psm-library(., $package)"/>
+        <xsl:sequence select="fp:rtm-data-types($components, $rtcs/r:component/r:data-port, $package, root($binding))"/>
         <!-- one IDL interface per interface a service port carries -->
         <xsl:for-each-group select="$rtcs/r:component/r:service-port" group-by="string(@interface)">
           <r:interface name="{current-grouping-key()}" module="{$package}">
@@ -190,20 +197,22 @@
       <xsl:sequence select="fp:psm-realizing-class($bc)"/>
       <xsl:sequence select="fp:psm-hooks($bc)"/>
       <xsl:for-each select="$bc/pim:data-port">
-        <xsl:variable name="type" as="element(ty:type)?"
-            select="if (empty(fp:type-def(.)) and empty(fp:array(.))) then key('fp:type', string(@primitive), $fp:types)[@timed] else ()"/>
+        <xsl:variable name="type" as="attribute()*" select="fp:rtm-port-type(., $package)"/>
         <xsl:choose>
           <xsl:when test="empty($type)">
             <xsl:sequence select="f:warn('RTM001', string(@port), 'port ''' || @port-name || ''' of component ''' || $bc/@name
-                || ''' carries ' || fp:type-label(.) || ', which no TimedXxx type of OpenRTM''s BasicDataType.idl holds'
-                || ' (a data type, enumeration, array or 64-bit integer needs an IDL of its own, not generated yet): the'
-                || ' RT-Component has no such port')"/>
+                || ''' carries ' || fp:type-label(.) || ', which has no OpenRTM data type (an enumeration needs a literal):'
+                || ' the RT-Component has no such port')"/>
           </xsl:when>
           <xsl:otherwise>
-            <r:data-port xmi-id="{@port}" name="{@name}" direction="{@direction}" timed="{$type/@timed}"
-                         cpp="{$type/@cpp}" primitive="{$type/@primitive}" interface="{@interface-name}" datum="{@datum-name}"
-                         member="m_{@name}" port-member="m_{@name}{if (@direction eq 'out') then 'Out' else 'In'}"
-                         accessor="{fp:accessor(.)}" accessor-declared="{fp:accessor-declared(.)}">
+            <r:data-port xmi-id="{@port}" name="{@name}" direction="{@direction}">
+              <xsl:sequence select="$type"/>
+              <xsl:attribute name="interface" select="@interface-name"/>
+              <xsl:attribute name="datum" select="@datum-name"/>
+              <xsl:attribute name="member" select="'m_' || @name"/>
+              <xsl:attribute name="port-member" select="'m_' || @name || (if (@direction eq 'out') then 'Out' else 'In')"/>
+              <xsl:attribute name="accessor" select="fp:accessor(.)"/>
+              <xsl:attribute name="accessor-declared" select="fp:accessor-declared(.)"/>
               <xsl:sequence select="fp:psm-doc(key('fp:id', @port, root(.)))"/>
             </r:data-port>
           </xsl:otherwise>
@@ -319,9 +328,9 @@
             || 'instances the OpenRTM package does not hold (''' || string-join(distinct-values($away/@instance), ''', ''')
             || '''): OpenRTM reaches no other middleware, the connection is left out')"/>
       </xsl:when>
-      <xsl:when test="empty($datum) or exists(fp:type-def($datum)) or exists(fp:array($datum)) or empty(key('fp:type', string($datum/@primitive), $fp:types)/@timed)">
+      <xsl:when test="empty($datum) or empty(fp:rtm-type($datum, ''))">
         <xsl:sequence select="f:warn('RTM001', string($connection/@xmi-id), 'connection ''' || $connection/@name || ''' carries '
-            || (if ($datum) then fp:type-label($datum) else 'no datum') || ', which no TimedXxx type holds: its ports are not generated,'
+            || (if ($datum) then fp:type-label($datum) else 'no datum') || ', which has no OpenRTM data type: its ports are not generated,'
             || ' the connection is left out')"/>
       </xsl:when>
       <xsl:otherwise>

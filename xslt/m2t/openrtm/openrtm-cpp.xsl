@@ -44,6 +44,7 @@
       '',
       '// the IDL types first: OpenRTM''s port templates find their CORBA::Any operators only if declared before',
       '#include &lt;rtm/idl/BasicDataTypeSkel.h&gt;',
+      if ($c/r:data-port[@convert ne 'primitive']) then '#include &lt;' || $pkg || '/' || $c/../r:data-types/@idl || '.h&gt;' else (),
       distinct-values($c/r:service-port/@interface) ! ('#include &quot;' || . || '.hh&quot;'),
       '#include &lt;rtm/DataFlowComponentBase.h&gt;',
       '#include &lt;rtm/Manager.h&gt;',
@@ -183,9 +184,14 @@
   <xsl:function name="fp:rtm-idl-cmake" as="xs:string*">
     <xsl:param name="system" as="element(r:system)"/>
     <xsl:variable name="pkg" as="xs:string" select="$system/@package"/>
-    <xsl:if test="$system/r:interface">
+    <xsl:variable name="types" as="xs:string*" select="$system/r:data-types[(r:enum | r:struct)[xs:boolean(@idl)]]/@idl"/>
+    <xsl:if test="$system/r:interface or exists($types)">
       <xsl:sequence select="(
-        '# the service ports'' interfaces: omniidl (Debian omniidl) writes their C++ stubs and skeletons',
+        if (empty($types)) then '# the service ports'' interfaces: omniidl (Debian omniidl) writes their C++ stubs and skeletons'
+        else ('# the ' || (if ($system/r:interface) then 'service ports'' interfaces and the ' else '')
+              || 'data ports'' types: omniidl (Debian omniidl) writes their C++',
+              '# stubs and skeletons; the types also their CORBA::Any operators and type codes (-Wba), which OpenRTM''s',
+              '# data ports use, with OpenRTM''s IDL folder (BasicDataType.idl) on the include path'),
         'find_program(OMNIIDL omniidl)',
         'if(NOT OMNIIDL)',
         '  message(FATAL_ERROR &quot;omniidl not found (Debian package omniidl)&quot;)',
@@ -196,7 +202,12 @@
           'add_custom_command(OUTPUT ${IDL_OUT}/' || @name || '.hh ${IDL_OUT}/' || @name || 'SK.cc',
           '  COMMAND ${OMNIIDL} -bcxx -Wbh=.hh -Wbs=SK.cc -C ${IDL_OUT} ${CMAKE_CURRENT_SOURCE_DIR}/idl/' || @name || '.idl',
           '  DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/idl/' || @name || '.idl)'),
-        'add_library(' || $pkg || '_idl STATIC' || string-join($system/r:interface ! (' ${IDL_OUT}/' || @name || 'SK.cc')) || ')',
+        $types ! (
+          'add_custom_command(OUTPUT ${IDL_OUT}/' || . || '.hh ${IDL_OUT}/' || . || 'SK.cc ${IDL_OUT}/' || . || 'DynSK.cc',
+          '  COMMAND ${OMNIIDL} -bcxx -Wba -Wbuse_quotes -Wbh=.hh -Wbs=SK.cc -Wbd=DynSK.cc -I${OPENRTM_INCLUDE_DIR}/rtm/idl -C ${IDL_OUT} ${CMAKE_CURRENT_SOURCE_DIR}/idl/' || . || '.idl',
+          '  DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/idl/' || . || '.idl)'),
+        'add_library(' || $pkg || '_idl STATIC' || string-join(($types ! (' ${IDL_OUT}/' || . || 'SK.cc ${IDL_OUT}/' || . || 'DynSK.cc'),
+                                                              $system/r:interface ! (' ${IDL_OUT}/' || @name || 'SK.cc'))) || ')',
         'set_target_properties(' || $pkg || '_idl PROPERTIES POSITION_INDEPENDENT_CODE ON)',
         'include_directories(${IDL_OUT})',
         '')"/>
@@ -301,13 +312,18 @@
         $c/r:data-port[@direction eq 'in'] ! (
           '  if (' || @port-member || '.isNew()) {',
           '    ' || @port-member || '.read();',
-          if (xs:boolean(@accessor-declared)) then '    ' || $rc || '::' || @accessor || '(' || fp:rtm-from-datum(.) || ');'
-          else '    // ' || $rc-name || ' declares no ' || @accessor || '()',
+          if (not(xs:boolean(@accessor-declared))) then ()
+          else if (@convert eq 'primitive') then '    ' || $rc || '::' || @accessor || '(' || fp:rtm-from-datum(.) || ');'
+          else ('    ' || @cpp || ' value;', '    fromIdl' || (if (@convert eq 'sequence') then 'Seq' else '') || '(' || @member || '.data, value);',
+                '    ' || $rc || '::' || @accessor || '(value);'),
+          if (xs:boolean(@accessor-declared)) then () else '    // ' || $rc-name || ' declares no ' || @accessor || '()',
           '  }'),
         if (empty($hook/@call)) then '  // ' || $rc-name || ' declares no update()' else '  ' || $rc || '::' || $hook/@call || '();',
         $c/r:data-port[@direction eq 'out'] ! (
           if (xs:boolean(@accessor-declared)) then (
-            '  ' || @member || '.data = ' || $rc || '::' || @accessor || '()' || (if (@primitive eq 'string') then '.c_str()' else '') || ';',
+            if (@convert eq 'primitive')
+            then '  ' || @member || '.data = ' || $rc || '::' || @accessor || '()' || (if (@primitive eq 'string') then '.c_str()' else '') || ';'
+            else '  toIdl' || (if (@convert eq 'sequence') then 'Seq' else '') || '(' || $rc || '::' || @accessor || '(), ' || @member || '.data);',
             '  setTimestamp(' || @member || ');',
             '  ' || @port-member || '.write();')
           else '  // ' || $rc-name || ' declares no ' || @accessor || '(): ' || @name || ' is not written'),
@@ -392,7 +408,7 @@
         'add_library(' || @class || ' MODULE src/' || @generated-class || '.cpp'
           || (if (@kind eq 'base') then ' src/' || @class || '.cpp' else '') || ')',
         'set_target_properties(' || @class || ' PROPERTIES PREFIX &quot;&quot;)',
-        'target_link_libraries(' || @class || (if ($system/r:interface) then ' ' || $pkg || '_idl' else '') || ' ${OPENRTM_LIBRARIES}'
+        'target_link_libraries(' || @class || (if ($system/r:interface or $system/r:data-types[(r:enum | r:struct)[xs:boolean(@idl)]]) then ' ' || $pkg || '_idl' else '') || ' ${OPENRTM_LIBRARIES}'
           || string-join($system/r:library ! (' ' || @target)) || ')',
         'install(TARGETS ' || @class || ' LIBRARY DESTINATION lib/' || $pkg || ')'),
       'install(DIRECTORY conf deploy rtc DESTINATION share/' || $pkg || ')'))"/>
