@@ -195,17 +195,19 @@
   <xsl:function name="fp:rtm-cpp-default" as="xs:string">
     <xsl:param name="typed" as="element()"/>
     <xsl:param name="type" as="element(ty:type)"/>
-    <xsl:variable name="id" as="xs:string" select="string($typed/@id)"/>
     <xsl:variable name="default" as="xs:string?" select="$typed/@default[normalize-space(.)]"/>
     <xsl:variable name="element" as="element(ty:type)" select="($type/ty:type, $type)[1]"/>
+    <!-- the items of the default (one for a single value: fp:default-items refuses a list for it) -->
+    <xsl:variable name="items" as="xs:string*"
+        select="if (empty($default) or $element/@kind eq 'struct') then ()
+                else fp:default-items($default, $typed, string($typed/@id), 'RTM022') ! fp:rtm-cpp-item(., $element, $typed)"/>
     <xsl:sequence select="
       if (empty($default)) then string($type/@sample)
       else if ($element/@kind eq 'struct')
-      then f:fail('RTM022', $id, 'default ''' || $default || ''' of data type ''' || $typed/@type-name
+      then f:fail('RTM022', string($typed/@id), 'default ''' || $default || ''' of data type ''' || $typed/@type-name
                   || ''': the data type''s attributes give its value')
-      else if ($type/@kind eq 'sequence')
-      then $type/@cpp || '{' || string-join(fp:default-items($default, $typed, $id, 'RTM022') ! fp:rtm-cpp-item(., $element, $typed), ', ') || '}'
-      else fp:rtm-cpp-item($default, $type, $typed)"/>
+      else if ($type/@kind eq 'sequence') then $type/@cpp || '{' || string-join($items, ', ') || '}'
+      else $items"/>
   </xsl:function>
 
   <!-- the C++ literal of one value: a primitive or an enumeration literal -->

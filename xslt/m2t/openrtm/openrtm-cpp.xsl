@@ -347,36 +347,26 @@
       '}')"/>
   </xsl:function>
 
-  <!-- the user class of a component without realizing class: written once -->
+  <!-- the user class of a component without realizing class: written once,
+       in the shared frames (m2t/common/user-class.xsl) with OpenRTM's .h
+       headers and the module entry <Class>Init after the namespace -->
   <xsl:function name="fp:rtm-user-header" as="xs:string">
     <xsl:param name="c" as="element(r:component)"/>
-    <xsl:variable name="pkg" as="xs:string" select="$c/@category"/>
-    <xsl:sequence select="fp:lines((
-      fp:banner('// ', $fp:cpp-xsl, fp:what($c), true()),
-      '#ifndef ' || fp:guard($pkg, $c/@class), '#define ' || fp:guard($pkg, $c/@class), '',
-      '#include &lt;' || $pkg || '/' || $c/@generated-class || '.h&gt;', '',
-      'namespace ' || $pkg || ' {', '',
-      'class ' || $c/@class || ' : public ' || $c/@generated-class, '{', 'public:',
+    <xsl:sequence select="fp:user-class-header($fp:cpp-xsl, $c, $c/@category, $c/@class, $c/@generated-class, (
+      'public:',
       '  explicit ' || $c/@class || '(RTC::Manager* manager) : ' || $c/@generated-class || '(manager) {}',
       '  RTC::ReturnCode_t onInitialize() override;',
-      $c/r:hook[@name ne 'configure'] ! ('  ' || fp:rtm-action-signature(@name) || ' override;'),
-      '};', '', '}  // namespace ' || $pkg, '', fp:rtm-init-decl($c), '',
-      '#endif  // ' || fp:guard($pkg, $c/@class)))"/>
+      $c/r:hook[@name ne 'configure'] ! ('  ' || fp:rtm-action-signature(@name) || ' override;')), '.h', fp:rtm-init-decl($c))"/>
   </xsl:function>
 
   <xsl:function name="fp:rtm-user-source" as="xs:string">
     <xsl:param name="c" as="element(r:component)"/>
-    <xsl:variable name="pkg" as="xs:string" select="$c/@category"/>
-    <xsl:sequence select="fp:lines((
-      fp:banner('// ', $fp:cpp-xsl, fp:what($c), true()),
-      '#include &lt;' || $pkg || '/' || $c/@class || '.h&gt;', '',
-      'namespace ' || $pkg || ' {', '',
+    <xsl:sequence select="fp:user-class-source($fp:cpp-xsl, $c, $c/@category, $c/@class, (
       fp:rtm-spec($c), '',
-      'RTC::ReturnCode_t ' || $c/@class || '::onInitialize()', '{',
-      '  RTC::ReturnCode_t ret = ' || $c/@generated-class || '::onInitialize();', '  // your initialisation', '  return ret;', '}',
-      $c/r:hook[@name ne 'configure'] ! ('', replace(fp:rtm-action-signature(@name), '^(RTC::ReturnCode_t )', '$1' || $c/@class || '::'),
-        '{', '  return RTC::RTC_OK;', '}'),
-      '', '}  // namespace ' || $pkg, '', fp:rtm-init($c)))"/>
+      fp:definition('RTC::ReturnCode_t ' || $c/@class || '::onInitialize()',
+        ('  RTC::ReturnCode_t ret = ' || $c/@generated-class || '::onInitialize();', '  // your initialisation', '  return ret;')),
+      $c/r:hook[@name ne 'configure'] ! ('', fp:definition(replace(fp:rtm-action-signature(@name), '^(RTC::ReturnCode_t )', '$1' || $c/@class || '::'),
+        '  return RTC::RTC_OK;'))), '.h', fp:rtm-init($c))"/>
   </xsl:function>
 
   <!-- CMakeLists.txt: OpenRTM-aist found by its CMake package, one module per component -->
