@@ -154,6 +154,38 @@ def test_a_port_no_openrtm_type_carries_is_named(capsys: pytest.CaptureFixture[s
     assert "ctrl1.torques?port=arm1.torques&" in conf and "jointState" not in conf
 
 
+def test_a_data_type_default_that_does_not_fit_is_located(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    from robomda.cli import main
+    text = (ROOT / "fixtures" / "cases" / "quadarm" / "model.xmi").read_text()
+    bad = text.replace('<defaultValue xmi:type="uml:LiteralReal" xmi:id="_qa034v" value="300.0"/>',
+                       '<defaultValue xmi:type="uml:OpaqueExpression" xmi:id="_qa034v"><body>{1.0, 2.0}</body></defaultValue>')
+    assert bad != text
+    (tmp_path / "model.xmi").write_text(bad)
+    shutil.copytree(ROOT / "fixtures" / "cases" / "quadarm" / "atomic", tmp_path / "atomic")
+    assert main(["generate", str(tmp_path / "model.xmi"), "-o", str(tmp_path / "out"), "--target", "openrtm"]) == 1
+    assert "model.xmi:53:7: error: [RTM022] default '{1.0, 2.0}' is a list, for a single value (uml:Property 'stiffness', _qa033a)" \
+        in capsys.readouterr().err
+    assert not (tmp_path / "out").exists()
+
+
+def test_a_data_type_openrtm_cannot_declare_is_located(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    from robomda.cli import main
+    # quadarm with JointState's attribute mode of an enumeration without literals
+    text = (ROOT / "fixtures" / "cases" / "quadarm" / "model.xmi").read_text()
+    text = text.replace('<packagedElement xmi:type="uml:DataType" xmi:id="_qa002t"',
+                        '<packagedElement xmi:type="uml:Enumeration" xmi:id="_rtmE" name="Empty"/>\n'
+                        '    <packagedElement xmi:type="uml:DataType" xmi:id="_qa002t"', 1)
+    head, tail = text.split('xmi:id="_qa200a" name="mode" visibility="public">', 1)
+    text = head + 'xmi:id="_qa200a" name="mode" visibility="public">' + tail.replace(
+        '<type xmi:type="uml:Enumeration" xmi:idref="_qa001t"/>', '<type xmi:type="uml:Enumeration" xmi:idref="_rtmE"/>', 1)
+    (tmp_path / "model.xmi").write_text(text)
+    shutil.copytree(ROOT / "fixtures" / "cases" / "quadarm" / "atomic", tmp_path / "atomic")
+    assert main(["generate", str(tmp_path / "model.xmi"), "-o", str(tmp_path / "out"), "--target", "openrtm"]) == 1
+    err = capsys.readouterr().err
+    assert "error: [RTM021] attribute 'mode' of data type 'JointState' has type 'Empty'" in err and "INTERNAL" not in err
+    assert not (tmp_path / "out").exists()
+
+
 def test_every_rts_profile_reads_with_rtsprofile() -> None:
     """rtshell's rtsprofile library (what rtstart / rtresurrect read a system with) loads every
     fixture's RtsProfile: its components, connectors and the StartUp / Activation conditions."""
@@ -335,3 +367,16 @@ def test_fixture_runs_on_openrtm(case: Path, tmp_path: Path) -> None:
             if process is not None:
                 _stop(process)
         shutil.rmtree(out / "build", ignore_errors=True)
+
+
+@pytest.mark.openrtm_toolchain
+def test_user_classes_build_on_openrtm(tmp_path: Path) -> None:
+    """Components without a realizing class (fixtures/ros/usercode): the generated bases and the
+    user's classes, as first written, build into modules that export <Class>Init."""
+    if not (OPENRTM / "bin" / "rtcd2").exists():
+        pytest.skip(f"no OpenRTM-aist in {OPENRTM} (toolchains/openrtm/build.sh builds it)")
+    out = tmp_path / "usercode"
+    generate(ROOT / "fixtures" / "ros" / "usercode" / "model.xmi", out, "openrtm", write=True)
+    built = _bash(f"rtm_build_pkg {out} && nm -D {out}/build/Arm.so {out}/build/Planner.so", tmp_path)
+    assert built.returncode == 0, built.stdout[-3000:] + built.stderr[-3000:]
+    assert " T ArmInit" in built.stdout and " T PlannerInit" in built.stdout

@@ -116,7 +116,7 @@
     <xsl:variable name="typed" as="element()*"
         select="$components ! (pim:data-port, fp:attributes(fp:owner(.)), fp:operations(fp:owner(.))/pim:parameter)"/>
     <xsl:variable name="defs" as="element()*"
-        select="fp:data-types($typed ! fp:type-def(.)[self::pim:datatype or pim:literal], 'RTM021')"/>
+        select="fp:data-types($typed ! fp:type-def(.), 'RTM021')[self::pim:datatype or pim:literal]"/>
     <xsl:variable name="port-data" as="element(pim:data-port)*"
         select="$components/pim:data-port[@port = $ports[@convert ne 'primitive']/@xmi-id]"/>
     <xsl:variable name="carried" as="element()*" select="fp:type-closure($port-data/fp:type-def(.))"/>
