@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import os
 import re
+import select
 import shutil
 import signal
 import socket
@@ -302,10 +303,17 @@ def _logs(out: Path) -> str:
 
 
 def _read_probe(probe: subprocess.Popen[str], seconds: float) -> list[tuple[int, int, int]]:
+    """The probe's samples (sec, nsec, datum), up to 20, within $seconds: a probe that prints
+    nothing ends the wait at the deadline instead of blocking the read."""
     samples: list[tuple[int, int, int]] = []
     end = time.monotonic() + seconds
+    assert probe.stdout is not None
     while time.monotonic() < end and len(samples) < 20:
-        line = probe.stdout.readline() if probe.stdout else ""
+        if not select.select([probe.stdout], [], [], max(0.0, end - time.monotonic()))[0]:
+            break
+        line = probe.stdout.readline()
+        if not line:
+            break
         match = re.match(r"probe: (\d+) (\d+)(?: (-?\d+))?", line)
         if match:
             samples.append((int(match.group(1)), int(match.group(2)), int(match.group(3) or 0)))

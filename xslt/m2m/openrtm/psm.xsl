@@ -268,7 +268,7 @@
             <xsl:variable name="result" as="element(ty:type)"
                 select="key('fp:type', string((pim:parameter[@direction eq 'return']/@primitive, 'void')[1]), $fp:types)"/>
             <r:operation xmi-id="{@id}" name="{f:cpp-identifier(@name)}" return-primitive="{$result/@primitive}"
-                         return-cpp="{$result/@cpp}" return-idl="{$result/@idl}" return-corba="{$result/@corba}">
+                         return-cpp="{$result/@cpp}" return-idl="{$result/@idl}" return-corba="{$result/@corba}" return-sample="{$result/@sample}">
               <xsl:if test="$sp/@role eq 'required'">
                 <xsl:attribute name="forward" select="fp:calls-declared($bc, $sp, ., 'override of ' || @name, 'RTM015')"/>
               </xsl:if>

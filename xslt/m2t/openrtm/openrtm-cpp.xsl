@@ -150,10 +150,17 @@
     <xsl:for-each select="$c/r:service-port[@role eq 'required']/r:operation[xs:boolean(@forward)]">
       <xsl:variable name="call" as="xs:string"
           select="../@member || '-&gt;' || @name || '(' || string-join(r:parameter ! (if (@primitive eq 'string') then @name || '.c_str()' else @name), ', ') || ')'"/>
-      <xsl:sequence select="'', fp:rtm-cpp-signature(., $class || '::'), '{',
-          if (@return-primitive eq 'void') then '  ' || $call || ';'
-          else if (@return-primitive eq 'string') then ('  CORBA::String_var result = ' || $call || ';', '  return std::string(result.in());')
-          else '  return ' || $call || ';', '}'"/>
+      <!-- OpenRTM serves a provided interface only while its component is Active (CorbaPort
+           activates it with the component): a call before that, or after, raises a CORBA system
+           exception; the override logs it and returns the result type's zero -->
+      <xsl:sequence select="'', fp:rtm-cpp-signature(., $class || '::'), '{', '  try {',
+          if (@return-primitive eq 'void') then '    ' || $call || ';'
+          else if (@return-primitive eq 'string') then ('    CORBA::String_var result = ' || $call || ';', '    return std::string(result.in());')
+          else '    return ' || $call || ';',
+          '  } catch (const CORBA::SystemException&amp; e) {',
+          '    RTC_WARN((&quot;' || ../@name || ': ' || @name || '() not served (%s): the provider is not active&quot;, e._name()));',
+          if (@return-primitive eq 'void') then () else '    return ' || @return-sample || ';',
+          '  }', '}'"/>
     </xsl:for-each>
   </xsl:function>
 
