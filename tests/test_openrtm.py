@@ -187,6 +187,19 @@ def test_a_data_type_openrtm_cannot_declare_is_located(capsys: pytest.CaptureFix
     assert not (tmp_path / "out").exists()
 
 
+def test_cpu_affinity_is_written_as_openrtm_checks_it(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    """OpenRTM-aist 2.0.2 pins an execution context to the first n CPUs for a list of n and checks
+    the pinning against the list counted from 1: tuned's masks 1 and 3 are "1" and "1,2", kept
+    exactly; distributed's mask 2 (CPU 1 only) cannot be, and RTM023 says so."""
+    from robomda.cli import main
+    tuned = _files(ROOT / "fixtures" / "cases" / "tuned")
+    assert "exec_cxt.periodic.cpu_affinity: 1\n" in tuned["conf/camera.conf"]
+    assert "exec_cxt.periodic.cpu_affinity: 1,2\n" in tuned["conf/vision.conf"]
+    case = ROOT / "fixtures" / "cases" / "distributed"
+    assert main(["generate", str(case / "model.xmi"), "-o", str(tmp_path / "out"), "--target", "openrtm"]) == 0
+    assert "warning: [RTM023] instance 'arm' asks for CPUs 1 (mask 2)" in capsys.readouterr().err
+
+
 def test_every_rts_profile_reads_with_rtsprofile() -> None:
     """rtshell's rtsprofile library (what rtstart / rtresurrect read a system with) loads every
     fixture's RtsProfile: its components, connectors and the StartUp / Activation conditions."""

@@ -32,7 +32,8 @@
       the value an instance's part sets goes into the instance's .conf.
   R4  execution context: PeriodicExecutionContext at rate 1 / period (Hz),
       one per instance (exec_cxt.periodic.rate in the instance's .conf); a
-      CPU affinity mask other than 0 as the list of its CPU numbers.
+      CPU affinity mask other than 0 as the list of its CPU numbers,
+      counted from 1 (RTM023 for a mask OpenRTM 2.0 cannot pin).
   R5  connections: dataflow push (pull when the policy pulls), subscription
       flush, buffer length = policy size, full policy overwrite for DATA and
       CIRCULAR_BUFFER, do_nothing (drop the new sample) for BUFFER.
@@ -73,6 +74,8 @@
             (init: the last sample on connecting)
     RTM015  a required operation the realizing class does not declare (no
             override is generated; the class cannot call it)
+    RTM023  a CPU affinity mask other than CPUs 0 to n-1: OpenRTM-aist
+            2.0 pins the execution context's thread to the first n CPUs
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -412,11 +415,19 @@
                 process="{map:get($files, string($instance/@execution-environment))}"
                 rate="{if ($period gt 0) then fp:decimal(string(round(1 div $period * 1000000) div 1000000)) else '1000.0'}"
                 period="{$activity/@period}">
-      <!-- the model's CPU bit mask as OpenRTM's list of CPU numbers (mask 6: "1,2") -->
+      <!-- the model's CPU bit mask as OpenRTM-aist 2.0's list of CPU numbers, counted from 1 as
+           its PeriodicExecutionContext checks them (mask 3: "1,2"); it pins the thread to the
+           first n CPUs of the machine for a list of n, so a mask that is not 0..n-1 is RTM023 -->
       <xsl:variable name="mask" as="xs:integer" select="if ($activity/@cpu-affinity castable as xs:integer) then xs:integer($activity/@cpu-affinity) else 0"/>
-      <xsl:if test="$mask gt 0">
-        <xsl:attribute name="cpu-affinity"
-            select="string-join((0 to 63)[($mask idiv xs:integer(math:pow(2, .))) mod 2 eq 1] ! string(.), ',')"/>
+      <xsl:variable name="cpus" as="xs:integer*" select="(0 to 63)[($mask idiv xs:integer(math:pow(2, .))) mod 2 eq 1]"/>
+      <xsl:if test="exists($cpus)">
+        <xsl:attribute name="cpu-affinity" select="string-join($cpus ! string(. + 1), ',')"/>
+      </xsl:if>
+      <xsl:if test="exists($cpus) and not(deep-equal($cpus, 0 to count($cpus) - 1))">
+        <xsl:sequence select="f:warn('RTM023', string(($activity/@period-holder, $instance/@xmi-id)[1]), 'instance ''' || $instance/@name
+            || ''' asks for CPUs ' || string-join($cpus ! string(.), ', ') || ' (mask ' || $mask || '): OpenRTM-aist 2.0''s'
+            || ' PeriodicExecutionContext pins its thread to the first ' || count($cpus) || ' CPU(s) of the machine (0 to '
+            || count($cpus) - 1 || '), whichever it is given, and logs an error that they differ')"/>
       </xsl:if>
       <xsl:sequence select="fp:warn-unused-values($instance, $rtc/r:parameter/@xmi-id, 'RTM008')"/>
       <xsl:for-each select="$rtc/r:parameter">
