@@ -3,7 +3,8 @@
 Goldens live in fixtures/cases/<case>/expected/: the stage models as
 <step>.xml and the generated package under <target>/. The fixtures of one
 target, fixtures/<target>/<case>/ (a model the other targets refuse yet),
-have goldens for that target only. Regenerate on purpose only
+have goldens for that target only (fixtures/ros/usercode, components
+without a realizing class, also for OpenRTM). Regenerate on purpose only
 (``tests/run.sh --force-regen``) and review the diff.
 
 The chain runs as if the output folder were fixtures/cases/<case>/out, so
@@ -24,7 +25,9 @@ CASES = sorted(p.parent for p in (ROOT / "fixtures" / "cases").glob("*/model.xmi
 TARGETS = targets()  # from the pipeline manifests
 # (case, target): every case on every target, and the one-target fixtures
 RUNS = [(case, target) for case in CASES for target in TARGETS] + [
-    (p.parent, "orocos") for p in sorted((ROOT / "fixtures" / "orocos").glob("*/model.xmi"))]
+    (p.parent, "orocos") for p in sorted((ROOT / "fixtures" / "orocos").glob("*/model.xmi"))] + [
+    # OpenRTM components without a realizing class: the user's classes in the shared frames
+    (ROOT / "fixtures" / "ros" / "usercode", "openrtm")]
 RUN_IDS = [f"{target}-{case.name}" for case, target in RUNS]
 FS = "{urn:robomda:fileset:1}"
 

@@ -5,8 +5,9 @@
 #
 #   rtm_build_pkg PKGDIR      configure + build a generated OpenRTM package in PKGDIR/build
 #                             (the component modules <Class>.so land there)
-#   rtm_build_probe DIR       build the test probe (probe/Probe.cpp: an InPort<TimedLong> that prints
-#                             what it reads) into DIR
+#   rtm_build_probe DIR [CMAKE_ARG...]  build the test probe (probe/Probe.cpp: an InPort that prints
+#                             the time stamp of what it reads; -DPROBE_TYPE=..., -DPROBE_HEADER=...,
+#                             -DPROBE_PACKAGE_BUILD=... for a generated package's type) into DIR
 #
 # Tunables (environment): RTM_JOBS (make -j, default 2), RTM_CMAKE_ARGS (extra cmake args).
 
@@ -28,10 +29,12 @@ _rtm_prepend LD_LIBRARY_PATH "$OPENRTM_INSTALL/lib"
 _rtm_prepend PKG_CONFIG_PATH "$OPENRTM_INSTALL/lib/pkgconfig"
 _rtm_prepend CMAKE_PREFIX_PATH "$OPENRTM_INSTALL"
 
-_rtm_cmake() {  # _rtm_cmake SRC BUILD: configure and build
-  cmake -S "$1" -B "$2" -DCMAKE_PREFIX_PATH="$CMAKE_PREFIX_PATH" ${RTM_CMAKE_ARGS:-} \
-    || { echo "rtm: cmake configure of $1 FAILED" >&2; return 1; }
-  nice -n 19 cmake --build "$2" -j "${RTM_JOBS:-2}" || { echo "rtm: build of $1 FAILED" >&2; return 1; }
+_rtm_cmake() {  # _rtm_cmake SRC BUILD [CMAKE_ARG...]: configure and build
+  local src=$1 build=$2
+  shift 2
+  cmake -S "$src" -B "$build" -DCMAKE_PREFIX_PATH="$CMAKE_PREFIX_PATH" ${RTM_CMAKE_ARGS:-} "$@" \
+    || { echo "rtm: cmake configure of $src FAILED" >&2; return 1; }
+  nice -n 19 cmake --build "$build" -j "${RTM_JOBS:-2}" || { echo "rtm: build of $src FAILED" >&2; return 1; }
 }
 
 rtm_build_pkg() {
@@ -44,6 +47,7 @@ rtm_build_pkg() {
 
 rtm_build_probe() {
   local out
-  out=$(readlink -f "${1:?usage: rtm_build_probe DIR}") || return 2
-  _rtm_cmake "$_RTM_HERE/probe" "$out" && [ -f "$out/Probe.so" ]
+  out=$(readlink -f "${1:?usage: rtm_build_probe DIR [CMAKE_ARG...]}") || return 2
+  shift
+  _rtm_cmake "$_RTM_HERE/probe" "$out" "$@" && [ -f "$out/Probe.so" ]
 }

@@ -1,8 +1,10 @@
-// An RT-Component for the openrtm_toolchain tests: one InPort<RTC::TimedLong> "in";
-// every sample it reads is printed as "probe: <value>" on stdout (flushed), so a test
-// can tell that data flows on a connection of a running system. Loaded by rtcd2
-// (ProbeInit), connected by its rtc.conf's preconnect.
-#include <rtm/idl/BasicDataTypeSkel.h>  // first: the port templates need its CORBA::Any operators declared
+// An RT-Component for the openrtm_toolchain tests: one InPort<PROBE_TYPE> "in" (any
+// type of OpenRTM's data-port convention, with a time stamp "tm"; CMakeLists.txt sets
+// it, default RTC::TimedLong); every sample it reads is printed as
+// "probe: <sec> <nsec>" (with PROBE_PRINT_DATA: "probe: <sec> <nsec> <data>") on stdout,
+// flushed, so a test can tell that data flows on a connection of a running system.
+// Loaded by rtcd2 (ProbeInit), connected by its rtc.conf's preconnect.
+#include PROBE_HEADER  // first: the port templates need its CORBA::Any operators declared
 #include <rtm/DataFlowComponentBase.h>
 #include <rtm/InPort.h>
 #include <rtm/Manager.h>
@@ -28,15 +30,20 @@ public:
   {
     while (m_inIn.isNew()) {
       m_inIn.read();
-      std::printf("probe: %ld\n", static_cast<long>(m_in.data));
+#ifdef PROBE_PRINT_DATA
+      std::printf("probe: %lu %lu %ld\n", static_cast<unsigned long>(m_in.tm.sec), static_cast<unsigned long>(m_in.tm.nsec),
+                  static_cast<long>(m_in.data));
+#else
+      std::printf("probe: %lu %lu\n", static_cast<unsigned long>(m_in.tm.sec), static_cast<unsigned long>(m_in.tm.nsec));
+#endif
       std::fflush(stdout);
     }
     return RTC::RTC_OK;
   }
 
 private:
-  RTC::TimedLong m_in;
-  RTC::InPort<RTC::TimedLong> m_inIn;
+  PROBE_TYPE m_in;
+  RTC::InPort<PROBE_TYPE> m_inIn;
 };
 
 extern "C" void ProbeInit(RTC::Manager* manager)

@@ -8,6 +8,7 @@
            indented as f:indent (common/indent.xsl) indents it.
   Data:    xslt/m2m/openrtm/types.xml (primitive kind -> TimedXxx, C++,
            configuration type).
+  Uses:    xslt/m2m/openrtm/types.xsl (port types, r:data-types; RTM021, RTM022).
   Uses:    xslt/m2m/common/psm-kit.xsl (wrapper, hooks, attributes, defaults).
   Params:  package-name (the CMake project; '' = lower snake case of the model name).
 
@@ -18,9 +19,12 @@
       has a realizing class (the RTC derives from it and its actions call the
       class's lifecycle operations), else "base" (a generated <class>Base and
       a user class <class>, written once).
-  R2  one data port per bound data port of a primitive datum: out ->
-      RTC::OutPort<RTC::TimedXxx>, in -> RTC::InPort<RTC::TimedXxx>
-      (types.xml); member m_<name>Out / m_<name>In, datum m_<name>.
+  R2  one data port per bound data port: out -> RTC::OutPort<T>, in ->
+      RTC::InPort<T>, T the TimedXxx of BasicDataType.idl for a single
+      primitive (types.xml), RTC::TimedXxxSeq for an array of one, else a
+      Timed type of the package's generated IDL (types.xsl); member
+      m_<name>Out / m_<name>In, datum m_<name>. The package's data types
+      get C++ headers (include/<Name>.hpp) and, those the ports carry, IDL.
   R3  configuration: the Configurable attributes of the realizing class (base
       kind: of the component), without any the convention's choice (public,
       protected, not static, not read-only), of a primitive type: one
@@ -28,7 +32,8 @@
       the value an instance's part sets goes into the instance's .conf.
   R4  execution context: PeriodicExecutionContext at rate 1 / period (Hz),
       one per instance (exec_cxt.periodic.rate in the instance's .conf); a
-      CPU affinity mask other than 0 as the list of its CPU numbers.
+      CPU affinity mask other than 0 as the list of its CPU numbers,
+      counted from 1 (RTM023 for a mask OpenRTM 2.0 cannot pin).
   R5  connections: dataflow push (pull when the policy pulls), subscription
       flush, buffer length = policy size, full policy overwrite for DATA and
       CIRCULAR_BUFFER, do_nothing (drop the new sample) for BUFFER.
@@ -50,11 +55,12 @@
     RTM003  the input has no pim:binding (run xslt/m2m/bind.xsl first)
     RTM004  two component types map to the same C++ class name
     RTM005  nothing to generate: the model has no component instance
+    RTM021, RTM022  (types.xsl) a data type that cannot be declared; a bad default of its attribute
   Warnings (f:warn):
     JOB041  a subsystem with jobs on OpenRTM: no job coordinator generated (common/psm-kit.xsl;
             docs/jobs.md)
-    RTM001  a data port whose datum OpenRTM's Timed types cannot carry (a
-            data type, enumeration, array or 64-bit integer): no port
+    RTM001  a data port whose datum has no OpenRTM data type (an
+            enumeration without a literal): no port
     RTM006  no instance is deployed on OpenRTM: all are generated anyway
     RTM007  an instance deployed on another middleware is left out
     RTM008  a value a part sets on an attribute that is no parameter
@@ -70,6 +76,8 @@
             (init: the last sample on connecting)
     RTM015  a required operation the realizing class does not declare (no
             override is generated; the class cannot call it)
+    RTM023  a CPU affinity mask other than CPUs 0 to n-1: OpenRTM-aist
+            2.0 pins the execution context's thread to the first n CPUs
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -92,6 +100,7 @@
   <xsl:include href="../../common/profile.xsl"/>
   <xsl:include href="../../common/sequence.xsl"/>
   <xsl:include href="../common/psm-kit.xsl"/>
+  <xsl:include href="types.xsl"/>
 
   <xsl:param name="package-name" as="xs:string" select="''"/>
 
@@ -147,6 +156,7 @@
     <r:system xmi-id="{@id}" model-name="{@name}" deploy-name="{f:snake-case(@name)}" package="{$package}" source="{@source}">
       <xsl:variable name="children" as="element()*">
         <xsl:sequence select="$binding/pim:library ! fp:psm-library(., $package)"/>
+        <xsl:sequence select="fp:rtm-data-types($components, $rtcs/r:component/r:data-port, $package, root($binding))"/>
         <!-- one IDL interface per interface a service port carries -->
         <xsl:for-each-group select="$rtcs/r:component/r:service-port" group-by="string(@interface)">
           <r:interface name="{current-grouping-key()}" module="{$package}">
@@ -194,20 +204,22 @@
       <xsl:sequence select="fp:psm-realizing-class($bc)"/>
       <xsl:sequence select="fp:psm-hooks($bc)"/>
       <xsl:for-each select="$bc/pim:data-port">
-        <xsl:variable name="type" as="element(ty:type)?"
-            select="if (empty(fp:type-def(.)) and empty(fp:array(.))) then key('fp:type', string(@primitive), $fp:types)[@timed] else ()"/>
+        <xsl:variable name="type" as="attribute()*" select="fp:rtm-port-type(., $package)"/>
         <xsl:choose>
           <xsl:when test="empty($type)">
             <xsl:sequence select="f:warn('RTM001', string(@port), 'port ''' || @port-name || ''' of component ''' || $bc/@name
-                || ''' carries ' || fp:type-label(.) || ', which no TimedXxx type of OpenRTM''s BasicDataType.idl holds'
-                || ' (a data type, enumeration, array or 64-bit integer needs an IDL of its own, not generated yet): the'
-                || ' RT-Component has no such port')"/>
+                || ''' carries ' || fp:type-label(.) || ', which has no OpenRTM data type (an enumeration needs a literal):'
+                || ' the RT-Component has no such port')"/>
           </xsl:when>
           <xsl:otherwise>
-            <r:data-port xmi-id="{@port}" name="{@name}" direction="{@direction}" timed="{$type/@timed}"
-                         cpp="{$type/@cpp}" primitive="{$type/@primitive}" interface="{@interface-name}" datum="{@datum-name}"
-                         member="m_{@name}" port-member="m_{@name}{if (@direction eq 'out') then 'Out' else 'In'}"
-                         accessor="{fp:accessor(.)}" accessor-declared="{fp:accessor-declared(.)}">
+            <r:data-port xmi-id="{@port}" name="{@name}" direction="{@direction}">
+              <xsl:sequence select="$type"/>
+              <xsl:attribute name="interface" select="@interface-name"/>
+              <xsl:attribute name="datum" select="@datum-name"/>
+              <xsl:attribute name="member" select="'m_' || @name"/>
+              <xsl:attribute name="port-member" select="'m_' || @name || (if (@direction eq 'out') then 'Out' else 'In')"/>
+              <xsl:attribute name="accessor" select="fp:accessor(.)"/>
+              <xsl:attribute name="accessor-declared" select="fp:accessor-declared(.)"/>
               <xsl:sequence select="fp:psm-doc(key('fp:id', @port, root(.)))"/>
             </r:data-port>
           </xsl:otherwise>
@@ -263,7 +275,7 @@
             <xsl:variable name="result" as="element(ty:type)"
                 select="key('fp:type', string((pim:parameter[@direction eq 'return']/@primitive, 'void')[1]), $fp:types)"/>
             <r:operation xmi-id="{@id}" name="{f:cpp-identifier(@name)}" return-primitive="{$result/@primitive}"
-                         return-cpp="{$result/@cpp}" return-idl="{$result/@idl}" return-corba="{$result/@corba}">
+                         return-cpp="{$result/@cpp}" return-idl="{$result/@idl}" return-corba="{$result/@corba}" return-sample="{$result/@sample}">
               <xsl:if test="$sp/@role eq 'required'">
                 <xsl:attribute name="forward" select="fp:calls-declared($bc, $sp, ., 'override of ' || @name, 'RTM015')"/>
               </xsl:if>
@@ -323,9 +335,9 @@
             || 'instances the OpenRTM package does not hold (''' || string-join(distinct-values($away/@instance), ''', ''')
             || '''): OpenRTM reaches no other middleware, the connection is left out')"/>
       </xsl:when>
-      <xsl:when test="empty($datum) or exists(fp:type-def($datum)) or exists(fp:array($datum)) or empty(key('fp:type', string($datum/@primitive), $fp:types)/@timed)">
+      <xsl:when test="empty($datum) or empty(fp:rtm-type($datum, ''))">
         <xsl:sequence select="f:warn('RTM001', string($connection/@xmi-id), 'connection ''' || $connection/@name || ''' carries '
-            || (if ($datum) then fp:type-label($datum) else 'no datum') || ', which no TimedXxx type holds: its ports are not generated,'
+            || (if ($datum) then fp:type-label($datum) else 'no datum') || ', which has no OpenRTM data type: its ports are not generated,'
             || ' the connection is left out')"/>
       </xsl:when>
       <xsl:otherwise>
@@ -407,11 +419,19 @@
                 process="{map:get($files, string($instance/@execution-environment))}"
                 rate="{if ($period gt 0) then fp:decimal(string(round(1 div $period * 1000000) div 1000000)) else '1000.0'}"
                 period="{$activity/@period}">
-      <!-- the model's CPU bit mask as OpenRTM's list of CPU numbers (mask 6: "1,2") -->
+      <!-- the model's CPU bit mask as OpenRTM-aist 2.0's list of CPU numbers, counted from 1 as
+           its PeriodicExecutionContext checks them (mask 3: "1,2"); it pins the thread to the
+           first n CPUs of the machine for a list of n, so a mask that is not 0..n-1 is RTM023 -->
       <xsl:variable name="mask" as="xs:integer" select="if ($activity/@cpu-affinity castable as xs:integer) then xs:integer($activity/@cpu-affinity) else 0"/>
-      <xsl:if test="$mask gt 0">
-        <xsl:attribute name="cpu-affinity"
-            select="string-join((0 to 63)[($mask idiv xs:integer(math:pow(2, .))) mod 2 eq 1] ! string(.), ',')"/>
+      <xsl:variable name="cpus" as="xs:integer*" select="(0 to 63)[($mask idiv xs:integer(math:pow(2, .))) mod 2 eq 1]"/>
+      <xsl:if test="exists($cpus)">
+        <xsl:attribute name="cpu-affinity" select="string-join($cpus ! string(. + 1), ',')"/>
+      </xsl:if>
+      <xsl:if test="exists($cpus) and not(deep-equal($cpus, 0 to count($cpus) - 1))">
+        <xsl:sequence select="f:warn('RTM023', string(($activity/@period-holder, $instance/@xmi-id)[1]), 'instance ''' || $instance/@name
+            || ''' asks for CPUs ' || string-join($cpus ! string(.), ', ') || ' (mask ' || $mask || '): OpenRTM-aist 2.0''s'
+            || ' PeriodicExecutionContext pins its thread to the first ' || count($cpus) || ' CPU(s) of the machine (0 to '
+            || count($cpus) - 1 || '), whichever it is given, and logs an error that they differ')"/>
       </xsl:if>
       <xsl:sequence select="fp:warn-unused-values($instance, $rtc/r:parameter/@xmi-id, 'RTM008')"/>
       <xsl:for-each select="$rtc/r:parameter">

@@ -1,10 +1,10 @@
 <?xml version="1.0" encoding="UTF-8"?>
 <!--
   xslt/m2t/common/user-class.xsl - the user's class of a component without a
-  realizing class, on every C++ target (Orocos, ROS 1, ROS 2).
+  realizing class, on every C++ target (Orocos, ROS 1, ROS 2, OpenRTM).
 
   Reads:   any PSM element of a component with @xmi-id and @name (o:task-
-           context, r:node).
+           context, r:node, OpenRTM's r:component).
   Writes:  fs:file elements of mode "user" (schemas/fileset/1/fileset.xsd)
            and the frames of the user's header and source (strings).
   Params:  none.  Errors: none.
@@ -21,8 +21,10 @@
   the build instead of leaving dead code in silence.
 
     fp:user-class-file($path, $stylesheet, $component, $signature, $text)
-    fp:user-class-header($stylesheet, $component, $namespace, $class, $base, $body)
-    fp:user-class-source($stylesheet, $component, $namespace, $class, $body)
+    fp:user-class-header($stylesheet, $component, $namespace, $class, $base, $body, $extension, $trailer)
+    fp:user-class-source($stylesheet, $component, $namespace, $class, $body, $extension, $trailer)
+      $extension: the headers' ('.hpp'; OpenRTM '.h'); $trailer: lines after
+      the namespace (OpenRTM's module entry <Class>Init; () elsewhere)
     fp:definition($head, $body)   "head { body }" on lines of their own
 -->
 <xsl:stylesheet version="3.0"
@@ -47,7 +49,9 @@
   </xsl:function>
 
   <!-- the user's header: class $class of $namespace deriving from $base
-       (<$namespace/$base.hpp>), with the lines $body between its braces -->
+       (<$namespace/$base$extension>), with the lines $body between its
+       braces and the lines $trailer after the namespace (a declaration
+       outside it: OpenRTM's module entry) -->
   <xsl:function name="fp:user-class-header" as="xs:string">
     <xsl:param name="stylesheet" as="xs:string"/>
     <xsl:param name="component" as="element()"/>
@@ -55,13 +59,15 @@
     <xsl:param name="class" as="xs:string"/>
     <xsl:param name="base" as="xs:string"/>
     <xsl:param name="body" as="xs:string*"/>
+    <xsl:param name="extension" as="xs:string"/>
+    <xsl:param name="trailer" as="xs:string*"/>
     <xsl:variable name="guard" as="xs:string" select="fp:guard($namespace, $class)"/>
     <xsl:sequence select="fp:lines((
         fp:banner('// ', $stylesheet, fp:what($component), true()),
         concat('#ifndef ', $guard),
         concat('#define ', $guard),
         '',
-        concat('#include &lt;', $namespace, '/', $base, '.hpp&gt;'),
+        concat('#include &lt;', $namespace, '/', $base, $extension, '&gt;'),
         '',
         concat('namespace ', $namespace, ' {'),
         '',
@@ -72,25 +78,30 @@
         '',
         concat('}  // namespace ', $namespace),
         '',
+        if (exists($trailer)) then ($trailer, '') else (),
         concat('#endif  // ', $guard)))"/>
   </xsl:function>
 
-  <!-- the user's source: the definitions $body of class $class -->
+  <!-- the user's source: the definitions $body of class $class, then the
+       lines $trailer after the namespace; $extension: its header's -->
   <xsl:function name="fp:user-class-source" as="xs:string">
     <xsl:param name="stylesheet" as="xs:string"/>
     <xsl:param name="component" as="element()"/>
     <xsl:param name="namespace" as="xs:string"/>
     <xsl:param name="class" as="xs:string"/>
     <xsl:param name="body" as="xs:string*"/>
+    <xsl:param name="extension" as="xs:string"/>
+    <xsl:param name="trailer" as="xs:string*"/>
     <xsl:sequence select="fp:lines((
         fp:banner('// ', $stylesheet, fp:what($component), true()),
-        concat('#include &lt;', $namespace, '/', $class, '.hpp&gt;'),
+        concat('#include &lt;', $namespace, '/', $class, $extension, '&gt;'),
         '',
         concat('namespace ', $namespace, ' {'),
         '',
         $body,
         '',
-        concat('}  // namespace ', $namespace)))"/>
+        concat('}  // namespace ', $namespace),
+        if (exists($trailer)) then ('', $trailer) else ()))"/>
   </xsl:function>
 
   <!-- a function's definition: $head, then $body in braces -->

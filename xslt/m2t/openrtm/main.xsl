@@ -11,6 +11,9 @@
              component has no realizing class
              rtc/<Class>/RTC.xml       per component: its RtcProfile
              idl/<Interface>.idl       per interface of a service port
+             include/<Type>.hpp        per data type / enumeration the components use (m2t/common/data-types.xsl)
+             idl/<pkg>_types.idl, include/<pkg>/<pkg>_types.h  the data types the data ports
+                                       carry, and their conversions (openrtm-types.xsl)
              CMakeLists.txt            finds OpenRTM-aist, compiles the IDL, one module (.so) per component
              conf/<instance>.conf      per instance: execution context rate, configuration set
              deploy/<process>.rtc.conf per manager: modules, components, connections, activation
@@ -18,7 +21,7 @@
              deploy/start_<host>.sh    per host: its managers in the modelled order
   Params:  model-dir-from-output (xslt/m2t/common/text.xsl), package-version.
   Errors:  none (the PSM is complete and valid).
-  Modules: ../common/text.xsl, openrtm-cpp.xsl, openrtm-profile.xsl, openrtm-deploy.xsl.
+  Modules: ../common/text.xsl, ../common/user-class.xsl, ../common/data-types.xsl, openrtm-cpp.xsl, openrtm-types.xsl, openrtm-profile.xsl, openrtm-deploy.xsl.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -31,7 +34,9 @@
 
   <xsl:include href="../common/text.xsl"/>
   <xsl:include href="../common/user-class.xsl"/>
+  <xsl:include href="../common/data-types.xsl"/>
   <xsl:include href="openrtm-cpp.xsl"/>
+  <xsl:include href="openrtm-types.xsl"/>
   <xsl:include href="openrtm-profile.xsl"/>
   <xsl:include href="openrtm-deploy.xsl"/>
 
@@ -69,6 +74,17 @@
           <xsl:sequence select="$fp:file-margin, fp:user-class-file(concat('src/', @class, '.cpp'), $fp:cpp-xsl, ., $requires, fp:rtm-user-source(.))"/>
         </xsl:if>
         <xsl:sequence select="$fp:file-margin, fp:file(concat('rtc/', @class, '/RTC.xml'), 'generated', $fp:profile-xsl, fp:rtc-profile(., $fp:rtm-version))"/>
+      </xsl:for-each>
+      <xsl:for-each select="r:data-types">
+        <xsl:variable name="definitions" as="element()*" select="r:enum | r:struct"/>
+        <xsl:for-each select="$definitions">
+          <xsl:sequence select="$fp:file-margin, fp:file('include/' || @header, 'generated', 'm2t/common/data-types.xsl',
+                                        fp:type-header(., $definitions, $system/@model-name))"/>
+        </xsl:for-each>
+        <xsl:if test="$definitions[xs:boolean(@idl)]">
+          <xsl:sequence select="$fp:file-margin, fp:file('idl/' || @idl || '.idl', 'generated', $fp:types-xsl, fp:rtm-types-idl(.))"/>
+          <xsl:sequence select="$fp:file-margin, fp:file('include/' || $pkg || '/' || @idl || '.h', 'generated', $fp:types-xsl, fp:rtm-types-convert(.))"/>
+        </xsl:if>
       </xsl:for-each>
       <xsl:for-each select="r:interface">
         <xsl:sequence select="$fp:file-margin, fp:file(concat('idl/', @name, '.idl'), 'generated', $fp:cpp-xsl, fp:rtm-idl(.))"/>

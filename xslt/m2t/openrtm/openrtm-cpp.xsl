@@ -44,6 +44,7 @@
       '',
       '// the IDL types first: OpenRTM''s port templates find their CORBA::Any operators only if declared before',
       '#include &lt;rtm/idl/BasicDataTypeSkel.h&gt;',
+      if ($c/r:data-port[@convert ne 'primitive']) then '#include &lt;' || $pkg || '/' || $c/../r:data-types/@idl || '.h&gt;' else (),
       distinct-values($c/r:service-port/@interface) ! ('#include &quot;' || . || '.hh&quot;'),
       '#include &lt;rtm/DataFlowComponentBase.h&gt;',
       '#include &lt;rtm/Manager.h&gt;',
@@ -149,10 +150,17 @@
     <xsl:for-each select="$c/r:service-port[@role eq 'required']/r:operation[xs:boolean(@forward)]">
       <xsl:variable name="call" as="xs:string"
           select="../@member || '-&gt;' || @name || '(' || string-join(r:parameter ! (if (@primitive eq 'string') then @name || '.c_str()' else @name), ', ') || ')'"/>
-      <xsl:sequence select="'', fp:rtm-cpp-signature(., $class || '::'), '{',
-          if (@return-primitive eq 'void') then '  ' || $call || ';'
-          else if (@return-primitive eq 'string') then ('  CORBA::String_var result = ' || $call || ';', '  return std::string(result.in());')
-          else '  return ' || $call || ';', '}'"/>
+      <!-- OpenRTM serves a provided interface only while its component is Active (CorbaPort
+           activates it with the component): a call before that, or after, raises a CORBA system
+           exception; the override logs it and returns the result type's zero -->
+      <xsl:sequence select="'', fp:rtm-cpp-signature(., $class || '::'), '{', '  try {',
+          if (@return-primitive eq 'void') then '    ' || $call || ';'
+          else if (@return-primitive eq 'string') then ('    CORBA::String_var result = ' || $call || ';', '    return std::string(result.in());')
+          else '    return ' || $call || ';',
+          '  } catch (const CORBA::SystemException&amp; e) {',
+          '    RTC_WARN((&quot;' || ../@name || ': ' || @name || '() not served (%s): the provider is not active&quot;, e._name()));',
+          if (@return-primitive eq 'void') then () else '    return ' || @return-sample || ';',
+          '  }', '}'"/>
     </xsl:for-each>
   </xsl:function>
 
@@ -183,9 +191,14 @@
   <xsl:function name="fp:rtm-idl-cmake" as="xs:string*">
     <xsl:param name="system" as="element(r:system)"/>
     <xsl:variable name="pkg" as="xs:string" select="$system/@package"/>
-    <xsl:if test="$system/r:interface">
+    <xsl:variable name="types" as="xs:string*" select="$system/r:data-types[(r:enum | r:struct)[xs:boolean(@idl)]]/@idl"/>
+    <xsl:if test="$system/r:interface or exists($types)">
       <xsl:sequence select="(
-        '# the service ports'' interfaces: omniidl (Debian omniidl) writes their C++ stubs and skeletons',
+        if (empty($types)) then '# the service ports'' interfaces: omniidl (Debian omniidl) writes their C++ stubs and skeletons'
+        else ('# the ' || (if ($system/r:interface) then 'service ports'' interfaces and the ' else '')
+              || 'data ports'' types: omniidl (Debian omniidl) writes their C++',
+              '# stubs and skeletons; the types also their CORBA::Any operators and type codes (-Wba), which OpenRTM''s',
+              '# data ports use, with OpenRTM''s IDL folder (BasicDataType.idl) on the include path'),
         'find_program(OMNIIDL omniidl)',
         'if(NOT OMNIIDL)',
         '  message(FATAL_ERROR &quot;omniidl not found (Debian package omniidl)&quot;)',
@@ -196,7 +209,12 @@
           'add_custom_command(OUTPUT ${IDL_OUT}/' || @name || '.hh ${IDL_OUT}/' || @name || 'SK.cc',
           '  COMMAND ${OMNIIDL} -bcxx -Wbh=.hh -Wbs=SK.cc -C ${IDL_OUT} ${CMAKE_CURRENT_SOURCE_DIR}/idl/' || @name || '.idl',
           '  DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/idl/' || @name || '.idl)'),
-        'add_library(' || $pkg || '_idl STATIC' || string-join($system/r:interface ! (' ${IDL_OUT}/' || @name || 'SK.cc')) || ')',
+        $types ! (
+          'add_custom_command(OUTPUT ${IDL_OUT}/' || . || '.hh ${IDL_OUT}/' || . || 'SK.cc ${IDL_OUT}/' || . || 'DynSK.cc',
+          '  COMMAND ${OMNIIDL} -bcxx -Wba -Wbuse_quotes -Wbh=.hh -Wbs=SK.cc -Wbd=DynSK.cc -I${OPENRTM_INCLUDE_DIR}/rtm/idl -C ${IDL_OUT} ${CMAKE_CURRENT_SOURCE_DIR}/idl/' || . || '.idl',
+          '  DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/idl/' || . || '.idl)'),
+        'add_library(' || $pkg || '_idl STATIC' || string-join(($types ! (' ${IDL_OUT}/' || . || 'SK.cc ${IDL_OUT}/' || . || 'DynSK.cc'),
+                                                              $system/r:interface ! (' ${IDL_OUT}/' || @name || 'SK.cc'))) || ')',
         'set_target_properties(' || $pkg || '_idl PROPERTIES POSITION_INDEPENDENT_CODE ON)',
         'include_directories(${IDL_OUT})',
         '')"/>
@@ -301,13 +319,18 @@
         $c/r:data-port[@direction eq 'in'] ! (
           '  if (' || @port-member || '.isNew()) {',
           '    ' || @port-member || '.read();',
-          if (xs:boolean(@accessor-declared)) then '    ' || $rc || '::' || @accessor || '(' || fp:rtm-from-datum(.) || ');'
-          else '    // ' || $rc-name || ' declares no ' || @accessor || '()',
+          if (not(xs:boolean(@accessor-declared))) then ()
+          else if (@convert eq 'primitive') then '    ' || $rc || '::' || @accessor || '(' || fp:rtm-from-datum(.) || ');'
+          else ('    ' || @cpp || ' value;', '    fromIdl' || (if (@convert eq 'sequence') then 'Seq' else '') || '(' || @member || '.data, value);',
+                '    ' || $rc || '::' || @accessor || '(value);'),
+          if (xs:boolean(@accessor-declared)) then () else '    // ' || $rc-name || ' declares no ' || @accessor || '()',
           '  }'),
         if (empty($hook/@call)) then '  // ' || $rc-name || ' declares no update()' else '  ' || $rc || '::' || $hook/@call || '();',
         $c/r:data-port[@direction eq 'out'] ! (
           if (xs:boolean(@accessor-declared)) then (
-            '  ' || @member || '.data = ' || $rc || '::' || @accessor || '()' || (if (@primitive eq 'string') then '.c_str()' else '') || ';',
+            if (@convert eq 'primitive')
+            then '  ' || @member || '.data = ' || $rc || '::' || @accessor || '()' || (if (@primitive eq 'string') then '.c_str()' else '') || ';'
+            else '  toIdl' || (if (@convert eq 'sequence') then 'Seq' else '') || '(' || $rc || '::' || @accessor || '(), ' || @member || '.data);',
             '  setTimestamp(' || @member || ');',
             '  ' || @port-member || '.write();')
           else '  // ' || $rc-name || ' declares no ' || @accessor || '(): ' || @name || ' is not written'),
@@ -331,36 +354,26 @@
       '}')"/>
   </xsl:function>
 
-  <!-- the user class of a component without realizing class: written once -->
+  <!-- the user class of a component without realizing class: written once,
+       in the shared frames (m2t/common/user-class.xsl) with OpenRTM's .h
+       headers and the module entry <Class>Init after the namespace -->
   <xsl:function name="fp:rtm-user-header" as="xs:string">
     <xsl:param name="c" as="element(r:component)"/>
-    <xsl:variable name="pkg" as="xs:string" select="$c/@category"/>
-    <xsl:sequence select="fp:lines((
-      fp:banner('// ', $fp:cpp-xsl, fp:what($c), true()),
-      '#ifndef ' || fp:guard($pkg, $c/@class), '#define ' || fp:guard($pkg, $c/@class), '',
-      '#include &lt;' || $pkg || '/' || $c/@generated-class || '.h&gt;', '',
-      'namespace ' || $pkg || ' {', '',
-      'class ' || $c/@class || ' : public ' || $c/@generated-class, '{', 'public:',
+    <xsl:sequence select="fp:user-class-header($fp:cpp-xsl, $c, $c/@category, $c/@class, $c/@generated-class, (
+      'public:',
       '  explicit ' || $c/@class || '(RTC::Manager* manager) : ' || $c/@generated-class || '(manager) {}',
       '  RTC::ReturnCode_t onInitialize() override;',
-      $c/r:hook[@name ne 'configure'] ! ('  ' || fp:rtm-action-signature(@name) || ' override;'),
-      '};', '', '}  // namespace ' || $pkg, '', fp:rtm-init-decl($c), '',
-      '#endif  // ' || fp:guard($pkg, $c/@class)))"/>
+      $c/r:hook[@name ne 'configure'] ! ('  ' || fp:rtm-action-signature(@name) || ' override;')), '.h', fp:rtm-init-decl($c))"/>
   </xsl:function>
 
   <xsl:function name="fp:rtm-user-source" as="xs:string">
     <xsl:param name="c" as="element(r:component)"/>
-    <xsl:variable name="pkg" as="xs:string" select="$c/@category"/>
-    <xsl:sequence select="fp:lines((
-      fp:banner('// ', $fp:cpp-xsl, fp:what($c), true()),
-      '#include &lt;' || $pkg || '/' || $c/@class || '.h&gt;', '',
-      'namespace ' || $pkg || ' {', '',
+    <xsl:sequence select="fp:user-class-source($fp:cpp-xsl, $c, $c/@category, $c/@class, (
       fp:rtm-spec($c), '',
-      'RTC::ReturnCode_t ' || $c/@class || '::onInitialize()', '{',
-      '  RTC::ReturnCode_t ret = ' || $c/@generated-class || '::onInitialize();', '  // your initialisation', '  return ret;', '}',
-      $c/r:hook[@name ne 'configure'] ! ('', replace(fp:rtm-action-signature(@name), '^(RTC::ReturnCode_t )', '$1' || $c/@class || '::'),
-        '{', '  return RTC::RTC_OK;', '}'),
-      '', '}  // namespace ' || $pkg, '', fp:rtm-init($c)))"/>
+      fp:definition('RTC::ReturnCode_t ' || $c/@class || '::onInitialize()',
+        ('  RTC::ReturnCode_t ret = ' || $c/@generated-class || '::onInitialize();', '  // your initialisation', '  return ret;')),
+      $c/r:hook[@name ne 'configure'] ! ('', fp:definition(replace(fp:rtm-action-signature(@name), '^(RTC::ReturnCode_t )', '$1' || $c/@class || '::'),
+        '  return RTC::RTC_OK;'))), '.h', fp:rtm-init($c))"/>
   </xsl:function>
 
   <!-- CMakeLists.txt: OpenRTM-aist found by its CMake package, one module per component -->
@@ -392,7 +405,7 @@
         'add_library(' || @class || ' MODULE src/' || @generated-class || '.cpp'
           || (if (@kind eq 'base') then ' src/' || @class || '.cpp' else '') || ')',
         'set_target_properties(' || @class || ' PROPERTIES PREFIX &quot;&quot;)',
-        'target_link_libraries(' || @class || (if ($system/r:interface) then ' ' || $pkg || '_idl' else '') || ' ${OPENRTM_LIBRARIES}'
+        'target_link_libraries(' || @class || (if ($system/r:interface or $system/r:data-types[(r:enum | r:struct)[xs:boolean(@idl)]]) then ' ' || $pkg || '_idl' else '') || ' ${OPENRTM_LIBRARIES}'
           || string-join($system/r:library ! (' ' || @target)) || ')',
         'install(TARGETS ' || @class || ' LIBRARY DESTINATION lib/' || $pkg || ')'),
       'install(DIRECTORY conf deploy rtc DESTINATION share/' || $pkg || ')'))"/>

@@ -71,7 +71,8 @@
         '  &lt;/rtc:ConfigurationSet&gt;') else (),
       $c/r:data-port ! ('  &lt;rtc:DataPorts ' || string-join((
           fp:att('rtc:portType', if (@direction eq 'out') then 'DataOutPort' else 'DataInPort'), fp:att('rtc:name', @name),
-          fp:att('rtc:type', @timed), fp:att('rtc:idlFile', 'BasicDataType.idl'), fp:att('rtc:interfaceType', 'corba_cdr'),
+          fp:att('rtc:type', @timed),
+          fp:att('rtc:idlFile', if (starts-with(@timed, 'RTC::')) then 'BasicDataType.idl' else ../../r:data-types/@idl || '.idl'), fp:att('rtc:interfaceType', 'corba_cdr'),
           fp:att('rtc:dataflowType', 'push,pull'), fp:att('rtc:subscriptionType', 'flush,new,periodic')), ' ') || '/&gt;'),
       $c/r:service-port ! (
         '  &lt;rtc:ServicePorts ' || fp:att('rtc:name', @name) || '&gt;',
@@ -166,7 +167,9 @@
         fp:att('rts:instanceName', $end/@instance), fp:att('rts:componentId', $component-id(string($end/@instance)))), ' ') || '/&gt;'"/>
   </xsl:function>
 
-  <!-- StartUp / Activation: a target per instance in start order; its StartAfter instances precede it -->
+  <!-- StartUp / Activation: a target per instance in start order; its StartAfter instances precede it.
+       TargetComponent and PrecedingComponents name an execution context of the instance (rts:id, the
+       id of its ExecutionContexts: "0"), as rtsprofile's TargetExecutionContext reads them -->
   <xsl:function name="fp:rts-sequence" as="xs:string+">
     <xsl:param name="element" as="xs:string"/>
     <xsl:param name="s" as="element(r:system)"/>
@@ -175,11 +178,12 @@
       '  &lt;rts:' || $element || '&gt;',
       $s/r:instance ! (
         '    &lt;rts:targets ' || fp:att('rts:sequence', string(position() - 1)) || '&gt;',
-        '      &lt;rts:TargetComponent ' || fp:att('rts:componentId', $component-id(string(@name))) || ' ' || fp:att('rts:instanceName', @name) || '/&gt;',
+        '      &lt;rts:TargetComponent ' || fp:att('rts:componentId', $component-id(string(@name))) || ' ' || fp:att('rts:instanceName', @name)
+          || ' ' || fp:att('rts:id', '0') || '/&gt;',
         if (r:start-after) then (
           '      &lt;rts:Preceding ' || fp:att('rts:timeout', '10000') || ' ' || fp:att('rts:sendingTiming', 'SYNC') || '&gt;',
           r:start-after ! ('        &lt;rts:PrecedingComponents ' || fp:att('rts:componentId', $component-id(string(@instance))) || ' '
-                            || fp:att('rts:instanceName', @instance) || '/&gt;'),
+                            || fp:att('rts:instanceName', @instance) || ' ' || fp:att('rts:id', '0') || '/&gt;'),
           '      &lt;/rts:Preceding&gt;') else (),
         '    &lt;/rts:targets&gt;'),
       '  &lt;/rts:' || $element || '&gt;')"/>

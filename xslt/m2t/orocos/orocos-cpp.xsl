@@ -343,7 +343,7 @@
           '',
           'protected:',
           $tc/o:operation ! (concat('  ', @return-type, ' ', @name, fp:signature(., true()), ' override;')))
-        else ()))"/>
+        else ()), '.hpp', ())"/>
   </xsl:function>
 
   <xsl:function name="fp:user-source" as="xs:string">
@@ -373,7 +373,7 @@
         $tc/o:operation ! (
           '',
           fp:definition(concat(@return-type, ' ', $cls, '::', @name, fp:signature(., false())),
-            if (@return-type ne 'void') then concat('  return ', @return-sample, ';') else ()))))"/>
+            if (@return-type ne 'void') then concat('  return ', @return-sample, ';') else ()))), '.hpp', ())"/>
   </xsl:function>
 
   <!-- ============================================== component library -->

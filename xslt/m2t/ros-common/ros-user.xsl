@@ -47,9 +47,9 @@
       <xsl:variable name="user" as="xs:string" select="r:realizing-class/@name"/>
       <xsl:sequence select="fp:file(concat('include/', $pkg, '/', @generated-class, '.hpp'), 'generated', $fp:user-xsl, fp:ros-base-header(.))"/>
       <xsl:sequence select="fp:user-class-file(concat('include/', $pkg, '/', $user, '.hpp'), $fp:user-xsl, ., fp:ros-user-signature(.),
-          fp:user-class-header($fp:user-xsl, ., $pkg, $user, @generated-class, ('protected:', fp:hook-declarations(fp:ros-hooks(.), '  ', ' override;'))))"/>
+          fp:user-class-header($fp:user-xsl, ., $pkg, $user, @generated-class, ('protected:', fp:hook-declarations(fp:ros-hooks(.), '  ', ' override;')), '.hpp', ()))"/>
       <xsl:sequence select="fp:user-class-file(concat('src/', $user, '.cpp'), $fp:user-xsl, ., fp:ros-user-signature(.),
-          fp:user-class-source($fp:user-xsl, ., $pkg, $user, fp:ros-user-definitions(.)))"/>
+          fp:user-class-source($fp:user-xsl, ., $pkg, $user, fp:ros-user-definitions(.), '.hpp', ()))"/>
     </xsl:for-each>
   </xsl:function>
 
