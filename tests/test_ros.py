@@ -147,18 +147,21 @@ def test_ros2_remaps_named_from_the_root_follow_a_pushed_namespace() -> None:
     assert not [to for to in remaps.values() if to.startswith("/")]
 
 
-def test_a_port_of_a_data_type_converts_to_the_users_type_in_the_global_namespace() -> None:
-    """ROS 1: inside namespace <pkg>, JointSample names the generated message, so the generated code
-    names the model's type ::JointSample (issue 10 item 8: it did not compile; catkin builds the fixture below)."""
+def test_a_port_of_a_data_type_converts_to_the_packages_type() -> None:
+    """ROS 1: jointstate::JointSample is the generated message, so the model's type is
+    ::jointstate::types::JointSample (issue 10 item 8, issue 37 item 4; catkin builds the fixture below)."""
     for target in TARGETS:
         files = _files(_run(ROOT / "fixtures/ros/jointstate", target))
-        assert "::SampledPIDController::setMeasuredPosition(from_msg_value<::JointSample>(*msg));" \
+        assert "::SampledPIDController::setMeasuredPosition(from_msg_value<::jointstate::types::JointSample>(*msg));" \
             in files["src/PIDController.cpp"]
         assert "to_msg(::SimulatedJoint::getMeasuredPosition(), msg);" in files["src/RobotInterface.cpp"]
         assert files["msg/JointSample.msg"].splitlines()[-2:] == ["float64 position", "float64 velocity"]
         conversions = files["include/jointstate/msg_conversions.hpp"]
-        assert "inline void from_msg(const jointstate::" in conversions and "::JointSample& v)" in conversions
-        assert "struct JointSample" in files["include/JointSample.hpp"]
+        assert "inline void from_msg(const jointstate::" in conversions \
+            and "::jointstate::types::JointSample& v)" in conversions
+        header = files["include/JointSample.hpp"]
+        assert "namespace jointstate {\nnamespace types {\n" in header and "struct JointSample\n" in header
+        assert "#ifdef ROBOMDA_GLOBAL_TYPE_NAMES\nusing ::jointstate::types::JointSample;\n#endif" in header
 
 
 def test_warnings() -> None:

@@ -21,12 +21,12 @@
     mapped     an entry of the type map for the element's type name, then
                for its primitive kind (user map first): its message, C++
                type and parameter types as the entry says
-    struct     a UML DataType no entry maps: the C++ struct ::<Name> of the
+    struct     a UML DataType no entry maps: the C++ struct ::<pkg>::types::<Name> of the
                generated include/<Name>.hpp (m2t/common/data-types.xsl, the
                same header the Orocos target writes), carried as the
                generated message <Name> (msg/<Name>.msg: one field per
                attribute, inherited ones first)
-    enum       a UML Enumeration with a literal: a plain enum ::<Name>,
+    enum       a UML Enumeration with a literal: a plain enum ::<pkg>::types::<Name>,
                carried as the generated message <Name>: one int32 constant
                per literal (its number: its position) and the field value
     sequence   a multiplicity other than 1: std::vector of the element
@@ -73,9 +73,10 @@
     <xsl:variable name="enum" as="xs:boolean" select="exists($def/self::pim:enumeration)"/>
     <xsl:variable name="msg" as="xs:string" select="f:upper-camel($def/@name)"/>
     <xsl:if test="not($enum) or exists($def/pim:literal)">
-      <ty:type kind="{if ($enum) then 'enum' else 'struct'}" primitive="" cpp="::{$name}" msg="{$msg}" field=""
+      <xsl:variable name="cpp" as="xs:string" select="fp:type-cpp-name($def, fp:package-name($package-name, root($def)/pim:model))"/>
+      <ty:type kind="{if ($enum) then 'enum' else 'struct'}" primitive="" cpp="{$cpp}" msg="{$msg}" field=""
                msg-field="{$msg}" param1="" param2="" header="{$name}.hpp" type-ref="{$def/@id}"
-               sample="{if ($enum) then '::' || $name || '::' || f:cpp-identifier($def/pim:literal[1]/@name) else '::' || $name || '()'}"/>
+               sample="{if ($enum) then $cpp || '::' || f:cpp-identifier($def/pim:literal[1]/@name) else $cpp || '()'}"/>
     </xsl:if>
   </xsl:function>
 
