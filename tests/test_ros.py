@@ -164,6 +164,53 @@ def test_a_port_of_a_data_type_converts_to_the_packages_type() -> None:
         assert "#ifdef ROBOMDA_GLOBAL_TYPE_NAMES\nusing ::jointstate::types::JointSample;\n#endif" in header
 
 
+def test_a_stamped_data_type_carries_a_std_msgs_header() -> None:
+    """Issue 37 item 6: JointSample specialises Stamped (stamp: Real, frameId: String = "joint1"): its
+    message begins with std_msgs/Header, which the conversions fill from stamp and frameId and back,
+    the publisher stamps a datum without a stamp with the time of publishing, and the package depends
+    on std_msgs for it (catkin builds the fixture: test_ros1_package_builds_with_catkin)."""
+    for target in TARGETS:
+        files = _files(_run(ROOT / "fixtures/ros/jointstate", target))
+        body = [line for line in files["msg/JointSample.msg"].splitlines() if not line.startswith("#")]
+        assert body == ["std_msgs/Header header", "float64 position", "float64 velocity"], body
+        header = files["include/JointSample.hpp"]
+        assert "  double stamp = 0.0;\n  std::string frameId = \"joint1\";\n  double position" in header
+        conversions = files["include/jointstate/msg_conversions.hpp"]
+        assert "  m.header.frame_id = v.frameId;" in conversions and "  v.frameId = m.header.frame_id;" in conversions
+        publisher = files["src/RobotInterface.cpp"]
+        if target == "ros1":
+            assert "  m.header.stamp = ros::Time(v.stamp);" in conversions
+            assert "  v.stamp = m.header.stamp.toSec();" in conversions
+            assert "if (msg.header.stamp.isZero()) {\n      msg.header.stamp = ros::Time::now();" in publisher
+            assert "generate_messages(DEPENDENCIES std_msgs)" in files["CMakeLists.txt"]
+        else:
+            assert "  m.header.stamp.sec = static_cast<std::int32_t>(std::floor(v.stamp));" in conversions
+            assert "  v.stamp = static_cast<double>(m.header.stamp.sec) + 1e-9 * m.header.stamp.nanosec;" in conversions
+            assert "msg.header.stamp.nanosec == 0) {\n      msg.header.stamp = this->now();" in publisher
+            assert '"msg/JointSample.msg" DEPENDENCIES std_msgs)' in files["CMakeLists.txt"]
+        assert "<depend>std_msgs</depend>" in files["package.xml"]
+        # the controller only receives: no stamping there
+        assert "header.stamp" not in files["src/PIDController.cpp"]
+
+
+def test_a_stamped_type_without_its_two_attributes_is_ros120(tmp_path: Path) -> None:
+    """A Stamped whose frameId is an Integer: a warning on Stamped, no header, both fields ordinary."""
+    src = (ROOT / "fixtures/ros/jointstate/model.xmi").read_text(encoding="utf-8")
+    start = src.index('name="frameId"')
+    end = src.index("</ownedAttribute>", start)
+    attribute = src[start:end]
+    changed = attribute.replace("#String", "#Integer").split("<defaultValue")[0] + "  "
+    model = tmp_path / "model.xmi"
+    model.write_text(src[:start] + changed + src[end:], encoding="utf-8")
+    for target in TARGETS:
+        done = generate(model, tmp_path / "out", target, write=False)
+        ros120 = [w for w in done.warnings if w.code == "ROS120"]
+        assert len(ros120) == 1 and "'Stamped'" in ros120[0].message, done.warnings
+        files = _files(done)
+        body = [line for line in files["msg/JointSample.msg"].splitlines() if not line.startswith("#")]
+        assert body == ["float64 stamp", "int32 frame_id", "float64 position", "float64 velocity"], body
+
+
 def test_warnings() -> None:
     ros2 = _run(ROOT / "fixtures/cases/pid", "ros2")
     assert [w.code for w in ros2.warnings] == ["ROS100"]  # deployed on ROS (1), generated for ROS 2

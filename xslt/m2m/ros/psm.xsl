@@ -430,7 +430,9 @@
     <xsl:choose>
       <xsl:when test="$type/@kind = ('struct', 'enum')">
         <r:message msg="{$type/@msg}" field="" cpp-type="{$type/@cpp}" sample="{$type/@sample}" generated="true"
-                   type="{$type/@type-ref}"/>
+                   type="{$type/@type-ref}">
+          <xsl:if test="fp:stamped(fp:type-def($data-port))"><xsl:attribute name="stamped" select="'true'"/></xsl:if>
+        </r:message>
       </xsl:when>
       <xsl:when test="$type/@kind eq 'sequence' and $type/@msg ne ''">
         <r:message msg="{$type/@msg}" field="data" cpp-type="{$type/@cpp}" sample="{$type/@sample}" generated="false"

@@ -25,7 +25,9 @@
   <xsl:function name="fp:ros1-deps" as="xs:string*">
     <xsl:param name="package" as="element(r:package)"/>
     <xsl:sequence select="sort(distinct-values(('roscpp',
-        ($package/r:node/r:port/r:message/@msg, $package/r:node/r:service/@srv, $package/r:node/r:service-client/@srv)[contains(., '/')] ! substring-before(., '/'))))"/>
+        ($package/r:node/r:port/r:message/@msg, $package/r:node/r:service/@srv, $package/r:node/r:service-client/@srv)[contains(., '/')] ! substring-before(., '/'),
+        (: a stamped message's std_msgs/Header :)
+        $package/r:types/*[@stamped eq 'true'][1] ! 'std_msgs')))"/>
   </xsl:function>
 
   <xsl:function name="fp:ros1-cmakelists" as="xs:string">
@@ -44,7 +46,7 @@
         if ($msgs) then (
           '',
           concat('add_message_files(FILES ', string-join($package/r:types/*/@message ! (. || '.msg'), ' '), ')'),
-          'generate_messages()')
+          if ($package/r:types/*[@stamped eq 'true']) then 'generate_messages(DEPENDENCIES std_msgs)' else 'generate_messages()')
         else (),
         '',
         'catkin_package(',
