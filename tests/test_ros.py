@@ -584,11 +584,36 @@ def test_ros1_composites_run_under_roscore_with_every_connection_live(app: str, 
             assert "success: True" in answer.stdout, answer.stdout + answer.stderr
 
 
+def test_ros1_a_list_of_mappings_parameter_is_read_by_the_node(catkin_ws: Path) -> None:
+    """Issue 37: the node reads `stages` item by item: a user value with six items, or one whose member
+    is a string, is logged (the member keeps its value); seven good items with a member left out are not."""
+    user = catkin_ws / "src/structured/config"
+    pristine = {k: (user / f"ctrl{k}.user.yaml").read_text() for k in (1, 2, 3)}
+    item = "{stiffness: 100, damping: 5.0, maxTorque: 10.0}"
+    values = {1: f"stages: [{', '.join([item] * 6)}]\n",
+              2: f"stages: [{', '.join([item] * 6 + ['{stiffness: stiff}'])}]\n",
+              3: f"stages: [{', '.join([item] * 6 + ['{damping: 1.0}'])}]\n"}
+    printed = catkin_ws / "structured-items.out"
+    try:
+        for k, text in values.items():
+            (user / f"ctrl{k}.user.yaml").write_text(text)
+        with _roscore_running(catkin_ws, catkin_ws / "src/structured/launch/structured.launch", printed) as env:
+            _wait_for(env, {f"/ctrl{k}" for k in range(1, 5)}, {"/state1", "/torques1"})
+            time.sleep(2)
+    finally:
+        for k, text in pristine.items():
+            (user / f"ctrl{k}.user.yaml").write_text(text)
+    said = printed.read_text(errors="replace")
+    rejected = [line for line in said.splitlines() if "parameter stages: not a list of 7 mappings" in line]
+    assert len(rejected) == 2, said[-3000:]  # ctrl1 (six items) and ctrl2 (a string stiffness), not ctrl3
+    assert "(stiffness, damping, maxTorque)" in rejected[0]
+
+
 def test_ros1_structured_parameters_reach_the_nodes(catkin_ws: Path) -> None:
     """Issue 37: fixture `structured`'s property of each structured kind is a parameter with the value
     the Orocos deployment formats give it (tests/test_orocos_deploy.py), and the node reads every one
     without a complaint (a fixed array of another size or an unknown enumeration literal is logged as
-    an error to /rosout). `stages` (an array of a data type) is no ROS parameter (ROS107 names it)."""
+    an error to /rosout). `stages` (an array of a data type) is a list of mappings on ROS 1."""
     yaml = pytest.importorskip("yaml", reason="PyYAML not installed")
     printed = catkin_ws / "structured-roslaunch.out"
     with _roscore_running(catkin_ws, catkin_ws / "src/structured/launch/structured.launch", printed) as env:
@@ -600,7 +625,8 @@ def test_ros1_structured_parameters_reach_the_nodes(catkin_ws: Path) -> None:
             "gains": gains, "desired": [0.0, 0.5, 0.0, -1.0, 0.0, 0.5, 0.0], "fallback": "TORQUE",
             "offsets": [1, -2, 3, 0, 0, 0, 7], "limits": [1.5, 2.5],
             "limit": {"torque": [0.0] * 7, "gains": gains}}
-        assert "history" not in got and "stages" not in got  # empty: the node's default; stages: ROS107
+        assert got.get("stages") == [gains] * 7  # a list of mappings (issue 37): ROS 2 has none, ROS107
+        assert "history" not in got  # empty: the node's default
         time.sleep(2)
         assert set(subprocess.run(["rosnode", "list"], env=env, capture_output=True, text=True).stdout.split()) >= {
             f"/ctrl{k}" for k in range(1, 5)}
