@@ -6,7 +6,7 @@
   fp:type-cpp-name), struct <Name> (its attributes, inherited ones first,
   as members initialised to the model's defaults) or enum <Name>; with
   ROBOMDA_GLOBAL_TYPE_NAMES defined, also a global using-declaration of
-  it. The atomic code includes it by that name too (the generated
+  it (after the include guard: a using-declaration may be repeated). The atomic code includes it by that name too (the generated
   package's include/ directory comes first on the include path of the
   atomic-code library).
 
@@ -73,17 +73,17 @@
           $fields ! ('  ' || @cpp-type || ' ' || @member || ' = ' || @cpp-default || ';'
                      || (if (*:doc) then '  // ' || normalize-space(*:doc) else '')),
           '};'),
+        if (exists($namespaces)) then ('', reverse($namespaces) ! ('}  // namespace ' || .)) else (),
+        '',
+        '#endif',
         if (exists($namespaces)) then (
           '',
-          reverse($namespaces) ! ('}  // namespace ' || .),
-          '',
-          '// Code written for the global name (atomic code that one package',
-          '// and another both build) defines ROBOMDA_GLOBAL_TYPE_NAMES.',
+          '// Code written for the global name (atomic code that one package and another',
+          '// both build) defines ROBOMDA_GLOBAL_TYPE_NAMES before it includes this header;',
+          '// outside the include guard, so that it holds after an earlier include too.',
           '#ifdef ROBOMDA_GLOBAL_TYPE_NAMES',
           'using ' || $type/@cpp-name || ';',
           '#endif')
-        else (),
-        '',
-        '#endif'))"/>
+        else ()))"/>
   </xsl:function>
 </xsl:stylesheet>
