@@ -66,9 +66,9 @@ def test_the_typekit_registers_every_type_the_components_use() -> None:
     files = _files(QUADARM / "model.xmi")
     typekit = files["src/typekit.cpp"]
     for line in ('types->addType(new ControlModeTypeInfo());',
-                 'types->addType(new RTT::types::StructTypeInfo<::JointState>("/quadarm/JointState"));',
+                 'types->addType(new RTT::types::StructTypeInfo<::quadarm::types::JointState>("/quadarm/JointState"));',
                  'archive & make_nvp("position", value.position);',  # inherited from JointAngles
-                 'to_string[::ControlMode::IMPEDANCE] = "IMPEDANCE";'):
+                 'to_string[::quadarm::types::ControlMode::IMPEDANCE] = "IMPEDANCE";'):
         assert line in typekit
     # JointAngles is only a general of JointState: no port or property uses it
     assert "JointAngles" not in typekit and "include/JointAngles.hpp" not in files
@@ -200,7 +200,7 @@ def test_ros_messages_carry_nested_types_arrays_and_enumerations(target: str) ->
     assert _body(files["msg/Gains.msg"]) == ["float64 stiffness", "float64 damping", "float64 max_torque"]
     conversions = files["include/quadarm/msg_conversions.hpp"]
     assert "m.max_torque = v.maxTorque;" in conversions and "from_msg(m.mode, v.mode);" in conversions
-    assert "v = static_cast<::ControlMode>(m.value);" in conversions
+    assert "v = static_cast<::quadarm::types::ControlMode>(m.value);" in conversions
 
 
 def test_the_data_type_headers_are_the_same_on_every_target() -> None:

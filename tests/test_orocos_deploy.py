@@ -270,3 +270,79 @@ def test_structured_values_are_the_same_in_every_format(tmp_root: Path) -> None:
         for name, value in _STRUCTURED.items():
             assert seen[fmt].get(name) == value, (fmt, name, seen[fmt].get(name))
     assert seen["xml"] == seen["ops"] == seen["lua"]
+
+
+# both packages' arm and controller in one deployer, each loop closed within its package; the
+# controllers start at desired[1] = 0.5, so an arm whose joint 1 moved has had torques through
+# its package's ports, and the controller its joint states
+_SIDE_BY_SIDE = """require("rttlib")
+local tc = rtt.getTC()
+local depl = tc:getName() == "Deployer" and tc or tc:getPeer("Deployer")
+local function need(c, what) if not c then print("FAILED " .. what) end return c end
+local cp = rtt.Variable("ConnPolicy")
+local packages = {"quadarm", "structured"}
+for _, pkg in ipairs(packages) do
+  need(depl:loadLibrary(pkg .. "/" .. pkg .. "-typekit"), "loadLibrary " .. pkg .. "-typekit")
+  need(depl:loadLibrary(pkg .. "/" .. pkg), "loadLibrary " .. pkg)
+  local arm, ctrl = pkg .. "_arm", pkg .. "_ctrl"
+  need(depl:loadComponent(arm, pkg .. "::ArmInterface"), "loadComponent " .. arm)
+  need(depl:loadComponent(ctrl, pkg .. "::JointPositionController"), "loadComponent " .. ctrl)
+  for _, n in ipairs({arm, ctrl}) do
+    need(depl:setActivity(n, 0.01, 0, rtt.globals.ORO_SCHED_OTHER), "setActivity " .. n)
+  end
+  need(depl:connect(arm .. ".jointState", ctrl .. ".jointState", cp), "connect " .. arm)
+  need(depl:connect(ctrl .. ".torques", arm .. ".torques", cp), "connect " .. ctrl)
+  local p = depl:getPeer(ctrl):getProperty("desired")
+  local v = p:get(); v[1] = 0.5; p:set(v)
+  for _, n in ipairs({arm, ctrl}) do
+    local t = depl:getPeer(n)
+    need(t:configure(), "configure " .. n)
+    need(t:start(), "start " .. n)
+  end
+end
+local readers = {}
+for _, pkg in ipairs(packages) do
+  readers[pkg] = rttlib.port_clone_conn(depl:getPeer(pkg .. "_arm"):getPort("jointState"))
+end
+rtt.sleep(1, 0)
+for _, pkg in ipairs(packages) do
+  for _, n in ipairs({"_arm", "_ctrl"}) do
+    local t = depl:getPeer(pkg .. n)
+    for _, port in ipairs({"jointState", "torques"}) do
+      print("TYPE " .. pkg .. n .. "." .. port .. " " .. t:getPort(port):info().type)
+    end
+    print("STATE " .. pkg .. n .. " " .. t:getState())
+  end
+  local fs, js = readers[pkg]:read()
+  print("JOINT1 " .. pkg .. " " .. tostring(fs) .. " " .. tostring(js.position[1]))
+end
+for _, n in ipairs(depl:getPeers()) do local p = depl:getPeer(n); p:stop(); p:cleanup() end
+os.exit(0)
+"""
+
+
+def test_two_packages_with_a_type_of_one_name_run_side_by_side(tmp_root: Path) -> None:
+    """Issue 37 item 4: quadarm and structured each define JointState, JointTorques, Gains and
+    ControlMode (C++ quadarm::types::JointState and structured::types::JointState, RTT
+    /quadarm/JointState and /structured/JointState). Both typekits and both component libraries
+    load into one deployer, every component runs, each port has its own package's type, and
+    data flows around each package's loop. With global C++ types, the second package's
+    components threw in their constructors."""
+    out_q, _ = _built("quadarm/model.xmi", tmp_root)
+    out_s, _ = _built("structured/model.xmi", tmp_root)
+    (tmp_root / "side.lua").write_text(_SIDE_BY_SIDE)
+    log = tmp_root / "side.log"
+    run = _bash(f"oro_add_prefix {out_q}/install && oro_add_prefix {out_s}/install && ORO_LOGFILE={log} "
+                f"timeout -s INT 120 rttlua {tmp_root / 'side.lua'} </dev/null", tmp_root)
+    said = run.stdout + run.stderr
+    assert "FAILED" not in said, said[-3000:]
+    for pkg in ("quadarm", "structured"):
+        for comp in ("_arm", "_ctrl"):
+            assert f"STATE {pkg}{comp} Running" in said, said[-3000:]
+            assert f"TYPE {pkg}{comp}.jointState /{pkg}/JointState" in said, said[-3000:]
+            assert f"TYPE {pkg}{comp}.torques /{pkg}/JointTorques" in said, said[-3000:]
+        joint1 = next(line.split() for line in said.splitlines() if line.startswith(f"JOINT1 {pkg} "))
+        assert joint1[2] in ("NewData", "OldData") and float(joint1[3]) > 0.0, joint1
+    errors = [l for l in log.read_text(errors="replace").splitlines() if "ERROR" in l or "[ Warning]" in l
+              and "Logging Activated" not in l]
+    assert not errors, errors[:10]

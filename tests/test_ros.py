@@ -147,18 +147,68 @@ def test_ros2_remaps_named_from_the_root_follow_a_pushed_namespace() -> None:
     assert not [to for to in remaps.values() if to.startswith("/")]
 
 
-def test_a_port_of_a_data_type_converts_to_the_users_type_in_the_global_namespace() -> None:
-    """ROS 1: inside namespace <pkg>, JointSample names the generated message, so the generated code
-    names the model's type ::JointSample (issue 10 item 8: it did not compile; catkin builds the fixture below)."""
+def test_a_port_of_a_data_type_converts_to_the_packages_type() -> None:
+    """ROS 1: jointstate::JointSample is the generated message, so the model's type is
+    ::jointstate::types::JointSample (issue 10 item 8, issue 37 item 4; catkin builds the fixture below)."""
     for target in TARGETS:
         files = _files(_run(ROOT / "fixtures/ros/jointstate", target))
-        assert "::SampledPIDController::setMeasuredPosition(from_msg_value<::JointSample>(*msg));" \
+        assert "::SampledPIDController::setMeasuredPosition(from_msg_value<::jointstate::types::JointSample>(*msg));" \
             in files["src/PIDController.cpp"]
         assert "to_msg(::SimulatedJoint::getMeasuredPosition(), msg);" in files["src/RobotInterface.cpp"]
         assert files["msg/JointSample.msg"].splitlines()[-2:] == ["float64 position", "float64 velocity"]
         conversions = files["include/jointstate/msg_conversions.hpp"]
-        assert "inline void from_msg(const jointstate::" in conversions and "::JointSample& v)" in conversions
-        assert "struct JointSample" in files["include/JointSample.hpp"]
+        assert "inline void from_msg(const jointstate::" in conversions \
+            and "::jointstate::types::JointSample& v)" in conversions
+        header = files["include/JointSample.hpp"]
+        assert "namespace jointstate {\nnamespace types {\n" in header and "struct JointSample\n" in header
+        assert "#ifdef ROBOMDA_GLOBAL_TYPE_NAMES\nusing ::jointstate::types::JointSample;\n#endif" in header
+
+
+def test_a_stamped_data_type_carries_a_std_msgs_header() -> None:
+    """Issue 37 item 6: JointSample specialises Stamped (stamp: Real, frameId: String = "joint1"): its
+    message begins with std_msgs/Header, which the conversions fill from stamp and frameId and back,
+    the publisher stamps a datum without a stamp with the time of publishing, and the package depends
+    on std_msgs for it (catkin builds the fixture: test_ros1_package_builds_with_catkin)."""
+    for target in TARGETS:
+        files = _files(_run(ROOT / "fixtures/ros/jointstate", target))
+        body = [line for line in files["msg/JointSample.msg"].splitlines() if not line.startswith("#")]
+        assert body == ["std_msgs/Header header", "float64 position", "float64 velocity"], body
+        header = files["include/JointSample.hpp"]
+        assert "  double stamp = 0.0;\n  std::string frameId = \"joint1\";\n  double position" in header
+        conversions = files["include/jointstate/msg_conversions.hpp"]
+        assert "  m.header.frame_id = v.frameId;" in conversions and "  v.frameId = m.header.frame_id;" in conversions
+        publisher = files["src/RobotInterface.cpp"]
+        if target == "ros1":
+            assert "  m.header.stamp = ros::Time(v.stamp);" in conversions
+            assert "  v.stamp = m.header.stamp.toSec();" in conversions
+            assert "if (msg.header.stamp.isZero()) {\n      msg.header.stamp = ros::Time::now();" in publisher
+            assert "generate_messages(DEPENDENCIES std_msgs)" in files["CMakeLists.txt"]
+        else:
+            assert "  m.header.stamp.sec = static_cast<std::int32_t>(std::floor(v.stamp));" in conversions
+            assert "  v.stamp = static_cast<double>(m.header.stamp.sec) + 1e-9 * m.header.stamp.nanosec;" in conversions
+            assert "msg.header.stamp.nanosec == 0) {\n      msg.header.stamp = this->now();" in publisher
+            assert '"msg/JointSample.msg" DEPENDENCIES std_msgs)' in files["CMakeLists.txt"]
+        assert "<depend>std_msgs</depend>" in files["package.xml"]
+        # the controller only receives: no stamping there
+        assert "header.stamp" not in files["src/PIDController.cpp"]
+
+
+def test_a_stamped_type_without_its_two_attributes_is_ros120(tmp_path: Path) -> None:
+    """A Stamped whose frameId is an Integer: a warning on Stamped, no header, both fields ordinary."""
+    src = (ROOT / "fixtures/ros/jointstate/model.xmi").read_text(encoding="utf-8")
+    start = src.index('name="frameId"')
+    end = src.index("</ownedAttribute>", start)
+    attribute = src[start:end]
+    changed = attribute.replace("#String", "#Integer").split("<defaultValue")[0] + "  "
+    model = tmp_path / "model.xmi"
+    model.write_text(src[:start] + changed + src[end:], encoding="utf-8")
+    for target in TARGETS:
+        done = generate(model, tmp_path / "out", target, write=False)
+        ros120 = [w for w in done.warnings if w.code == "ROS120"]
+        assert len(ros120) == 1 and "'Stamped'" in ros120[0].message, done.warnings
+        files = _files(done)
+        body = [line for line in files["msg/JointSample.msg"].splitlines() if not line.startswith("#")]
+        assert body == ["float64 stamp", "int32 frame_id", "float64 position", "float64 velocity"], body
 
 
 def test_warnings() -> None:
@@ -609,11 +659,36 @@ def test_ros1_composites_run_under_roscore_with_every_connection_live(app: str, 
             assert "success: True" in answer.stdout, answer.stdout + answer.stderr
 
 
+def test_ros1_a_list_of_mappings_parameter_is_read_by_the_node(catkin_ws: Path) -> None:
+    """Issue 37: the node reads `stages` item by item: a user value with six items, or one whose member
+    is a string, is logged (the member keeps its value); seven good items with a member left out are not."""
+    user = catkin_ws / "src/structured/config"
+    pristine = {k: (user / f"ctrl{k}.user.yaml").read_text() for k in (1, 2, 3)}
+    item = "{stiffness: 100, damping: 5.0, maxTorque: 10.0}"
+    values = {1: f"stages: [{', '.join([item] * 6)}]\n",
+              2: f"stages: [{', '.join([item] * 6 + ['{stiffness: stiff}'])}]\n",
+              3: f"stages: [{', '.join([item] * 6 + ['{damping: 1.0}'])}]\n"}
+    printed = catkin_ws / "structured-items.out"
+    try:
+        for k, text in values.items():
+            (user / f"ctrl{k}.user.yaml").write_text(text)
+        with _roscore_running(catkin_ws, catkin_ws / "src/structured/launch/structured.launch", printed) as env:
+            _wait_for(env, {f"/ctrl{k}" for k in range(1, 5)}, {"/state1", "/torques1"})
+            time.sleep(2)
+    finally:
+        for k, text in pristine.items():
+            (user / f"ctrl{k}.user.yaml").write_text(text)
+    said = printed.read_text(errors="replace")
+    rejected = [line for line in said.splitlines() if "parameter stages: not a list of 7 mappings" in line]
+    assert len(rejected) == 2, said[-3000:]  # ctrl1 (six items) and ctrl2 (a string stiffness), not ctrl3
+    assert "(stiffness, damping, maxTorque)" in rejected[0]
+
+
 def test_ros1_structured_parameters_reach_the_nodes(catkin_ws: Path) -> None:
     """Issue 37: fixture `structured`'s property of each structured kind is a parameter with the value
     the Orocos deployment formats give it (tests/test_orocos_deploy.py), and the node reads every one
     without a complaint (a fixed array of another size or an unknown enumeration literal is logged as
-    an error to /rosout). `stages` (an array of a data type) is no ROS parameter (ROS107 names it)."""
+    an error to /rosout). `stages` (an array of a data type) is a list of mappings on ROS 1."""
     yaml = pytest.importorskip("yaml", reason="PyYAML not installed")
     printed = catkin_ws / "structured-roslaunch.out"
     with _roscore_running(catkin_ws, catkin_ws / "src/structured/launch/structured.launch", printed) as env:
@@ -625,7 +700,8 @@ def test_ros1_structured_parameters_reach_the_nodes(catkin_ws: Path) -> None:
             "gains": gains, "desired": [0.0, 0.5, 0.0, -1.0, 0.0, 0.5, 0.0], "fallback": "TORQUE",
             "offsets": [1, -2, 3, 0, 0, 0, 7], "limits": [1.5, 2.5],
             "limit": {"torque": [0.0] * 7, "gains": gains}}
-        assert "history" not in got and "stages" not in got  # empty: the node's default; stages: ROS107
+        assert got.get("stages") == [gains] * 7  # a list of mappings (issue 37): ROS 2 has none, ROS107
+        assert "history" not in got  # empty: the node's default
         time.sleep(2)
         assert set(subprocess.run(["rosnode", "list"], env=env, capture_output=True, text=True).stdout.split()) >= {
             f"/ctrl{k}" for k in range(1, 5)}

@@ -60,7 +60,7 @@ def test_a_component_without_class_gets_a_base_and_a_user_class(target: str, tmp
     base = files["include/usercode/ArmBase.hpp"][1]
     for decl in ("virtual bool configure() = 0;", "virtual void setCmd(const double& value) = 0;",
                  "virtual double getState() const = 0;", "virtual void reset() = 0;", "virtual bool calibrate() = 0;",
-                 "virtual void enable(bool data) = 0;", "::Mode mode = ::Mode::IDLE;", "::Gains gains;",
+                 "virtual void enable(bool data) = 0;", "::usercode::types::Mode mode = ::usercode::types::Mode::IDLE;", "::usercode::types::Gains gains;",
                  'std::string label = "left";', "int count = 3;", "double gain = 1.5;", "#include <Gains.hpp>"):
         assert decl in base, decl
     user = files["include/usercode/ArmImpl.hpp"][1]

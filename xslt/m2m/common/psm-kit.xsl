@@ -17,6 +17,7 @@
 
   Functions
     fp:package-name($requested, $model)  the package name ('' = from model)
+    fp:type-cpp-name($def, $package)  the C++ name of a model data type or enumeration
     fp:on-target($instance, $middleware)  whether the target takes the instance
     fp:check-targets($model, $instances, $middleware, $package, $codes)  nothing to generate,
                                  instances taken though deployed elsewhere, each one left out
@@ -164,6 +165,20 @@
     <xsl:param name="requested" as="xs:string"/>
     <xsl:param name="model" as="element(pim:model)"/>
     <xsl:sequence select="f:snake-case(if (normalize-space($requested)) then $requested else $model/@name)"/>
+  </xsl:function>
+
+  <!-- the C++ name of the model's data type or enumeration $def in package
+       $package: ::<package>::types::<Name>. The package's namespace, as its
+       RTT type name /<package>/<Name> and its ROS message <package>/<Name>
+       are, so that two packages' JointState are two C++ types in one
+       process; and below it "types", because ROS 1 declares the package's
+       generated message as <package>::JointState (messages and components
+       are UpperCamel, so no ROS 1 message or component is named "types";
+       ROS 2's are in <package>::msg). docs/profile.md -->
+  <xsl:function name="fp:type-cpp-name" as="xs:string">
+    <xsl:param name="def" as="element()"/>
+    <xsl:param name="package" as="xs:string"/>
+    <xsl:sequence select="'::' || $package || '::types::' || f:cpp-identifier($def/@name)"/>
   </xsl:function>
 
   <!-- ================================================ operation calls -->

@@ -14,12 +14,12 @@
   Types
     primitive  the row of types.xml (RTT's own types; int16 / uint16 /
                octet as int / unsigned int, types.xml says why)
-    struct     a UML DataType: the C++ struct ::<Name> declared in the
+    struct     a UML DataType: the C++ struct ::<pkg>::types::<Name> declared in the
                generated include/<Name>.hpp, with its attributes (inherited
                ones first) as members initialised to their defaults; RTT
                type "/<pkg>/<Name>" (StructTypeInfo, members by boost
                serialization; qualified by the package as orogen's are)
-    enum       a UML Enumeration: a plain enum ::<Name> in include/<Name>.hpp
+    enum       a UML Enumeration: a plain enum ::<pkg>::types::<Name> in include/<Name>.hpp
                (RTT 2.10's EnumTypeInfo converts it to int implicitly, which
                an enum class does not; code names a literal <Name>::<LITERAL>);
                RTT type "/<pkg>/<Name>" (a literal's name in cpf XML and
@@ -60,10 +60,12 @@
     <xsl:variable name="name" as="xs:string" select="f:cpp-identifier($def/@name)"/>
     <xsl:variable name="enum" as="xs:boolean" select="exists($def/self::pim:enumeration)"/>
     <xsl:if test="not($enum) or exists($def/pim:literal)">
-      <xsl:variable name="rtt" as="xs:string" select="'/' || fp:package-name($package-name, root($def)/pim:model) || '/' || $name"/>
-      <ty:type kind="{if ($enum) then 'enum' else 'struct'}" primitive="" cpp="::{$name}" rtt="{$rtt}"
+      <xsl:variable name="package" as="xs:string" select="fp:package-name($package-name, root($def)/pim:model)"/>
+      <xsl:variable name="rtt" as="xs:string" select="'/' || $package || '/' || $name"/>
+      <xsl:variable name="cpp" as="xs:string" select="fp:type-cpp-name($def, $package)"/>
+      <ty:type kind="{if ($enum) then 'enum' else 'struct'}" primitive="" cpp="{$cpp}" rtt="{$rtt}"
                xml="{if ($enum) then 'string' else $rtt}" header="{$name}.hpp" type-ref="{$def/@id}"
-               sample="{if ($enum) then '::' || $name || '::' || f:cpp-identifier($def/pim:literal[1]/@name) else '::' || $name || '()'}"
+               sample="{if ($enum) then $cpp || '::' || f:cpp-identifier($def/pim:literal[1]/@name) else $cpp || '()'}"
                xml-sample="" pass="{if ($enum) then 'value' else 'cref'}"/>
     </xsl:if>
   </xsl:function>

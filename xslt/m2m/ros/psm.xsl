@@ -111,7 +111,8 @@
     ROS105  a required interface no connector binds to a provider
     ROS106  a required operation the realizing class does not declare
     ROS107  an attribute the convention would make a parameter that has a
-            type the ROS type map cannot carry (it is no parameter)
+            type the ROS type map cannot carry (it is no parameter): an
+            array of a data type on ROS 2 (ROS 1 reads a list of mappings)
     ROS108  a bounded array in a ROS 1 message (types.xsl)
     ROS109  a data type no port carries that cannot be declared (types.xsl)
     JOB050, JOB051, JOB052  the job coordinators (jobs.xsl)
@@ -451,7 +452,9 @@
     <xsl:choose>
       <xsl:when test="$type/@kind = ('struct', 'enum')">
         <r:message msg="{$type/@msg}" field="" cpp-type="{$type/@cpp}" sample="{$type/@sample}" generated="true"
-                   type="{$type/@type-ref}"/>
+                   type="{$type/@type-ref}">
+          <xsl:if test="fp:stamped(fp:type-def($data-port))"><xsl:attribute name="stamped" select="'true'"/></xsl:if>
+        </r:message>
       </xsl:when>
       <xsl:when test="$type/@kind eq 'sequence' and $type/@msg ne ''">
         <r:message msg="{$type/@msg}" field="data" cpp-type="{$type/@cpp}" sample="{$type/@sample}" generated="false"
@@ -499,7 +502,7 @@
       <xsl:variable name="convention" as="element(pim:attribute)*"
           select="if (exists($configurable)) then () else fp:convention-attributes($bc)"/>
       <xsl:variable name="typed" as="element(pim:attribute)*"
-          select="$convention[fp:param-able(., fp:type(.))]"/>
+          select="$convention[fp:param-able(., fp:type(.)) or fp:item-list-able(., fp:type(.))]"/>
       <xsl:sequence select="fp:warn-skipped-attributes($convention except $typed, 'ROS107', 'ROS parameter')"/>
       <xsl:variable name="parameters" as="element(r:parameter)*"
           select="($configurable, $typed) ! fp:parameters(., f:cpp-identifier(@name))"/>
@@ -747,6 +750,54 @@
         else every $a in fp:attributes(key('fp:id', $type/@type-ref, root($typed))) satisfies fp:param-able($a, fp:type($a))"/>
   </xsl:function>
 
+  <!-- ROS 1: whether an attribute of type $type can be a parameter that
+       is a list of mappings (XmlRpc array of structs): an array of a data
+       type whose attributes are, at any depth, single numbers, Booleans,
+       strings, enumerations or data types of these (ROS 2 parameters hold
+       no list of mappings) -->
+  <xsl:function name="fp:item-list-able" as="xs:boolean">
+    <xsl:param name="typed" as="element()"/>
+    <xsl:param name="type" as="element(ty:type)?"/>
+    <xsl:sequence select="$ros-version eq '1' and $type/@kind eq 'sequence' and $type/ty:type/@kind eq 'struct'
+                          and fp:item-able($typed, $type/ty:type)"/>
+  </xsl:function>
+
+  <xsl:function name="fp:item-able" as="xs:boolean">
+    <xsl:param name="typed" as="element()"/>
+    <xsl:param name="type" as="element(ty:type)?"/>
+    <xsl:sequence select="
+        if ($type/@param1 = ('int', 'double', 'bool', 'std::string') or $type/@kind eq 'enum') then true()
+        else if (not($type/@kind eq 'struct')) then false()
+        else if (fp:type-depth(key('fp:id', $type/@type-ref, root($typed)), (), 'ROS010') lt 0) then false()
+        else every $a in fp:attributes(key('fp:id', $type/@type-ref, root($typed))) satisfies fp:item-able($a, fp:type($a))"/>
+  </xsl:function>
+
+  <!-- the members of one item of a list-of-mappings parameter (data type
+       $def): r:item per attribute, read as param1 (a number, Boolean or
+       string), an enumeration's literal name (r:choice), or a mapping (its
+       r:item children) -->
+  <xsl:function name="fp:param-items" as="element(r:item)*">
+    <xsl:param name="def" as="element()"/>
+    <xsl:for-each select="fp:attributes($def)">
+      <xsl:variable name="type" as="element(ty:type)" select="fp:type(.)"/>
+      <r:item name="{@name}" member="{f:cpp-identifier(@name)}" cpp-type="{$type/@cpp}"
+              kind="{($type/@kind, 'primitive')[1]}" param1="{fp:param-type($type)[1]}"
+              yaml="{if ($type/@kind eq 'struct') then fp:yaml-item(key('fp:id', $type/@type-ref, root(.)))
+                     else fp:param-values(@default[normalize-space(.)], ., $type, @id)[2]}">
+        <xsl:for-each select="$type[@kind eq 'enum']/key('fp:id', @type-ref, root(current()))/pim:literal">
+          <r:choice value="{@name}" cpp="{$type/@cpp}::{f:cpp-identifier(@name)}"/>
+        </xsl:for-each>
+        <xsl:sequence select="$type[@kind eq 'struct'] ! fp:param-items(key('fp:id', @type-ref, root(current())))"/>
+      </r:item>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- the YAML flow mapping of data type $def's model value -->
+  <xsl:function name="fp:yaml-item" as="xs:string">
+    <xsl:param name="def" as="element()"/>
+    <xsl:sequence select="'{' || string-join(fp:param-items($def) ! (@name || ': ' || @yaml), ', ') || '}'"/>
+  </xsl:function>
+
   <!-- the parameters of an attribute: one, or one per attribute of its data
        type at any depth (name and member gains.stiffness); ROS001 when one
        cannot be a parameter -->
@@ -764,6 +815,24 @@
         </xsl:if>
         <xsl:sequence select="fp:attributes(key('fp:id', $type/@type-ref, root($attribute)))
                               ! fp:parameters(., $name || '.' || f:cpp-identifier(@name))"/>
+      </xsl:when>
+      <xsl:when test="fp:item-list-able($attribute, $type)">
+        <xsl:if test="$attribute/@default[normalize-space(.)]">
+          <xsl:sequence select="f:fail('ROS002', $attribute/@id, 'default ''' || $attribute/@default || ''' of an array of data type '''
+              || $attribute/@type-name || ''': the data type''s attributes give its value')"/>
+        </xsl:if>
+        <xsl:variable name="def" as="element()" select="key('fp:id', $type/ty:type/@type-ref, root($attribute))"/>
+        <!-- ROS 1: a list of mappings, one per item; a fixed array has its
+             size of the type's model values, an unbounded one none -->
+        <r:parameter xmi-id="{$attribute/@id}" name="{$name}" member="{$name}" kind="items"
+                     cpp-type="{$type/@cpp}" param1="XmlRpc::XmlRpcValue" param2=""
+                     cpp-default="{$type/@sample}"
+                     yaml-default="{'[' || string-join((1 to xs:integer(($type[@array eq 'fixed']/@size, 0)[1])) ! fp:yaml-item($def), ', ') || ']'}"
+                     item-type="{$type/ty:type/@cpp}">
+          <xsl:if test="$type/@array eq 'fixed'"><xsl:attribute name="size" select="$type/@size"/></xsl:if>
+          <xsl:sequence select="fp:psm-doc($attribute)"/>
+          <xsl:sequence select="fp:param-items($def)"/>
+        </r:parameter>
       </xsl:when>
       <xsl:when test="empty($param-type)">
         <xsl:sequence select="f:fail('ROS001', $attribute/@id, $what || ' has type ''' || fp:type-label($attribute)

@@ -16,17 +16,26 @@
            field is unbounded, the bound is not enforced).
            ROS109 a data type no port carries with an attribute of a type
            the ROS type map cannot map: no header (the atomic code declares it).
+           ROS120 a data type named Stamped that a carried data type is or
+           specialises, without the attributes stamp: Real and frameId:
+           String: no std_msgs/Header, its attributes are ordinary fields.
+
+  Stamped data: a carried data type that is or specialises (at any depth)
+  a data type named Stamped with stamp: Real (seconds) and frameId: String
+  is stamped (r:struct/@stamped, r:message/@stamped): its message begins
+  with std_msgs/Header header, whose stamp and frame_id those two
+  attributes fill (r:field/@header), instead of two fields of their own.
 
   Types (the first that applies)
     mapped     an entry of the type map for the element's type name, then
                for its primitive kind (user map first): its message, C++
                type and parameter types as the entry says
-    struct     a UML DataType no entry maps: the C++ struct ::<Name> of the
+    struct     a UML DataType no entry maps: the C++ struct ::<pkg>::types::<Name> of the
                generated include/<Name>.hpp (m2t/common/data-types.xsl, the
                same header the Orocos target writes), carried as the
                generated message <Name> (msg/<Name>.msg: one field per
                attribute, inherited ones first)
-    enum       a UML Enumeration with a literal: a plain enum ::<Name>,
+    enum       a UML Enumeration with a literal: a plain enum ::<pkg>::types::<Name>,
                carried as the generated message <Name>: one int32 constant
                per literal (its number: its position) and the field value
     sequence   a multiplicity other than 1: std::vector of the element
@@ -73,9 +82,10 @@
     <xsl:variable name="enum" as="xs:boolean" select="exists($def/self::pim:enumeration)"/>
     <xsl:variable name="msg" as="xs:string" select="f:upper-camel($def/@name)"/>
     <xsl:if test="not($enum) or exists($def/pim:literal)">
-      <ty:type kind="{if ($enum) then 'enum' else 'struct'}" primitive="" cpp="::{$name}" msg="{$msg}" field=""
+      <xsl:variable name="cpp" as="xs:string" select="fp:type-cpp-name($def, fp:package-name($package-name, root($def)/pim:model))"/>
+      <ty:type kind="{if ($enum) then 'enum' else 'struct'}" primitive="" cpp="{$cpp}" msg="{$msg}" field=""
                msg-field="{$msg}" param1="" param2="" header="{$name}.hpp" type-ref="{$def/@id}"
-               sample="{if ($enum) then '::' || $name || '::' || f:cpp-identifier($def/pim:literal[1]/@name) else '::' || $name || '()'}"/>
+               sample="{if ($enum) then $cpp || '::' || f:cpp-identifier($def/pim:literal[1]/@name) else $cpp || '()'}"/>
     </xsl:if>
   </xsl:function>
 
@@ -117,6 +127,11 @@
           || ''': an attribute of it, at some depth, has a type the ROS type map cannot map; the atomic code must declare ::'
           || f:cpp-identifier(@name) || ' itself')"/>
     </xsl:for-each>
+    <xsl:for-each select="($carried/self::pim:datatype ! fp:lineage(.))[@name eq 'Stamped'] except $carried[fp:stamped(.)] ! fp:lineage(.)">
+      <xsl:sequence select="f:warn('ROS120', string(@id), 'data type ''Stamped'' has not both attributes stamp: Real'
+          || ' and frameId: String (one value each): the messages of the data types that specialise it carry no'
+          || ' std_msgs/Header, its attributes are ordinary fields')"/>
+    </xsl:for-each>
     <xsl:if test="exists($declared)">
       <r:types>
         <xsl:for-each select="$declared">
@@ -128,12 +143,35 @@
             <xsl:attribute name="cpp-name" select="$type/@cpp"/>
             <xsl:attribute name="header" select="$type/@header"/>
             <xsl:if test="$message"><xsl:attribute name="message" select="$type/@msg"/></xsl:if>
+            <xsl:if test="$message and fp:stamped(.)"><xsl:attribute name="stamped" select="'true'"/></xsl:if>
             <xsl:sequence select="fp:psm-doc(.)"/>
             <xsl:sequence select="if (self::pim:enumeration) then fp:ros-literals(.) else fp:ros-fields(., $message)"/>
           </xsl:element>
         </xsl:for-each>
       </r:types>
     </xsl:if>
+  </xsl:function>
+
+  <!-- the attributes stamp (Real) and frameId (String) of data type $def,
+       one value each, when $def is or specialises a data type named
+       Stamped that declares both (of the Stamped nearest in its lineage);
+       else () -->
+  <xsl:function name="fp:stamp-attributes" as="element(pim:attribute)*">
+    <xsl:param name="def" as="element()"/>
+    <xsl:variable name="stamped" as="element()?" select="$def/self::pim:datatype/fp:lineage(.)[self::pim:datatype][@name eq 'Stamped'][1]"/>
+    <xsl:variable name="attributes" as="element(pim:attribute)*" select="$stamped ! fp:attributes($def)"/>
+    <xsl:variable name="stamp" as="element(pim:attribute)?"
+        select="$attributes[@name eq 'stamp'][@primitive eq 'float64'][empty(fp:array(.))][empty(fp:type-def(.))]"/>
+    <xsl:variable name="frame" as="element(pim:attribute)?"
+        select="$attributes[@name eq 'frameId'][@primitive eq 'string'][empty(fp:array(.))][empty(fp:type-def(.))]"/>
+    <xsl:sequence select="if (exists($stamp) and exists($frame)
+                              and exists(fp:attributes($stamped)[@name eq 'stamp']) and exists(fp:attributes($stamped)[@name eq 'frameId']))
+                          then ($stamp, $frame) else ()"/>
+  </xsl:function>
+
+  <xsl:function name="fp:stamped" as="xs:boolean">
+    <xsl:param name="def" as="element()"/>
+    <xsl:sequence select="exists(fp:stamp-attributes($def))"/>
   </xsl:function>
 
   <!-- whether every attribute of a data type has a ROS type, at any depth -->
@@ -170,6 +208,9 @@
       </xsl:if>
       <r:field xmi-id="{@id}" name="{f:snake-case(@name)}" member="{f:cpp-identifier(@name)}" cpp-type="{$type/@cpp}"
                cpp-default="{fp:cpp-default(., $type)}">
+        <xsl:if test="$message and . intersect fp:stamp-attributes($datatype)">
+          <xsl:attribute name="header" select="if (@name eq 'stamp') then 'stamp' else 'frame_id'"/>
+        </xsl:if>
         <xsl:if test="$type/@kind">
           <xsl:attribute name="type-kind" select="$type/@kind"/>
           <xsl:sequence select="$type/@type-ref"/>

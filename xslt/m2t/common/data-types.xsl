@@ -1,11 +1,14 @@
 <?xml version="1.0" encoding="UTF-8"?>
 <!--
   xslt/m2t/common/data-types.xsl - the C++ header of a model's data type or
-  enumeration, the same for every target: include/<Name>.hpp declares
-  struct ::<Name> (its attributes, inherited ones first, as members
-  initialised to the model's defaults) or enum ::<Name>. The atomic
-  code includes it by that name too (the generated package's include/
-  directory comes first on the include path of the atomic-code library).
+  enumeration, the same for every target: include/<Name>.hpp declares, in
+  the namespaces of its @cpp-name (::<pkg>::types::<Name>, m2m psm-kit.xsl
+  fp:type-cpp-name), struct <Name> (its attributes, inherited ones first,
+  as members initialised to the model's defaults) or enum <Name>; with
+  ROBOMDA_GLOBAL_TYPE_NAMES defined, also a global using-declaration of
+  it (after the include guard: a using-declaration may be repeated). The atomic code includes it by that name too (the generated
+  package's include/ directory comes first on the include path of the
+  atomic-code library).
 
   Reads:   a PSM's type definitions, of any target's namespace: an element
            with @cpp-name and @header, holding *:field elements (a struct:
@@ -40,8 +43,10 @@
     <xsl:param name="type" as="element()"/>
     <xsl:param name="definitions" as="element()*"/>
     <xsl:param name="model-name" as="xs:string"/>
-    <xsl:variable name="name" as="xs:string" select="substring-after($type/@cpp-name, '::')"/>
-    <xsl:variable name="guard" as="xs:string" select="'ROBOMDA_TYPE_' || $name || '_HPP'"/>
+    <xsl:variable name="parts" as="xs:string+" select="tokenize($type/@cpp-name, '::')[. ne '']"/>
+    <xsl:variable name="name" as="xs:string" select="$parts[last()]"/>
+    <xsl:variable name="namespaces" as="xs:string*" select="$parts[position() lt last()]"/>
+    <xsl:variable name="guard" as="xs:string" select="string-join(('ROBOMDA_TYPE', $namespaces[1], $name, 'HPP'), '_')"/>
     <xsl:variable name="enum" as="xs:boolean" select="exists($type/*:literal)"/>
     <xsl:variable name="fields" as="element()*" select="$type/*:field"/>
     <xsl:variable name="includes" as="xs:string*" select="
@@ -55,6 +60,7 @@
         '#define ' || $guard,
         '',
         $includes, if (exists($includes)) then '' else (),
+        $namespaces ! ('namespace ' || . || ' {'), if (exists($namespaces)) then '' else (),
         '/** ' || fp:doc-of($type, (if ($enum) then 'Enumeration ' else 'Data type ') || $type/@name || ' of the model.') || ' */',
         if ($enum) then (
           'enum ' || $name,
@@ -67,7 +73,17 @@
           $fields ! ('  ' || @cpp-type || ' ' || @member || ' = ' || @cpp-default || ';'
                      || (if (*:doc) then '  // ' || normalize-space(*:doc) else '')),
           '};'),
+        if (exists($namespaces)) then ('', reverse($namespaces) ! ('}  // namespace ' || .)) else (),
         '',
-        '#endif'))"/>
+        '#endif',
+        if (exists($namespaces)) then (
+          '',
+          '// Code written for the global name (atomic code that one package and another',
+          '// both build) defines ROBOMDA_GLOBAL_TYPE_NAMES before it includes this header;',
+          '// outside the include guard, so that it holds after an earlier include too.',
+          '#ifdef ROBOMDA_GLOBAL_TYPE_NAMES',
+          'using ' || $type/@cpp-name || ';',
+          '#endif')
+        else ()))"/>
   </xsl:function>
 </xsl:stylesheet>

@@ -240,10 +240,21 @@
             '  {',
             concat('    ', $types[$k], ' msg;'),
             fp:indent(4, fp:to-msg($port/r:message, 'msg', concat($realizing-class, '::', $port/@accessor, '()'))),
+            fp:indent(4, fp:stamp-now($port)),
             concat('    ', $port/@member, $publish, '(msg);'),
             '  }')
           else concat('  // ', $node/r:realizing-class/@name, ' declares no ', $port/@accessor, '(): ', $port/@name,
                       ' is not published'))"/>
+  </xsl:function>
+
+  <!-- a stamped message whose datum has no stamp (0) is stamped with the
+       time of publishing, the node's clock -->
+  <xsl:function name="fp:stamp-now" as="xs:string*">
+    <xsl:param name="port" as="element(r:port)"/>
+    <xsl:sequence select="if (not($port/r:message/@stamped eq 'true')) then ()
+        else if ($port/ancestor::r:package/@ros-version eq '1')
+        then ('if (msg.header.stamp.isZero()) {', '  msg.header.stamp = ros::Time::now();', '}')
+        else ('if (msg.header.stamp.sec == 0 &amp;&amp; msg.header.stamp.nanosec == 0) {', '  msg.header.stamp = this->now();', '}')"/>
   </xsl:function>
 
   <!-- the configuration constants («Constant», seed 004) a node writes,
@@ -405,8 +416,10 @@
     </xsl:if>
   </xsl:function>
 
-  <!-- a generated .msg file: a data type's fields (one per attribute), or
-       an enumeration's constants (one per literal) and its field value -->
+  <!-- a generated .msg file: a data type's fields (one per attribute; a
+       stamped one's std_msgs/Header first, in place of its stamp and
+       frameId), or an enumeration's constants (one per literal) and its
+       field value -->
   <xsl:function name="fp:msg-file" as="xs:string">
     <xsl:param name="type" as="element()"/>
     <xsl:param name="stylesheet" as="xs:string"/>
@@ -414,7 +427,8 @@
     <xsl:sequence select="fp:lines((
         fp:banner('# ', $stylesheet, (if ($enum) then 'enumeration ''' else 'data type ''') || $type/@name
                   || ''' of model ''' || $type/../../@model-name || '''', false()),
-        $type/r:field ! (@msg-field || ' ' || @name),
+        if ($type/@stamped eq 'true') then 'std_msgs/Header header' else (),
+        $type/r:field[empty(@header)] ! (@msg-field || ' ' || @name),
         $type/r:literal ! ('int32 ' || @constant || '=' || @value),
         if ($enum) then 'int32 value' else ()))"/>
   </xsl:function>
@@ -492,6 +506,7 @@
         fp:banner('// ', $stylesheet, 'model ''' || $package/@model-name || '''', false()),
         '#ifndef ' || $guard, '#define ' || $guard, '',
         '#include &lt;cstddef&gt;', '#include &lt;cstdint&gt;',
+        if ($types[@stamped eq 'true'] and $package/@ros-version ne '1') then '#include &lt;cmath&gt;' else (),
         $types ! ('#include &lt;' || @header || '&gt;'),
         $types ! ('#include &lt;' || fp:generated-msg(.)[1] || '&gt;'),
         '', 'namespace ' || $package/@name || ' {', '',
@@ -524,6 +539,33 @@
   <!-- the statements copying field $field from $from to $to ($function:
        from_msg or to_msg, which converts a data type or an enumeration) -->
   <xsl:function name="fp:field-conversion" as="xs:string+">
+    <xsl:param name="field" as="element(r:field)"/>
+    <xsl:param name="from" as="xs:string"/>
+    <xsl:param name="to" as="xs:string"/>
+    <xsl:param name="function" as="xs:string"/>
+    <xsl:sequence select="if ($field/@header) then fp:header-conversion($field, $from, $to) else fp:plain-conversion($field, $from, $to, $function)"/>
+  </xsl:function>
+
+  <!-- a stamped type's stamp (seconds) or frameId to or from the message's
+       std_msgs/Header: ROS 1 ros::Time, ROS 2 builtin_interfaces/Time -->
+  <xsl:function name="fp:header-conversion" as="xs:string+">
+    <xsl:param name="field" as="element(r:field)"/>
+    <xsl:param name="from" as="xs:string"/>
+    <xsl:param name="to" as="xs:string"/>
+    <xsl:variable name="member" as="xs:string" select="($to[. ne 'm'], $from)[1] || '.' || $field/@member"/>
+    <xsl:variable name="ros1" as="xs:boolean" select="$field/ancestor::r:package/@ros-version eq '1'"/>
+    <xsl:sequence select="
+      if ($field/@header eq 'frame_id') then
+        '  ' || (if ($to eq 'm') then 'm.header.frame_id = ' || $member else $member || ' = m.header.frame_id') || ';'
+      else if ($to ne 'm') then
+        '  ' || $member || ' = ' || (if ($ros1) then 'm.header.stamp.toSec();'
+                                   else 'static_cast&lt;double&gt;(m.header.stamp.sec) + 1e-9 * m.header.stamp.nanosec;')
+      else if ($ros1) then '  m.header.stamp = ros::Time(' || $member || ');'
+      else ('  m.header.stamp.sec = static_cast&lt;std::int32_t&gt;(std::floor(' || $member || '));',
+            '  m.header.stamp.nanosec = static_cast&lt;std::uint32_t&gt;((' || $member || ' - std::floor(' || $member || ')) * 1e9);')"/>
+  </xsl:function>
+
+  <xsl:function name="fp:plain-conversion" as="xs:string+">
     <xsl:param name="field" as="element(r:field)"/>
     <xsl:param name="from" as="xs:string"/>
     <xsl:param name="to" as="xs:string"/>

@@ -26,7 +26,9 @@
     <xsl:param name="package" as="element(r:package)"/>
     <xsl:sequence select="sort(distinct-values(('roscpp',
         if ($package/r:coordinator) then ('std_msgs', 'std_srvs') else (),
-        ($package/r:node/r:port/r:message/@msg, $package/r:node/r:service/@srv, $package/r:node/r:service-client/@srv)[contains(., '/')] ! substring-before(., '/'))))"/>
+        ($package/r:node/r:port/r:message/@msg, $package/r:node/r:service/@srv, $package/r:node/r:service-client/@srv)[contains(., '/')] ! substring-before(., '/'),
+        (: a stamped message's std_msgs/Header :)
+        $package/r:types/*[@stamped eq 'true'][1] ! 'std_msgs')))"/>
   </xsl:function>
 
   <xsl:function name="fp:ros1-cmakelists" as="xs:string">
@@ -45,7 +47,7 @@
         if ($msgs) then (
           '',
           concat('add_message_files(FILES ', string-join($package/r:types/*/@message ! (. || '.msg'), ' '), ')'),
-          'generate_messages()')
+          if ($package/r:types/*[@stamped eq 'true']) then 'generate_messages(DEPENDENCIES std_msgs)' else 'generate_messages()')
         else (),
         '',
         'catkin_package(',

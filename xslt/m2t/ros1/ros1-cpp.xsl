@@ -105,6 +105,7 @@
         '',
         concat('namespace ', $package, ' {'),
         '',
+        if ($node/r:parameter[@kind eq 'items']) then fp:ros1-item-helpers() else (),
         concat($class, '::', $class, '(const ros::NodeHandle&amp; nh, const ros::NodeHandle&amp; private_nh)'),
         concat('  : nh_(nh), private_nh_(private_nh), period_(', fp:double-literal($node/@period), '), running_(false)'),
         '{',
@@ -153,6 +154,90 @@
         concat('}  // namespace ', $package)))"/>
   </xsl:function>
 
+  <!-- the reading of the members of an item of a list-of-mappings
+       parameter (issue 37): a value of each C++ type a member is read as;
+       an absent key keeps the item's model value, one of another type
+       rejects the parameter -->
+  <xsl:function name="fp:ros1-item-helpers" as="xs:string+">
+    <xsl:variable name="types" as="xs:string" select="'XmlRpc::XmlRpcValue::Type'"/>
+    <xsl:sequence select="
+        'namespace {', '',
+        '// one member of an item of a list-of-mappings parameter: false when it has another type',
+        'bool item_value(XmlRpc::XmlRpcValue&amp; v, double&amp; out)', '{',
+        '  if (v.getType() == ' || $types || 'Double) {', '    out = static_cast&lt;double&amp;&gt;(v);', '    return true;', '  }',
+        '  if (v.getType() == ' || $types || 'Int) {', '    out = static_cast&lt;int&amp;&gt;(v);', '    return true;', '  }',
+        '  return false;', '}', '',
+        (['int', 'Int'], ['bool', 'Boolean'], ['std::string', 'String']) ! (
+          'bool item_value(XmlRpc::XmlRpcValue&amp; v, ' || ?1 || '&amp; out)', '{',
+          '  if (v.getType() != ' || $types || ?2 || ') {', '    return false;', '  }',
+          '  out = static_cast&lt;' || ?1 || '&amp;&gt;(v);', '  return true;', '}', ''),
+        '// member key of item, read as Read: an absent key keeps out''s value',
+        'template &lt;typename Read, typename Member&gt;',
+        'bool item_member(XmlRpc::XmlRpcValue&amp; item, const char* key, Member&amp; out)', '{',
+        '  if (!item.hasMember(key)) {', '    return true;', '  }',
+        '  Read value;',
+        '  if (!item_value(item[key], value)) {', '    return false;', '  }',
+        '  out = static_cast&lt;Member&gt;(value);', '  return true;', '}', '',
+        '}  // namespace', ''"/>
+  </xsl:function>
+
+  <!-- the block of setUp() that reads list-of-mappings parameter $parameter
+       into the realizing class's member: the model's value when it is not
+       set; logged, the member keeping its value, when it is no list of
+       mappings (of the fixed size) or a member has another type -->
+  <xsl:function name="fp:ros1-items-parameter" as="xs:string+">
+    <xsl:param name="parameter" as="element(r:parameter)"/>
+    <xsl:variable name="member" as="xs:string" select="$parameter/../r:realizing-class/@cpp-name || '::' || $parameter/@member"/>
+    <xsl:variable name="name" as="xs:string" select="fp:cpp-string($parameter/@name)"/>
+    <xsl:variable name="item-type" as="xs:string" select="$parameter/@item-type"/>
+    <xsl:sequence select="
+        '{', '  XmlRpc::XmlRpcValue value;',
+        '  if (private_nh_.getParam(' || fp:cpp-string(translate($parameter/@name, '.', '/')) || ', value)) {',
+        '    bool ok = value.getType() == XmlRpc::XmlRpcValue::TypeArray'
+            || ($parameter/@size ! (' &amp;&amp; value.size() == ' || .)) || ';',
+        '    ' || $parameter/@cpp-type || ' items(ok ? value.size() : 0, ' || $item-type || '());',
+        '    for (int i = 0; ok &amp;&amp; i &lt; value.size(); ++i) {',
+        '      XmlRpc::XmlRpcValue&amp; item = value[i];',
+        '      ' || $item-type || '&amp; e = items[i];',
+        '      ok = item.getType() == XmlRpc::XmlRpcValue::TypeStruct;',
+        fp:indent(6, fp:ros1-item-reads($parameter/r:item, 'item', 'e', 1)),
+        '    }',
+        '    if (ok) {', '      ' || $member || ' = items;', '    } else {',
+        '      ROS_ERROR(&quot;parameter %s: not a list of ' || ($parameter/@size, 'any number of')[1] || ' mappings of the members of '
+            || replace($item-type, '^.*::', '') || ' (' || string-join($parameter/r:item/@name, ', ')
+            || '), each of its type&quot;, ' || $name || ');',
+        '    }',
+        '  } else {', '    ' || $member || ' = ' || $parameter/@cpp-default || ';', '  }',
+        '}'"/>
+  </xsl:function>
+
+  <xsl:function name="fp:ros1-item-reads" as="xs:string*">
+    <xsl:param name="items" as="element(r:item)*"/>
+    <xsl:param name="item" as="xs:string"/>
+    <xsl:param name="e" as="xs:string"/>
+    <xsl:param name="depth" as="xs:integer"/>
+    <xsl:for-each select="$items">
+      <xsl:variable name="key" as="xs:string" select="fp:cpp-string(@name)"/>
+      <xsl:sequence select="
+        if (@kind eq 'struct') then (
+          'if (ok &amp;&amp; ' || $item || '.hasMember(' || $key || ')) {',
+          '  XmlRpc::XmlRpcValue&amp; item' || $depth || ' = ' || $item || '[' || $key || '];',
+          '  ' || @cpp-type || '&amp; e' || $depth || ' = ' || $e || '.' || @member || ';',
+          '  ok = item' || $depth || '.getType() == XmlRpc::XmlRpcValue::TypeStruct;',
+          fp:indent(2, fp:ros1-item-reads(r:item, 'item' || $depth, 'e' || $depth, $depth + 1)),
+          '}')
+        else if (@kind eq 'enum') then (
+          'if (ok &amp;&amp; ' || $item || '.hasMember(' || $key || ')) {',
+          '  std::string literal;',
+          '  ok = item_value(' || $item || '[' || $key || '], literal);',
+          r:choice ! ('  ' || (if (position() eq 1) then 'if' else '} else if') || ' (literal == ' || fp:cpp-string(@value) || ') {',
+                      '    ' || $e || '.' || ../@member || ' = ' || @cpp || ';'),
+          '  } else {', '    ok = false;', '  }',
+          '}')
+        else 'ok = ok &amp;&amp; item_member&lt;' || @param1 || '&gt;(' || $item || ', ' || $key || ', ' || $e || '.' || @member || ');'"/>
+    </xsl:for-each>
+  </xsl:function>
+
   <!-- the body of setUp(): parameters, configure() and start(), then the
        publishers, subscribers, services and the timer -->
   <xsl:function name="fp:ros1-set-up" as="xs:string+">
@@ -195,7 +280,7 @@
     <xsl:param name="node" as="element(r:node)"/>
     <xsl:sequence select="(
         '  // parameters (R4), private: ~name',
-        for $parameter in $node/r:parameter return (
+        for $parameter in $node/r:parameter return if ($parameter/@kind eq 'items') then fp:indent(2, fp:ros1-items-parameter($parameter)) else (
           '  {',
           concat('    ', $parameter/@param1, ' value;'),
           concat('    private_nh_.param&lt;', $parameter/@param1, '&gt;(', fp:cpp-string(translate($parameter/@name, '.', '/')), ', value, ',

@@ -29,7 +29,9 @@
     <xsl:sequence select="sort(distinct-values(('rclcpp', 'rclcpp_components',
         if ($package/r:node[@lifecycle-type-name]) then ('rclcpp_lifecycle', 'lifecycle_msgs') else (),
         if ($package/r:coordinator) then 'std_msgs' else (),
-        ($package/r:node/r:port/r:message/@msg, $package/r:node/r:service/@srv, $package/r:node/r:service-client/@srv)[contains(., '/')] ! substring-before(., '/'))))"/>
+        ($package/r:node/r:port/r:message/@msg, $package/r:node/r:service/@srv, $package/r:node/r:service-client/@srv)[contains(., '/')] ! substring-before(., '/'),
+        (: a stamped message's std_msgs/Header :)
+        $package/r:types/*[@stamped eq 'true'][1] ! 'std_msgs')))"/>
   </xsl:function>
 
   <xsl:function name="fp:ros2-cmakelists" as="xs:string">
@@ -49,7 +51,8 @@
         $deps ! (concat('find_package(', ., ' REQUIRED)')),
         if ($msgs) then (
           'find_package(rosidl_default_generators REQUIRED)',
-          concat('rosidl_generate_interfaces(${PROJECT_NAME} ', string-join($package/r:types/*/@message ! ('&quot;msg/' || . || '.msg&quot;'), ' '), ')'),
+          concat('rosidl_generate_interfaces(${PROJECT_NAME} ', string-join($package/r:types/*/@message ! ('&quot;msg/' || . || '.msg&quot;'), ' '),
+                 if ($package/r:types/*[@stamped eq 'true']) then ' DEPENDENCIES std_msgs' else '', ')'),
           'rosidl_get_typesupport_target(${PROJECT_NAME}_msgs_cpp ${PROJECT_NAME} &quot;rosidl_typesupport_cpp&quot;)')
         else (),
         $package/r:library ! fp:library-external-project(.),
