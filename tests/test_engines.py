@@ -52,8 +52,8 @@ def _stages() -> dict[str, tuple[Path, str, str | None, dict[str, str], str]]:
                 continue
             shared = step.name in ("import", "bind")
             golden = (f"expected/{step.name}.xml" if shared
-                      # the swaps' check writes the bound PIM it read, unchanged
-                      else "expected/bind.xml" if step.name == "substitute"
+                      # the swaps' and the jobs' checks write the bound PIM they read, unchanged
+                      else "expected/bind.xml" if step.name in ("substitute", "jobs")
                       else f"expected/{target}/{step.name}.xml" if step.name != "text" else None)
             params = {p.name: p.value if p.value is not None else CONTEXT[p.source or ""] for p in step.params}
             stages[step.name if shared else f"{target}-{step.name}"] = (step.stylesheet, previous, golden, params, target)

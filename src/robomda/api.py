@@ -211,7 +211,9 @@ def check(model: Path | str, target: str | None = None, *, package_name: str = "
 
     Once those pass, the component swaps (seed 004's substitutability,
     docs/substitution.md): every «Alternative» of the model, and each
-    ``replace`` pair ``"OLD=NEW"``, whose violations are errors SUB001-SUB011.
+    ``replace`` pair ``"OLD=NEW"``, whose violations are errors SUB001-SUB011;
+    then every job as a configuration of its own and the report of each
+    switch between jobs (docs/jobs.md: JOB010-JOB029).
     """
     model = Path(model)
     if target is not None:
@@ -260,7 +262,7 @@ def check(model: Path | str, target: str | None = None, *, package_name: str = "
     for name in chosen:
         last = run_until_text(name, shared) if exit_code == EXIT_OK else None
     if exit_code == EXIT_OK and last is not None:
-        run_until_text("substitute", last)  # the swaps, on the bound PIM the last run made
+        run_until_text("substitute", last)  # the swaps and the jobs, on the bound PIM the last run made
     return Checked(diagnostics, chosen, exit_code, rule_sets)
 
 

@@ -91,11 +91,9 @@
     <xsl:param name="transition" as="element(pim:transition)"/>
     <xsl:param name="binding" as="element(pim:binding)"/>
     <xsl:variable name="root" as="document-node()" select="root($binding)"/>
-    <xsl:variable name="fed" as="function(xs:string) as xs:string*"
-        select="function($i) { $binding/pim:connection[pim:writer/@instance eq $i]/pim:reader/(@instance || '.' || @data-port) }"/>
     <xsl:for-each select="$transition/pim:stop">
       <xsl:variable name="old" as="element(pim:instance)" select="key('fp:jc-instance', @instance, $root)"/>
-      <xsl:for-each select="$transition/pim:start[$fed(@instance) = $fed($old/@name)]">
+      <xsl:for-each select="$transition/pim:start[fp:fed-ports($binding, @instance) = fp:fed-ports($binding, $old/@name)]">
         <xsl:variable name="new" as="element(pim:instance)" select="key('fp:jc-instance', @instance, $root)"/>
         <xsl:if test="$old/@component ne $new/@component">
           <xsl:sequence select="fp:check-swap(map { 'old': key('fp:id', $old/@component, $root), 'new': key('fp:id', $new/@component, $root),
@@ -105,6 +103,14 @@
         </xsl:if>
       </xsl:for-each>
     </xsl:for-each>
+  </xsl:function>
+
+  <!-- the input ports ("instance.port") instance $name writes to -->
+  <xsl:key name="fp:jc-writer" match="pim:binding/pim:connection" use="pim:writer/@instance"/>
+  <xsl:function name="fp:fed-ports" as="xs:string*">
+    <xsl:param name="binding" as="element(pim:binding)"/>
+    <xsl:param name="name" as="xs:string"/>
+    <xsl:sequence select="key('fp:jc-writer', $name, root($binding))/pim:reader/(@instance || '.' || @data-port)"/>
   </xsl:function>
 
   <!-- "subsystem S, FROM -> TO on EVENT: stops a; reconfigures b (x = 1); starts c (y = 2); keeps d" -->
