@@ -14,9 +14,10 @@
 #   --check          build nothing: report what is present and what is missing (Debian packages, the
 #                    Orocos toolchain, the source and its commit, the plugins and typekits installed), then
 #                    run them once: a roscore of its own on a free port of 127.0.0.1, an rttlua script
-#                    that imports rtt_rosnode, rtt_roscomm and rtt_std_msgs and streams an int port to a
-#                    ROS topic and another from one, rostopic reading the first and publishing the second;
-#                    exit status 1 if anything is missing or no message crosses either way
+#                    that imports rtt_ros, rtt_rosnode, rtt_roscomm and rtt_std_msgs and streams an int
+#                    port and a /std_msgs/String port (the std_msgs message typekit) to ROS topics and
+#                    another of each from topics, rostopic reading the first and publishing the second;
+#                    exit status 1 if anything is missing or no message crosses either way on either type
 #   --no-apt         do not install Debian packages (only check they are there)
 #   --sources-only   stop after fetching the source (to build later, offline)
 # Environment: OROCOS_HOME / OROCOS_INSTALL (the Orocos toolchain, as for env.sh); RTT_ROS_HOME; MIRROR,
@@ -78,8 +79,8 @@ check_runs() {
   export ROS_MASTER_URI=http://127.0.0.1:$port ROS_IP=127.0.0.1 ROS_HOME=$tmp/ros
   setsid roscore -p "$port" >"$tmp/roscore.log" 2>&1 &
   master=$!
-  if ! ros_wait_master 30; then
-    missing "run: roscore -p $port did not answer in 30 s: $(tail -n 3 "$tmp/roscore.log" | tr '\n' ' ')"
+  if ! ros_wait_master 90; then
+    missing "run: roscore -p $port did not answer in 90 s: $(tail -n 3 "$tmp/roscore.log" | tr '\n' ' ')"
   else
     # two streams each way: an int port (rtt_std_msgs's primitives transport: std_msgs/Int32) and a
     # /std_msgs/String port (the std_msgs message typekit and its ROS transport); rtt.Variable of a
@@ -116,11 +117,11 @@ print("FROM-ROS " .. tostring(got))
 print("FROM-ROS-STRING " .. tostring(sgot))
 for k = 1, 20 do out:write(1000 + k); msg.data = "from-orocos " .. (1000 + k); sout:write(msg); rtt.sleep(0, 100000000) end
 LUA
-    timeout -k 5 50 rostopic echo -n 1 /robomda_check_out >"$tmp/echo.out" 2>&1 & pids+=($!)
-    timeout -k 5 50 rostopic echo -n 1 /robomda_check_str_out >"$tmp/echo-str.out" 2>&1 & pids+=($!)
-    timeout -k 5 50 rostopic pub -r 5 /robomda_check_in std_msgs/Int32 "data: 4242" >/dev/null 2>&1 & pids+=($!)
-    timeout -k 5 50 rostopic pub -r 5 /robomda_check_str_in std_msgs/String "data: from-ros" >/dev/null 2>&1 & pids+=($!)
-    out=$(cd "$tmp" && timeout -k 5 70 rttlua both.lua </dev/null 2>&1) || rc=$?
+    timeout -k 5 120 rostopic echo -n 1 /robomda_check_out >"$tmp/echo.out" 2>&1 & pids+=($!)
+    timeout -k 5 120 rostopic echo -n 1 /robomda_check_str_out >"$tmp/echo-str.out" 2>&1 & pids+=($!)
+    timeout -k 5 120 rostopic pub -r 5 /robomda_check_in std_msgs/Int32 "data: 4242" >/dev/null 2>&1 & pids+=($!)
+    timeout -k 5 120 rostopic pub -r 5 /robomda_check_str_in std_msgs/String "data: from-ros" >/dev/null 2>&1 & pids+=($!)
+    out=$(cd "$tmp" && timeout -k 5 150 rttlua both.lua </dev/null 2>&1) || rc=$?
     for p in "${pids[@]:2}"; do kill "$p" 2>/dev/null || true; done
     for p in "${pids[@]}"; do wait "$p" 2>/dev/null || true; done
     if [ $rc = 0 ] && grep -q '^FROM-ROS 4242$' <<<"$out"; then say "run: ROS 1 -> Orocos (rostopic pub std_msgs/Int32 -> rtt_roscomm stream -> int port): OK"
