@@ -23,8 +23,8 @@
 # Environment: OROCOS_HOME / OROCOS_INSTALL (the Orocos toolchain, as for env.sh); RTT_ROS_HOME; MIRROR,
 # a folder of fetched bare mirrors (MIRROR/orocos+rtt_ros_integration/repo), cloned instead of the public
 # URL when set; JOBS (make jobs, default 2); NICE (default 19).
-# Source env-ros.sh beside this script to use the result. Takes over an hour on 2 cores shared with
-# other builds (rtt_ros's primitives typekit and the 32-message std_msgs typekit are most of it).
+# Source env-ros.sh beside this script to use the result. Took 79 min from empty (JOBS=4) on 2 cores
+# shared with other builds (rtt_ros's primitives typekit and the 32-message std_msgs typekit are most of it).
 set -euo pipefail
 
 HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
