@@ -54,6 +54,11 @@ ENV_ROS_SH = ROOT / "toolchains" / "orocos" / "env-ros.sh"
 INSTALL = Path(os.environ.get("OROCOS_INSTALL", Path.home() / "orocos" / "install"))
 RTT_ROS = Path(os.environ.get("RTT_ROS_INSTALL", Path(os.environ.get("RTT_ROS_HOME", Path.home() / "rtt_ros")) / "install"))
 ROSCOMM = RTT_ROS / "lib" / "orocos" / "gnulinux" / "rtt_roscomm"
+# what the generated deployments import besides rtt_roscomm: rtt_std_msgs as build-ros.sh builds it (the
+# std_msgs message typekit, its ROS transport, the primitives transport the fixture's int ports use)
+STD_MSGS = [RTT_ROS / "lib" / "orocos" / "gnulinux" / "rtt_std_msgs" / f for f in
+            ("types/librtt-std_msgs-typekit-gnulinux.so", "types/librtt-std_msgs-ros-transport-gnulinux.so",
+             "plugins/librtt-ros-primitives-transport-gnulinux.so")]
 SYS_PATH = "/usr/bin:/bin:/usr/sbin:/sbin"
 
 pytestmark = [
@@ -62,6 +67,8 @@ pytestmark = [
                        reason=f"no deployer-corba in {INSTALL}: build the toolchain with toolchains/orocos/build.sh"),
     pytest.mark.skipif(not ROSCOMM.is_dir(),
                        reason=f"no rtt_roscomm in {RTT_ROS}: build it with toolchains/orocos/build-ros.sh"),
+    pytest.mark.skipif(not all(f.is_file() for f in STD_MSGS),
+                       reason=f"rtt_std_msgs incomplete in {RTT_ROS}: build it with toolchains/orocos/build-ros.sh"),
     pytest.mark.skipif(not all(shutil.which(p, path=SYS_PATH) for p in ("roscore", "roslaunch", "rostopic", "catkin_make")),
                        reason="no roscore / roslaunch / rostopic / catkin_make (Debian ROS 1: toolchains/orocos/build-ros.sh)"),
     pytest.mark.skipif(not (shutil.which("omniNames") and shutil.which("nameclt")),
