@@ -55,9 +55,11 @@
     <xsl:variable name="name" as="xs:string" select="f:cpp-identifier($def/@name)"/>
     <xsl:variable name="enum" as="xs:boolean" select="exists($def/self::pim:enumeration)"/>
     <xsl:if test="not($enum) or exists($def/pim:literal)">
+      <!-- the C++ type of every target (a generated type belongs to its package); the IDL one beside it -->
+      <xsl:variable name="cpp" as="xs:string" select="fp:type-cpp-name($def, $package)"/>
       <ty:type kind="{if ($enum) then 'enum' else 'struct'}" primitive="" label="{$name}" idl="::{$package}::{$name}"
-               cpp="::{$name}" header="{$name}.hpp" type-ref="{$def/@id}"
-               sample="{if ($enum) then '::' || $name || '::' || f:cpp-identifier($def/pim:literal[1]/@name) else '::' || $name || '()'}"/>
+               cpp="{$cpp}" header="{$name}.hpp" type-ref="{$def/@id}"
+               sample="{if ($enum) then $cpp || '::' || f:cpp-identifier($def/pim:literal[1]/@name) else $cpp || '()'}"/>
     </xsl:if>
   </xsl:function>
 
