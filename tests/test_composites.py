@@ -229,13 +229,9 @@ def test_values_set_above_reach_every_target(app: str, instance: str, prop: str,
     ros1 = {f.get("path"): f.text or "" for f in etree.fromstring(runs[(app, "ros1")].stages["text"].encode())}
     assert f"{prop}: {literal}" in ros1[f"config/{instance}.yaml"]
     ros2 = {f.get("path"): f.text or "" for f in etree.fromstring(runs[(app, "ros2")].stages["text"].encode())}
-    # a node in a namespace is keyed by its full name in the ROS 2 parameter file
-    path = next(i.get("path") or i.get("name") for i in etree.fromstring(runs[(app, "ros2")].stages["bind"].encode())
-                .iter(f"{PIM}instance") if i.get("name") == instance)
-    key = ("/" + path.replace(".", "/") if "." in path else path) + ":"
-    lines = ros2["config/params.yaml"].splitlines()
-    block = list(itertools.takewhile(lambda line: line.startswith(" "), lines[lines.index(key) + 1:]))
-    assert f"    {prop}: {literal}" in block
+    # ROS 2: a file of the instance's own, keyed /** (its node's name moves under a pushed namespace)
+    lines = ros2[f"config/{instance}.yaml"].splitlines()
+    assert lines[2:4] == ["/**:", "  ros__parameters:"] and f"    {prop}: {literal}" in lines
 
 
 def _apps_copy(tmp_path: Path) -> Path:
