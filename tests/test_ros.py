@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import contextlib
 import fcntl
+import json
 import os
 import re
 import shutil
@@ -303,6 +304,33 @@ def _roslaunch_config(launch: Path, env: dict, show: str) -> str:
     proc = subprocess.run([SYS_PY, "-c", script, str(launch)], env=env, capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr
     return proc.stdout
+
+
+def test_ros1_namespace_argument_moves_every_name_of_learning(tmp_path: Path) -> None:
+    """roslaunch's own loader, no build: learning included with ns=robot inside another group puts
+    every node and parameter under /robot, and the two ends of each connection resolve to one name."""
+    _need("roslaunch")
+    pkg = tmp_path / "src" / "learning"
+    generate(ROOT / "fixtures" / "cases" / "learning" / "model.xmi", pkg, "ros1")
+    wrapper = tmp_path / "wrapper.launch"
+    wrapper.write_text(f'''<launch><group ns="ignored"><include file="{pkg}/launch/learning.launch">
+  <arg name="ns" value="robot"/></include></group></launch>''')
+    env = _ros_env(ROS_PACKAGE_PATH=str(tmp_path / "src") + ":/usr/share")
+    shown = _roslaunch_config(wrapper, env, "import json; print(json.dumps({'nodes': {n.namespace + n.name: [[a, b if "
+                              "b.startswith('/') else n.namespace + b] for a, b in n.remap_args] for n in c.nodes}, "
+                              "'params': sorted(c.params)}))")
+    found = json.loads(shown)
+    nodes = found["nodes"]
+    assert sorted(nodes) == ["/robot/atf/csIter", "/robot/atf/driver/fri", "/robot/atf/driver/jointCtrl",
+                             "/robot/atf/jsIter", "/robot/csGen", "/robot/learner"]
+    assert all(to.startswith("/robot/") for remaps in nodes.values() for _, to in remaps), nodes
+    remap = {(node, port): to for node, remaps in nodes.items() for port, to in remaps}
+    # fri (atf/driver) -> learner (the root) and csIter (atf); a service client to jointCtrl's service
+    assert remap["/robot/atf/driver/fri", "cartPos"] == remap["/robot/learner", "cartPos"] == "/robot/measuredPose"
+    assert remap["/robot/atf/csIter", "cartPos"] == "/robot/measuredPose"
+    assert remap["/robot/learner", "setCompliant"] == "/robot/atf/driver/jointCtrl/setCompliant"
+    assert {"/robot/atf/driver/jointCtrl/gain", "/robot/learner/window"} <= set(found["params"])
+    assert not [p for p in found["params"] if p.startswith(("/atf", "/learner", "/ignored"))]
 
 
 def _deploy_name(case: Path) -> str:
