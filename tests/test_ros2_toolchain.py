@@ -113,8 +113,9 @@ def workspace(tmp_path_factory) -> Workspace:
         out = ws / "src" / _fixture_name(model)
         generate(model, out, "ros2")
         packages[_fixture_name(model)] = ET.parse(out / "package.xml").getroot().findtext("name")
+    select = f"--packages-select {' '.join(packages.values())} " if ONLY else ""  # a kept workspace may hold others
     build = subprocess.run(
-        ["bash", "-c", f"source {ENV_SH} >/dev/null && nice -n 19 colcon --log-base log build --base-paths src "
+        ["bash", "-c", f"source {ENV_SH} >/dev/null && nice -n 19 colcon --log-base log build --base-paths src {select}"
          "--install-base install --build-base build --parallel-workers 1 --continue-on-error "
          "--event-handlers console_direct- console_cohesion- --cmake-args -DBUILD_TESTING=OFF "
          "-DCMAKE_BUILD_TYPE=None '-DCMAKE_CXX_FLAGS=-Wall -Wextra' -DPython3_EXECUTABLE=$(command -v python3)"],
@@ -127,6 +128,10 @@ def test_package_builds_without_a_warning(model: Path, workspace: Workspace) -> 
     pkg = workspace.packages[_fixture_name(model)]
     log = workspace.root / "log" / "latest_build" / pkg / "stdout_stderr.log"
     said = log.read_text(errors="replace") if log.is_file() else workspace.build.stdout + workspace.build.stderr
+    if os.environ.get("ROBOMDA_ROS2_WS") and not re.search(r"Building CXX", said):
+        # a kept workspace whose sources did not change: the last build that compiled them
+        compiled = [p.read_text(errors="replace") for p in sorted((workspace.root / "log").glob(f"build_*/{pkg}/stdout_stderr.log"))]
+        said = next((text for text in reversed(compiled) if "Building CXX" in text), said)
     assert (workspace.root / "install" / pkg / "share" / pkg / "package.xml").is_file(), said[-5000:]
     cache = (workspace.root / "build" / pkg / "CMakeCache.txt").read_text()
     assert re.search(r"^CMAKE_CXX_FLAGS:STRING=.*-Wall -Wextra", cache, re.M), "the warning flags did not reach the build"
