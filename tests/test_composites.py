@@ -139,7 +139,7 @@ def test_every_operation_call_reaches_every_target(app: str, target: str, runs) 
         assert 'serviceClient<std_srvs::SetBool>("setCompliant")' in code or 'create_client<std_srvs::srv::SetBool>("setCompliant")' in code
         launch = "".join(text for path, text in files.items() if path.startswith("launch/"))
         # named from the root: ROS 1 absolutely, ROS 2 under the namespace the launch is pushed into
-        root = "/" if target == "ros1" else "$(var ros_namespace '')/"
+        root = "/$(arg ns)/" if target == "ros1" else "$(var ros_namespace '')/"
         assert launch.count(f'<remap from="setCompliant" to="{root}atf/driver/jointCtrl/setCompliant"/>') == 1
 
 
@@ -185,7 +185,7 @@ def test_every_instance_and_connection_reaches_the_ros_launch(app: str, target: 
     # both ends of every connection are remapped onto one topic (named from the root in a namespace)
     for connection in binding.findall(f"{PIM}connection"):
         name = connection.get("name")
-        rooted = launch.count(f'to="/{name}"') + launch.count(f'to="$(var ros_namespace \'\')/{name}"')
+        rooted = sum(launch.count(f'to="{root}/{name}"') for root in ("", "$(var ros_namespace \'\')", "/$(arg ns)"))
         assert launch.count(f'to="{name}"') + rooted >= 2
 
 
