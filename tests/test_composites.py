@@ -139,7 +139,7 @@ def test_every_operation_call_reaches_every_target(app: str, target: str, runs) 
         assert 'serviceClient<std_srvs::SetBool>("setCompliant")' in code or 'create_client<std_srvs::srv::SetBool>("setCompliant")' in code
         launch = "".join(text for path, text in files.items() if path.startswith("launch/"))
         # named from the root: ROS 1 absolutely, ROS 2 under the namespace the launch is pushed into
-        root = "/" if target == "ros1" else "$(var ros_namespace '')/"
+        root = "/$(arg ns)/" if target == "ros1" else "$(var ros_namespace '')/"
         assert launch.count(f'<remap from="setCompliant" to="{root}atf/driver/jointCtrl/setCompliant"/>') == 1
 
 
@@ -185,7 +185,7 @@ def test_every_instance_and_connection_reaches_the_ros_launch(app: str, target: 
     # both ends of every connection are remapped onto one topic (named from the root in a namespace)
     for connection in binding.findall(f"{PIM}connection"):
         name = connection.get("name")
-        rooted = launch.count(f'to="/{name}"') + launch.count(f'to="$(var ros_namespace \'\')/{name}"')
+        rooted = sum(launch.count(f'to="{root}/{name}"') for root in ("", "$(var ros_namespace \'\')", "/$(arg ns)"))
         assert launch.count(f'to="{name}"') + rooted >= 2
 
 
@@ -229,13 +229,9 @@ def test_values_set_above_reach_every_target(app: str, instance: str, prop: str,
     ros1 = {f.get("path"): f.text or "" for f in etree.fromstring(runs[(app, "ros1")].stages["text"].encode())}
     assert f"{prop}: {literal}" in ros1[f"config/{instance}.yaml"]
     ros2 = {f.get("path"): f.text or "" for f in etree.fromstring(runs[(app, "ros2")].stages["text"].encode())}
-    # a node in a namespace is keyed by its full name in the ROS 2 parameter file
-    path = next(i.get("path") or i.get("name") for i in etree.fromstring(runs[(app, "ros2")].stages["bind"].encode())
-                .iter(f"{PIM}instance") if i.get("name") == instance)
-    key = ("/" + path.replace(".", "/") if "." in path else path) + ":"
-    lines = ros2["config/params.yaml"].splitlines()
-    block = list(itertools.takewhile(lambda line: line.startswith(" "), lines[lines.index(key) + 1:]))
-    assert f"    {prop}: {literal}" in block
+    # ROS 2: a file of the instance's own, keyed /** (its node's name moves under a pushed namespace)
+    lines = ros2[f"config/{instance}.yaml"].splitlines()
+    assert lines[2:4] == ["/**:", "  ros__parameters:"] and f"    {prop}: {literal}" in lines
 
 
 def _apps_copy(tmp_path: Path) -> Path:

@@ -214,7 +214,7 @@ def test_the_data_type_headers_are_the_same_on_every_target() -> None:
 
 def test_ros_parameters_of_data_types_enumerations_and_arrays() -> None:
     files = _ros_files(QUADARM / "model.xmi", "ros2")
-    params = files["config/params.yaml"]
+    params = "".join(text for path, text in sorted(files.items()) if path.startswith("config/") and path.endswith(".yaml"))
     assert "    gains:\n      stiffness: 300.0\n      damping: 20.0\n      maxTorque: 80.0\n" in params
     assert '    mode: "IMPEDANCE"\n' in params and "    desired: [0.0, 0.5, 0.0, -1.0, 0.0, 0.5, 0.0]\n" in params
     controller = files["src/JointPositionController.cpp"]

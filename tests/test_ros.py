@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import contextlib
 import fcntl
+import json
 import os
 import re
 import shutil
@@ -123,7 +124,13 @@ def test_pid_ros2_mapping() -> None:
     register = [line for line in files["CMakeLists.txt"].splitlines() if line.startswith("rclcpp_components_register_nodes(")]
     assert register == ['rclcpp_components_register_nodes(${PROJECT_NAME}_components "pid::TrajectoryGenerator" '
                         '"pid::PIDController" "pid::RobotInterface")']
-    assert "PIDController:\n  ros__parameters:\n    update_period: 0.01\n    kp: 20.0" in files["config/params.yaml"]
+    assert "\n/**:\n  ros__parameters:\n    update_period: 0.01\n    kp: 20.0" in files["config/PIDController.yaml"]
+    assert "config/params.yaml" not in files and "config/params.user.yaml" not in files
+    assert files["config/PIDController.user.yaml"].endswith("\n/**:\n  ros__parameters: {}\n")
+    launch = etree.fromstring(files["launch/pid_control_pc.launch.xml"].encode())
+    node = launch.find(".//composable_node[@name='PIDController']")
+    assert [p.get("from") for p in node.iter("param")] == [f"$(find-pkg-share pid)/config/PIDController{s}.yaml"
+                                                           for s in ("", ".user")]
     # issue 36 item 7: the timer runs on the node's clock (use_sim_time), callbacks take a const message,
     # headers install under the package's own include folder
     assert "timer_ = rclcpp::create_timer(this, this->get_clock(), rclcpp::Duration::from_seconds(period_)," in src
@@ -352,6 +359,33 @@ def _roslaunch_config(launch: Path, env: dict, show: str) -> str:
     return proc.stdout
 
 
+def test_ros1_namespace_argument_moves_every_name_of_learning(tmp_path: Path) -> None:
+    """roslaunch's own loader, no build: learning included with ns=robot inside another group puts
+    every node and parameter under /robot, and the two ends of each connection resolve to one name."""
+    _need("roslaunch")
+    pkg = tmp_path / "src" / "learning"
+    generate(ROOT / "fixtures" / "cases" / "learning" / "model.xmi", pkg, "ros1")
+    wrapper = tmp_path / "wrapper.launch"
+    wrapper.write_text(f'''<launch><group ns="ignored"><include file="{pkg}/launch/learning.launch">
+  <arg name="ns" value="robot"/></include></group></launch>''')
+    env = _ros_env(ROS_PACKAGE_PATH=str(tmp_path / "src") + ":/usr/share")
+    shown = _roslaunch_config(wrapper, env, "import json; print(json.dumps({'nodes': {n.namespace + n.name: [[a, b if "
+                              "b.startswith('/') else n.namespace + b] for a, b in n.remap_args] for n in c.nodes}, "
+                              "'params': sorted(c.params)}))")
+    found = json.loads(shown)
+    nodes = found["nodes"]
+    assert sorted(nodes) == ["/robot/atf/csIter", "/robot/atf/driver/fri", "/robot/atf/driver/jointCtrl",
+                             "/robot/atf/jsIter", "/robot/csGen", "/robot/learner"]
+    assert all(to.startswith("/robot/") for remaps in nodes.values() for _, to in remaps), nodes
+    remap = {(node, port): to for node, remaps in nodes.items() for port, to in remaps}
+    # fri (atf/driver) -> learner (the root) and csIter (atf); a service client to jointCtrl's service
+    assert remap["/robot/atf/driver/fri", "cartPos"] == remap["/robot/learner", "cartPos"] == "/robot/measuredPose"
+    assert remap["/robot/atf/csIter", "cartPos"] == "/robot/measuredPose"
+    assert remap["/robot/learner", "setCompliant"] == "/robot/atf/driver/jointCtrl/setCompliant"
+    assert {"/robot/atf/driver/jointCtrl/gain", "/robot/learner/window"} <= set(found["params"])
+    assert not [p for p in found["params"] if p.startswith(("/atf", "/learner", "/ignored"))]
+
+
 def _deploy_name(case: Path) -> str:
     return etree.fromstring(_run(case, "ros1").stages["psm"].encode()).get("deploy-name")
 
@@ -458,6 +492,66 @@ def test_ros1_pid_runs_under_roscore(catkin_ws: Path) -> None:
                                  text=True, timeout=20) if shutil.which("rosservice", path=ROS_ENV_PATH) else None
         if service is not None:
             assert service.returncode == 0, service.stderr
+
+
+def _rostopic_info(env: dict, topic: str) -> tuple[set[str], set[str]]:
+    """(publishers, subscribers) of ``topic``, as ``rostopic info`` names their nodes."""
+    text = subprocess.run(["rostopic", "info", topic], env=env, capture_output=True, text=True, timeout=20).stdout
+    pubs, _, subs = text.partition("Subscribers:")
+    return set(re.findall(r"^ \* (\S+)", pubs, re.M)), set(re.findall(r"^ \* (\S+)", subs, re.M))
+
+
+def _rosparam(env: dict, name: str) -> str:
+    return subprocess.run(["rosparam", "get", name], env=env, capture_output=True, text=True, timeout=20).stdout.strip()
+
+
+def test_ros1_learning_runs_in_the_namespace_its_argument_names(catkin_ws: Path, tmp_path: Path) -> None:
+    """Issue 36 item 7 on ROS 1: learning's nodes in namespaces of their own (atf/driver) name their topics
+    from the root, which an enclosing <group ns> cannot move; its launch files take the namespace as
+    argument ns: every node, topic and parameter is then under /robot and both ends of each connection
+    meet there, even inside a group."""
+    wrapper = tmp_path / "learning_ns.launch"
+    wrapper.write_text(f"""<launch>
+  <group ns="ignored">
+    <include file="{catkin_ws}/src/learning/launch/learning.launch"><arg name="ns" value="robot"/></include>
+  </group>
+</launch>
+""")
+    with _roscore_running(catkin_ws, wrapper) as env:
+        _wait_for(env, {"/robot/learner", "/robot/csGen", "/robot/atf/driver/fri", "/robot/atf/driver/jointCtrl",
+                        "/robot/atf/jsIter", "/robot/atf/csIter"},
+                  {"/robot/measuredPose", "/robot/atf_driver_measuredJoints", "/robot/atf_driver_torqueCmd"})
+        # fri (atf/driver) -> learner (root); fri, jointCtrl (atf/driver) and jsIter (atf) share measuredJoints
+        assert _rostopic_info(env, "/robot/measuredPose") == (
+            {"/robot/atf/driver/fri"}, {"/robot/learner", "/robot/atf/csIter"})
+        pubs, subs = _rostopic_info(env, "/robot/atf_driver_measuredJoints")
+        assert pubs == {"/robot/atf/driver/fri"} and {"/robot/atf/driver/jointCtrl", "/robot/atf/jsIter"} <= subs
+        echo = subprocess.run(["rostopic", "echo", "-n", "2", "/robot/measuredPose"], env=env, capture_output=True,
+                              text=True, timeout=30)
+        assert echo.returncode == 0 and echo.stdout.count("---") == 2, echo.stdout + echo.stderr
+        topics = subprocess.run(["rostopic", "list"], env=env, capture_output=True, text=True).stdout.split()
+        assert [t for t in topics if not t.startswith(("/robot/", "/rosout"))] == []
+        # the parameters follow the node: the model's values, private to the moved node
+        assert _rosparam(env, "/robot/atf/driver/jointCtrl/gain") == "12.5"
+        assert _rosparam(env, "/robot/learner/window") == "50"
+
+
+def test_ros1_pid_follows_an_enclosing_group(catkin_ws: Path, tmp_path: Path) -> None:
+    """A package whose remaps are all relative (no node in a namespace of its own) follows a <group ns>."""
+    wrapper = tmp_path / "pid_group.launch"
+    wrapper.write_text(f"""<launch>
+  <group ns="robot"><include file="{catkin_ws}/src/pid/launch/pid.launch"/></group>
+</launch>
+""")
+    assert "<arg" not in (catkin_ws / "src/pid/launch/pid.launch").read_text()
+    with _roscore_running(catkin_ws, wrapper) as env:
+        _wait_for(env, {"/robot/TrajectoryGenerator", "/robot/PIDController", "/robot/RobotInterface"},
+                  {"/robot/IDesiredPositionConn", "/robot/IMeasuredPositionConn", "/robot/IReferenceTorqueConn"})
+        assert _rostopic_info(env, "/robot/IReferenceTorqueConn") == ({"/robot/PIDController"}, {"/robot/RobotInterface"})
+        echo = subprocess.run(["rostopic", "echo", "-n", "3", "/robot/IReferenceTorqueConn"], env=env,
+                              capture_output=True, text=True, timeout=30)
+        assert echo.stdout.count("data:") == 3, echo.stdout + echo.stderr
+        assert _rosparam(env, "/robot/PIDController/kp") == "20.0"
 
 
 def test_ros1_configuration_constant_reaches_a_late_subscriber(catkin_ws: Path) -> None:

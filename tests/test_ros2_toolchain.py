@@ -33,6 +33,7 @@ generous bounds: the machines these run on are slow and shared.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import re
@@ -53,6 +54,10 @@ TOOLCHAIN = ROOT / "toolchains" / "ros2"
 ENV_SH = TOOLCHAIN / "env.sh"
 PREFIX = Path(os.environ.get("ROS2_PREFIX", Path.home() / "ros2")).expanduser()
 MODELS = sorted((ROOT / "fixtures" / "cases").glob("*/model.xmi")) + sorted((ROOT / "fixtures" / "ros").glob("*/model.xmi"))
+# ROBOMDA_ROS2_FIXTURES=managed,learning: build and run those fixtures only (a quick run; the tests
+# of the others are not collected, those that need a fixture left out skip and say which)
+ONLY = [n for n in os.environ.get("ROBOMDA_ROS2_FIXTURES", "").split(",") if n]
+MODELS = [m for m in MODELS if not ONLY or m.parent.name in ONLY]
 # a domain of our own, so that another ROS 2 on the machine neither sees nor disturbs these nodes
 DOMAIN = os.environ.get("ROS_DOMAIN_ID") or str(50 + os.getpid() % 50)
 
@@ -88,18 +93,29 @@ def _fixture_name(model: Path) -> str:
     return model.parent.name
 
 
+def _package(ws: Workspace, fixture: str) -> str:
+    """The package of ``fixture``, built; skips when ROBOMDA_ROS2_FIXTURES leaves it out."""
+    if fixture not in ws.packages:
+        pytest.skip(f"{fixture} is not in ROBOMDA_ROS2_FIXTURES={','.join(ONLY)}")
+    pkg = ws.packages[fixture]
+    assert (ws.root / "install" / pkg).is_dir(), f"the {fixture} package did not build"
+    return pkg
+
+
 @pytest.fixture(scope="module")
 def workspace(tmp_path_factory) -> Workspace:
-    """Every fixture's ROS 2 package generated into one colcon workspace and built (nice 19, -j2)."""
-    ws = tmp_path_factory.mktemp("ros2ws")
-    (ws / "home").mkdir()
+    """Every fixture's ROS 2 package generated into one colcon workspace and built (nice 19, -j2);
+    ROBOMDA_ROS2_WS=DIR: in DIR, kept, so that a second run builds only what changed."""
+    ws = Path(os.environ["ROBOMDA_ROS2_WS"]) if os.environ.get("ROBOMDA_ROS2_WS") else tmp_path_factory.mktemp("ros2ws")
+    (ws / "home").mkdir(parents=True, exist_ok=True)
     packages = {}
     for model in MODELS:
         out = ws / "src" / _fixture_name(model)
         generate(model, out, "ros2")
         packages[_fixture_name(model)] = ET.parse(out / "package.xml").getroot().findtext("name")
+    select = f"--packages-select {' '.join(packages.values())} " if ONLY else ""  # a kept workspace may hold others
     build = subprocess.run(
-        ["bash", "-c", f"source {ENV_SH} >/dev/null && nice -n 19 colcon --log-base log build --base-paths src "
+        ["bash", "-c", f"source {ENV_SH} >/dev/null && nice -n 19 colcon --log-base log build --base-paths src {select}"
          "--install-base install --build-base build --parallel-workers 1 --continue-on-error "
          "--event-handlers console_direct- console_cohesion- --cmake-args -DBUILD_TESTING=OFF "
          "-DCMAKE_BUILD_TYPE=None '-DCMAKE_CXX_FLAGS=-Wall -Wextra' -DPython3_EXECUTABLE=$(command -v python3)"],
@@ -112,6 +128,10 @@ def test_package_builds_without_a_warning(model: Path, workspace: Workspace) -> 
     pkg = workspace.packages[_fixture_name(model)]
     log = workspace.root / "log" / "latest_build" / pkg / "stdout_stderr.log"
     said = log.read_text(errors="replace") if log.is_file() else workspace.build.stdout + workspace.build.stderr
+    if os.environ.get("ROBOMDA_ROS2_WS") and not re.search(r"Building CXX", said):
+        # a kept workspace whose sources did not change: the last build that compiled them
+        compiled = [p.read_text(errors="replace") for p in sorted((workspace.root / "log").glob(f"build_*/{pkg}/stdout_stderr.log"))]
+        said = next((text for text in reversed(compiled) if "Building CXX" in text), said)
     assert (workspace.root / "install" / pkg / "share" / pkg / "package.xml").is_file(), said[-5000:]
     cache = (workspace.root / "build" / pkg / "CMakeCache.txt").read_text()
     assert re.search(r"^CMAKE_CXX_FLAGS:STRING=.*-Wall -Wextra", cache, re.M), "the warning flags did not reach the build"
@@ -268,8 +288,7 @@ MANAGED_NODES = ["/arm", "/controller", "/vision"]
 
 @pytest.fixture(scope="module")
 def managed(workspace: Workspace):
-    pkg = workspace.packages["managed"]
-    assert (workspace.root / "install" / pkg).is_dir(), "the managed package did not build"
+    pkg = _package(workspace, "managed")
     launch = Launch(workspace, pkg, "managed.launch.xml", workspace.root / "managed.launch.log")
     try:
         launch.start_loaded(_composable_nodes(workspace, pkg))
@@ -354,7 +373,7 @@ def _error_lines(text: str) -> list[str]:
 def test_managed_launch_stops_on_sigint_without_an_error_line_again_and_again(workspace: Workspace) -> None:
     # after the module fixture's run (the test above), twice more: a clean Ctrl-C of a managed
     # launch logs no ERROR line (the lifecycle destructors no longer transition a shut-down context)
-    pkg = workspace.packages["managed"]
+    pkg = _package(workspace, "managed")
     launch = Launch(workspace, pkg, "managed.launch.xml", workspace.root / "managed.again.launch.log")
     finished = lambda text: len(re.findall(r"\[lifecycle_manager-\d+\]: process has finished cleanly", text)) == 2
     for round_ in range(2):
@@ -371,8 +390,7 @@ def test_managed_launch_stops_on_sigint_without_an_error_line_again_and_again(wo
 
 @needs_launch
 def test_pid_launch_runs_its_three_nodes_and_topics(workspace: Workspace) -> None:
-    pkg = workspace.packages["pid"]
-    assert (workspace.root / "install" / pkg).is_dir(), "the pid package did not build"
+    pkg = _package(workspace, "pid")
     nodes = _composable_nodes(workspace, pkg)
     topics = _connection_topics(workspace, pkg)
     assert nodes == ["/PIDController", "/RobotInterface", "/TrajectoryGenerator"], nodes
@@ -434,8 +452,7 @@ print(json.dumps(result))
 
 @needs_launch
 def test_pid_timers_follow_the_simulated_clock(workspace: Workspace) -> None:
-    pkg = workspace.packages["pid"]
-    assert (workspace.root / "install" / pkg).is_dir(), "the pid package did not build"
+    pkg = _package(workspace, "pid")
     wrapper = workspace.root / "pid_sim_time.launch.xml"
     wrapper.write_text(f"""<launch>
   <set_parameter name="use_sim_time" value="true"/>
@@ -478,17 +495,45 @@ print(json.dumps({"counts": counts, "topics": sorted(n for n, _ in node.get_topi
 '''
 
 
+def _param_get(ws: Workspace, node: str, name: str) -> str:
+    """What ``ros2 param get`` says of parameter ``name`` of ``node`` ("Integer value is: 80")."""
+    run = ws.run(f"ros2 param get --no-daemon {node} {name}", timeout=120)
+    return (run.stdout + run.stderr).strip()
+
+
+@contextlib.contextmanager
+def _tuned(ws: Workspace, pkg: str, instance: str, values: str):
+    """The installed user parameter file of ``instance`` with ``values`` (lines under ros__parameters),
+    as a user's tuned file is installed once the package is built again; restored afterwards."""
+    user = ws.root / "install" / pkg / "share" / pkg / "config" / f"{instance}.user.yaml"
+    fresh = user.read_text()
+    assert fresh.endswith("\n/**:\n  ros__parameters: {}\n"), fresh
+    user.write_text(fresh.replace("ros__parameters: {}", "ros__parameters:\n    " + values))
+    try:
+        yield
+    finally:
+        user.write_text(fresh)
+
+
 @needs_launch
 def test_learning_under_a_pushed_namespace_connects_both_kinds_of_node(workspace: Workspace) -> None:
     # learning has nodes in the root namespace (learner, csGen) and in atf/driver, atf (fri,
-    # jointCtrl, ...): included under <push-ros-namespace>, the ends of each connection still meet
-    pkg = workspace.packages["learning"]
-    assert (workspace.root / "install" / pkg).is_dir(), "the learning package did not build"
+    # jointCtrl, ...): included under <push-ros-namespace>, the ends of each connection still meet,
+    # and each node gets its parameters: the model's values that differ from the component's
+    # defaults (jointCtrl gain 12.5, not 10.0; csIter controlMode impedance, not position) and a
+    # user file's (learner window 80, not 50), in composable nodes and in a node of its own
+    pkg = _package(workspace, "learning")
     wrapper = workspace.root / "learning_pushed.launch.xml"
+    share = f"$(find-pkg-share {pkg})/config"
     wrapper.write_text(f"""<launch>
   <group>
     <push-ros-namespace namespace="robot"/>
     <include file="$(find-pkg-share {pkg})/launch/{pkg}.launch.xml"/>
+    <node pkg="{pkg}" exec="joint_controller_node" name="jointCtrlAlone" namespace="atf/driver" output="screen">
+      <param from="{share}/atf_driver_jointCtrl.yaml"/>
+      <param from="{share}/atf_driver_jointCtrl.user.yaml"/>
+      <remap from="torque" to="jointCtrlAloneTorque"/>
+    </node>
   </group>
 </launch>
 """)
@@ -498,15 +543,21 @@ def test_learning_under_a_pushed_namespace_connects_both_kinds_of_node(workspace
     topics = ["/robot/measuredPose", "/robot/atf_driver_measuredJoints", "/robot/atf_driver_torqueCmd"]
     (workspace.root / "graph.py").write_text(_GRAPH)
     launch = Launch(workspace, "", str(wrapper), workspace.root / "learning_pushed.launch.log")
-    try:
-        launch.start()
-        assert launch.wait_for(lambda t: t.count("Loaded node '") >= 6), launch.text()[-5000:]
-        run = workspace.run(f"exec python3 {workspace.root / 'graph.py'} {' '.join(topics)}", timeout=240)
-        assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-3000:]
-        graph = json.loads(run.stdout.strip().splitlines()[-1])
-        counts = _count(workspace, topics, 3.0)
-    finally:
-        left = launch.stop()
+    params = {}
+    with _tuned(workspace, pkg, "learner", "window: 80"):
+        try:
+            launch.start()
+            assert launch.wait_for(lambda t: t.count("Loaded node '") >= 6), launch.text()[-5000:]
+            run = workspace.run(f"exec python3 {workspace.root / 'graph.py'} {' '.join(topics)}", timeout=240)
+            assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-3000:]
+            graph = json.loads(run.stdout.strip().splitlines()[-1])
+            counts = _count(workspace, topics, 3.0)
+            for node, name in [("/robot/atf/driver/jointCtrl", "gain"), ("/robot/atf/csIter", "controlMode"),
+                               ("/robot/learner", "window"), ("/robot/atf/driver/jointCtrlAlone", "gain"),
+                               ("/robot/atf/driver/fri", "update_period")]:
+                params[node, name] = _param_get(workspace, node, name)
+        finally:
+            left = launch.stop()
     text = launch.text()
     assert all(f"Loaded node '{n}'" in text for n in ["/robot/learner", "/robot/atf/driver/fri"]), (nodes, text[-3000:])
     assert all(p > 0 and s > 0 for p, s in graph["counts"].values()), graph
@@ -514,6 +565,44 @@ def test_learning_under_a_pushed_namespace_connects_both_kinds_of_node(workspace
                                                                  "atf_driver_torqueCmd", "doorTrajectory"}]
     assert not strays, f"topics outside the pushed namespace: {strays}"
     assert all(c > 0 for c in counts.values()), counts
+    assert params == {("/robot/atf/driver/jointCtrl", "gain"): "Double value is: 12.5",
+                      ("/robot/atf/csIter", "controlMode"): "String value is: impedance",
+                      ("/robot/learner", "window"): "Integer value is: 80",
+                      ("/robot/atf/driver/jointCtrlAlone", "gain"): "Double value is: 12.5",
+                      ("/robot/atf/driver/fri", "update_period"): "Double value is: 0.01"}, params
+    assert not left, f"outlived SIGINT by 90 s (killed): {left}"
+
+
+@needs_launch
+def test_managed_under_a_pushed_namespace_gets_its_parameters_and_activates(workspace: Workspace) -> None:
+    # lifecycle nodes loaded into containers under <push-ros-namespace>: the lifecycle managers find
+    # them (node_names follow the namespace), each has the value of its user file (controller
+    # damping 33, not 20), and they become active
+    pkg = _package(workspace, "managed")
+    wrapper = workspace.root / "managed_pushed.launch.xml"
+    wrapper.write_text(f"""<launch>
+  <group>
+    <push-ros-namespace namespace="robot"/>
+    <include file="$(find-pkg-share {pkg})/launch/{pkg}.launch.xml"/>
+  </group>
+</launch>
+""")
+    launch = Launch(workspace, "", str(wrapper), workspace.root / "managed_pushed.launch.log")
+    finished = lambda text: len(re.findall(r"\[lifecycle_manager-\d+\]: process has finished cleanly", text)) == 2
+    with _tuned(workspace, pkg, "controller", "damping: 33"):
+        try:
+            launch.start_loaded([f"/robot{n}" for n in _composable_nodes(workspace, pkg)])
+            assert launch.wait_for(finished), launch.text()[-5000:]
+            damping = _param_get(workspace, "/robot/controller", "damping")
+            threshold = _param_get(workspace, "/robot/vision", "threshold")
+            guid = _param_get(workspace, "/robot/camera", "guid")
+            state = _lifecycle_get(workspace, "/robot/controller")
+        finally:
+            left = launch.stop()
+    assert damping == "Integer value is: 33", damping
+    assert threshold == "Integer value is: 100" and guid == "String value is: 000A47010C0A3D12", (threshold, guid)
+    assert state.startswith("active"), state
+    assert not _error_lines(launch.text()), launch.text()[-5000:]
     assert not left, f"outlived SIGINT by 90 s (killed): {left}"
 
 

@@ -56,6 +56,7 @@ from pathlib import Path
 from lxml import etree
 
 from robomda.diagnostics import EXIT_INPUT, Diagnostic, RobomdaError
+from robomda.ros_params import legacy_user_params
 
 __all__ = ["WriteReport", "Drift", "write_fileset", "compare_fileset", "user_findings", "atomic_write", "recover",
            "STATE_FILE", "NEW_SUFFIX"]
@@ -214,13 +215,15 @@ def _taken_over(out: Path, rel: str, was: dict, node: etree._Element, rival: str
         f"(then move {rival} there); nothing was written", file=str(out / rel))
 
 
-def _user_drift(out: Path, nodes: list[etree._Element]) -> tuple[list[Diagnostic], list[Diagnostic]]:
-    """(OUT003 errors for orphaned user files, OUT004 warnings for user files whose element changed)."""
+def _user_drift(out: Path, nodes: list[etree._Element],
+                skip: frozenset[str] = frozenset()) -> tuple[list[Diagnostic], list[Diagnostic]]:
+    """(OUT003 errors for orphaned user files, OUT004 warnings for user files whose element changed);
+    the paths in ``skip`` are judged elsewhere (an earlier layout's file: ros_params)."""
     before = _read_state(out, "user")
     now = {n.get("path"): n for n in nodes}
     errors, warnings = [], []
     for rel, was in sorted(before.items()):
-        if not isinstance(was, dict) or not (out / rel).is_file():
+        if not isinstance(was, dict) or not (out / rel).is_file() or rel in skip:
             continue
         node = now.get(rel)
         if node is None:
@@ -254,8 +257,9 @@ def user_findings(files: etree._Element, out: Path) -> tuple[list[Diagnostic], l
     errors, which stop it, and OUT004 / OUT005 warnings)."""
     out = Path(out).resolve()
     nodes = [n for n in files.iterchildren(f"{{{_FS}}}file") if n.get("mode") == "user"]
-    errors, warnings = _user_drift(out, nodes)
-    return errors, warnings + _user_cpf_names(out, nodes)
+    legacy = legacy_user_params(files, out)
+    errors, warnings = _user_drift(out, nodes, frozenset(legacy.judged))
+    return errors + legacy.errors, warnings + legacy.warnings + _user_cpf_names(out, nodes)
 
 
 def _user_cpf_names(out: Path, nodes: list[etree._Element]) -> list[Diagnostic]:
@@ -466,9 +470,10 @@ def write_fileset(files: etree._Element, out: Path) -> WriteReport:
                     file=str(target)))
         plan.append((rel, data, mode))
     user_nodes = [n for n in files.iterchildren(f"{{{_FS}}}file") if n.get("mode") == "user"]
-    orphans, drift = _user_drift(out, user_nodes)
-    if conflicts or orphans:
-        raise RobomdaError(conflicts + orphans, EXIT_INPUT)
+    legacy = legacy_user_params(files, out)
+    orphans, drift = _user_drift(out, user_nodes, frozenset(legacy.judged))
+    if conflicts or orphans or legacy.errors:
+        raise RobomdaError(conflicts + orphans + legacy.errors, EXIT_INPUT)
 
     report = WriteReport()
     new_state: dict[str, str] = {}
@@ -502,7 +507,10 @@ def write_fileset(files: etree._Element, out: Path) -> WriteReport:
             report.removed.append(rel)
         elif target.exists():
             report.kept_stale.append(rel)
-    report.warnings.extend(drift)
+    for rel in sorted(legacy.drops):
+        drops.add(rel)
+        report.removed.append(rel)
+    report.warnings.extend(drift + legacy.warnings)
     report.warnings.extend(_user_cpf_names(out, user_nodes))
     users = {n.get("path"): {"implements": n.get("implements", ""), "name": n.get("implements-name", ""),
                              "signature": n.get("signature", "")} for n in user_nodes}

@@ -133,12 +133,13 @@
     <xsl:param name="what" as="xs:string"/>
     <xsl:param name="generated" as="xs:string"/>
     <xsl:param name="stylesheet" as="xs:string"/>
+    <xsl:param name="empty" as="xs:string+"/>
     <xsl:sequence select="fp:lines((
         fp:banner('# ', $stylesheet, $what, true()),
         concat('# The launch files load it after ', $generated, ': a parameter set here wins over the'),
         '# generated value, so tuning on the robot never means editing a generated file. Write',
         '# the same keys as there, in place of the empty mapping below.',
-        '{}'))"/>
+        $empty))"/>
   </xsl:function>
 
   <xsl:function name="fp:msg-parts" as="xs:string+">

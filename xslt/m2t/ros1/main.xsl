@@ -88,7 +88,7 @@
       <xsl:for-each select="r:instance">
         <xsl:sequence select="fp:file(concat('config/', @name, '.yaml'), 'generated', $fp:launch-xsl, fp:params-yaml(., $fp:launch-xsl))"/>
         <xsl:sequence select="fp:file(concat('config/', @name, '.user.yaml'), 'user', $fp:launch-xsl,
-            fp:user-params-yaml(concat('the tuned parameters of instance ', @name), concat('config/', @name, '.yaml'), $fp:launch-xsl))"/>
+            fp:user-params-yaml(concat('the tuned parameters of instance ', @name), concat('config/', @name, '.yaml'), $fp:launch-xsl, '{}'))"/>
       </xsl:for-each>
     </xsl:variable>
     <fs:files target="ros1">

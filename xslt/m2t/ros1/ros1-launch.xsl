@@ -20,6 +20,12 @@
   launch/<model>_<set>.launch   one per component set (seed 002): the
                                 <machine>s and <node>s of its members
   launch/<model>.launch         includes every host file
+  A package with a remap named from the root (a node in a namespace of its
+  own, a service client): every launch file takes argument ns (default:
+  the root), passes it to the files it includes, and places its nodes in
+  <group ns="/$(arg ns)">, those names starting with /$(arg ns): ROS 1 has
+  no way to name the namespace of an enclosing <group ns>, so the ends of
+  a connection meet only if the file places the system itself.
   config/<instance>.yaml        the instance's private parameters: update_period
                                 and the component's parameters (defaults)
 -->
@@ -40,7 +46,7 @@
              ' machine=&quot;', fp:xml-text($i/@host), '&quot; output=&quot;screen&quot;&gt;'),
         concat('    &lt;rosparam command=&quot;load&quot; file=&quot;$(find ', $package/@name, ')/config/', $i/@name, '.yaml&quot;/&gt;'),
         concat('    &lt;rosparam command=&quot;load&quot; file=&quot;$(find ', $package/@name, ')/config/', $i/@name, '.user.yaml&quot;/&gt;'),
-        $i/r:remap ! (concat('    &lt;remap from=&quot;', @from, '&quot; to=&quot;', @to, '&quot;/&gt;')),
+        $i/r:remap ! (concat('    &lt;remap from=&quot;', @from, '&quot; to=&quot;', if (xs:boolean(@from-root)) then '/$(arg ns)' else '', @to, '&quot;/&gt;')),
         '  &lt;/node&gt;'"/>
   </xsl:function>
 
@@ -77,10 +83,11 @@
         fp:ros-elsewhere($package),
         '--&gt;',
         '&lt;launch&gt;',
-        fp:ros1-machines($host),
-        for $i in fp:ros-children('fp:ros-on-host', $package, $host/@name)[not(@set)][not(@idle)] return fp:ros1-node($package, $i),
-        $package/r:coordinator[@host eq $host/@name] ! fp:ros1-coordinator-node($package, .),
-        fp:ros-children('fp:ros-set-on-host', $package, $host/@name) ! ('', concat('  &lt;include file=&quot;$(find ', $package/@name, ')/launch/', $package/@deploy-name, '_', @launch, '.launch&quot;/&gt;')),
+        fp:ros1-in-root($package, (
+          fp:ros1-machines($host),
+          for $i in fp:ros-children('fp:ros-on-host', $package, $host/@name)[not(@set)][not(@idle)] return fp:ros1-node($package, $i),
+          $package/r:coordinator[@host eq $host/@name] ! fp:ros1-coordinator-node($package, .),
+          fp:ros-children('fp:ros-set-on-host', $package, $host/@name) ! ('', fp:ros1-include($package, @launch)))),
         '&lt;/launch&gt;'))"/>
   </xsl:function>
 
@@ -96,8 +103,9 @@
         concat('  Deployed on host ''', fp:xml-text($set/@host), ''' (seed 002); included by its launch file, or started alone.'),
         '--&gt;',
         '&lt;launch&gt;',
-        fp:ros1-machines(fp:ros-children('fp:ros-host', $package, distinct-values($members/@host))),
-        for $i in $members[not(@idle)] return fp:ros1-node($package, $i),
+        fp:ros1-in-root($package, (
+          fp:ros1-machines(fp:ros-children('fp:ros-host', $package, distinct-values($members/@host))),
+          for $i in $members[not(@idle)] return fp:ros1-node($package, $i))),
         '&lt;/launch&gt;'))"/>
   </xsl:function>
 
@@ -110,8 +118,43 @@
         '  The whole deployment: one included launch file per host.',
         '--&gt;',
         '&lt;launch&gt;',
-        $package/r:host ! (concat('  &lt;include file=&quot;$(find ', $package/@name, ')/launch/', $package/@deploy-name, '_', @launch, '.launch&quot;/&gt;')),
+        if (fp:ros1-from-root($package)) then fp:ros1-ns-arg() else (),
+        $package/r:host ! fp:ros1-include($package, @launch),
         '&lt;/launch&gt;'))"/>
+  </xsl:function>
+
+  <!-- whether a node of $package names a topic or service from the root
+       (a node in a namespace of its own, a service client): ROS 1 resolves
+       a remap in the node's namespace and cannot name the namespace an
+       enclosing <group ns> sets, so such a package's launch files take it
+       as argument ns and place the system there themselves -->
+  <xsl:function name="fp:ros1-from-root" as="xs:boolean">
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:sequence select="exists($package/r:instance/r:remap[xs:boolean(@from-root)])"/>
+  </xsl:function>
+
+  <xsl:function name="fp:ros1-ns-arg" as="xs:string">
+    <xsl:sequence select="'  &lt;arg name=&quot;ns&quot; default=&quot;&quot; doc=&quot;the namespace to run the system in (robot), '
+                          || 'in place of a group ns around the include, which ROS 1 cannot pass on to the names taken from the root&quot;/&gt;'"/>
+  </xsl:function>
+
+  <!-- the body $lines of a launch file: as they are, or (a package naming
+       from the root) under argument ns, indented by two more -->
+  <xsl:function name="fp:ros1-in-root" as="xs:string*">
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:param name="lines" as="xs:string*"/>
+    <xsl:sequence select="if (not(fp:ros1-from-root($package))) then $lines
+        else (fp:ros1-ns-arg(), '  &lt;group ns=&quot;/$(arg ns)&quot;&gt;', fp:indent(2, $lines), '  &lt;/group&gt;')"/>
+  </xsl:function>
+
+  <!-- an <include> of the launch file of a host or set; argument ns passed on -->
+  <xsl:function name="fp:ros1-include" as="xs:string+">
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:param name="launch" as="xs:string"/>
+    <xsl:variable name="file" as="xs:string" select="concat('$(find ', $package/@name, ')/launch/', $package/@deploy-name, '_', $launch, '.launch')"/>
+    <xsl:sequence select="if (fp:ros1-from-root($package))
+        then (concat('  &lt;include file=&quot;', $file, '&quot;&gt;'), '    &lt;arg name=&quot;ns&quot; value=&quot;$(arg ns)&quot;/&gt;', '  &lt;/include&gt;')
+        else concat('  &lt;include file=&quot;', $file, '&quot;/&gt;')"/>
   </xsl:function>
 
   <xsl:function name="fp:params-yaml" as="xs:string">

@@ -16,7 +16,7 @@
              CMakeLists.txt, package.xml
              launch/<model>.launch.xml, launch/<model>_<host>.launch.xml,
              launch/<model>_<set>.launch.xml
-             config/params.yaml
+             config/<instance>.yaml, config/<instance>.user.yaml (mode user)
            One fs:file a line, as f:indent (common/indent.xsl) would indent
            the file set, written so directly (t:indented-content: no copy of
            all the text).
@@ -96,9 +96,14 @@
         <xsl:sequence select="fp:file(concat('launch/', $package/@deploy-name, '_', @launch, '.launch.xml'), 'generated', $fp:launch-xsl,
                                       fp:ros2-set-launch($package, .))"/>
       </xsl:for-each>
-      <xsl:sequence select="fp:file('config/params.yaml', 'generated', $fp:launch-xsl, fp:ros2-params-yaml(.))"/>
-      <xsl:sequence select="fp:file('config/params.user.yaml', 'user', $fp:launch-xsl,
-          fp:user-params-yaml('the tuned parameters of every node', 'config/params.yaml', $fp:launch-xsl))"/>
+      <!-- one parameter file per instance, keyed /** and loaded by that
+           node only: it applies whatever namespace the node ends up in -->
+      <xsl:for-each select="r:instance">
+        <xsl:sequence select="fp:file(concat('config/', @name, '.yaml'), 'generated', $fp:launch-xsl, fp:ros2-params-yaml(.))"/>
+        <xsl:sequence select="fp:file(concat('config/', @name, '.user.yaml'), 'user', $fp:launch-xsl,
+            fp:user-params-yaml(concat('the tuned parameters of instance ', @name), concat('config/', @name, '.yaml'), $fp:launch-xsl,
+                                ('/**:', '  ros__parameters: {}')))"/>
+      </xsl:for-each>
     </xsl:variable>
     <fs:files target="ros2">
       <xsl:call-template name="t:indented-content">

@@ -12,7 +12,8 @@
         component_container_mt where the model has threads in it) whose
         <composable_node>s, in the model's start order, are its instances
         (intra-process communication stays off: Humble refuses it with the
-        transient_local durability a latched connection asks for), each with <param from=".yaml"/>
+        transient_local durability a latched connection asks for), each with
+        <param from="config/<instance>.yaml"/> and its .user.yaml
         and a <remap> per connected port (relative for a node in the root
         namespace; a name from the root starts with $(var ros_namespace ''),
         the pushed namespace) (a managed instance: its node's
@@ -25,7 +26,9 @@
         containers of the processes wholly in it, and its members in other
         processes loaded into theirs (<load_composable_node target>)
   launch/<model>.launch.xml  includes every host file (one-machine runs)
-  config/params.yaml  "<instance>: ros__parameters: ..." for every instance
+  config/<instance>.yaml  "/**: ros__parameters: ..." per instance, given to
+        its node alone, so that it applies under a pushed namespace too
+        (launch_ros matches a composable node's keys by full name or /**)
   Checked against schemas/ros2-launch/1/launch.xsd (launch_ros attributes).
 -->
 <xsl:stylesheet version="3.0"
@@ -48,8 +51,8 @@
     <xsl:param name="i" as="element(r:instance)"/>
     <xsl:param name="n" as="xs:integer"/>
     <xsl:sequence select="fp:indent($n, (
-        concat('&lt;param from=&quot;$(find-pkg-share ', $package/@name, ')/config/params.yaml&quot;/&gt;'),
-        concat('&lt;param from=&quot;$(find-pkg-share ', $package/@name, ')/config/params.user.yaml&quot;/&gt;'),
+        concat('&lt;param from=&quot;$(find-pkg-share ', $package/@name, ')/config/', $i/@name, '.yaml&quot;/&gt;'),
+        concat('&lt;param from=&quot;$(find-pkg-share ', $package/@name, ')/config/', $i/@name, '.user.yaml&quot;/&gt;'),
         $i/r:remap ! (concat('&lt;remap from=&quot;', @from, '&quot; to=&quot;',
                              if (xs:boolean(@from-root)) then $fp:ros2-root else '', @to, '&quot;/&gt;'))))"/>
   </xsl:function>
@@ -190,14 +193,16 @@
         '&lt;/launch&gt;'))"/>
   </xsl:function>
 
+  <!-- the parameters of instance $i under the key /**: the file is given
+       to that node alone, and launch_ros matches a composable node's keys
+       only by its full name or /** (not /**/name), which a pushed
+       namespace changes -->
   <xsl:function name="fp:ros2-params-yaml" as="xs:string">
-    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:param name="i" as="element(r:instance)"/>
     <xsl:sequence select="fp:lines((
-        fp:banner('# ', $fp:launch-xsl, concat('model ''', $package/@model-name, ''''), false()),
-        for $i in $package/r:instance return (
-          (: a node in a namespace: its fully qualified name :)
-          concat(if ($i/@namespace) then fp:ros2-fqn($i) else $i/@name, ':'),
-          '  ros__parameters:',
-          fp:indent(4, fp:yaml-mapping($i/r:parameter-value, '')))))"/>
+        fp:banner('# ', $fp:launch-xsl, concat('instance ''', $i/@name, ''' of model ''', $i/../@model-name, ''''), false()),
+        '/**:',
+        '  ros__parameters:',
+        fp:indent(4, fp:yaml-mapping($i/r:parameter-value, ''))))"/>
   </xsl:function>
 </xsl:stylesheet>
