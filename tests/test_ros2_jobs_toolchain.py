@@ -24,7 +24,7 @@ from pathlib import Path
 import pytest
 
 from robomda.api import generate
-from test_ros2_toolchain import ENV_SH, Launch, Workspace, _count, _env, _error_lines, _lifecycle_get, needs_launch
+from test_ros2_toolchain import ENV_SH, Launch, Workspace, _count, colcon_build, _env, _error_lines, _lifecycle_get, needs_launch
 from test_ros2_toolchain import pytestmark  # noqa: F401 (marker ros2_toolchain; skipped where no ROS 2 is built)
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -63,12 +63,7 @@ def teleop_ws(tmp_path_factory) -> Workspace:
     ws = tmp_path_factory.mktemp("ros2jobs")
     (ws / "home").mkdir()
     generate(TELEOP, ws / "src" / "teleop", "ros2")
-    build = subprocess.run(
-        ["bash", "-c", f"source {ENV_SH} >/dev/null && nice -n 19 colcon --log-base log build --base-paths src "
-         "--install-base install --build-base build --parallel-workers 1 "
-         "--event-handlers console_direct- console_cohesion- --cmake-args -DBUILD_TESTING=OFF "
-         "-DCMAKE_BUILD_TYPE=None '-DCMAKE_CXX_FLAGS=-Wall -Wextra' -DPython3_EXECUTABLE=$(command -v python3)"],
-        cwd=ws, env=_env(ws / "home"), capture_output=True, text=True, timeout=4 * 3600)
+    build = colcon_build(ws)
     assert (ws / "install" / "teleop").is_dir(), build.stdout[-3000:] + build.stderr[-3000:]
     return Workspace(ws, {"teleop": "teleop"}, build)
 

@@ -114,13 +114,17 @@ def workspace(tmp_path_factory) -> Workspace:
         generate(model, out, "ros2")
         packages[_fixture_name(model)] = ET.parse(out / "package.xml").getroot().findtext("name")
     select = f"--packages-select {' '.join(packages.values())} " if ONLY else ""  # a kept workspace may hold others
-    build = subprocess.run(
-        ["bash", "-c", f"source {ENV_SH} >/dev/null && nice -n 19 colcon --log-base log build --base-paths src {select}"
-         "--install-base install --build-base build --parallel-workers 1 --continue-on-error "
+    return Workspace(ws, packages, colcon_build(ws, f"{select}--continue-on-error "))
+
+
+def colcon_build(ws: Path, options: str = "") -> subprocess.CompletedProcess:
+    """colcon build of the packages under ``ws``/src, warnings on, at nice 19 (``options``: more of colcon's)."""
+    return subprocess.run(
+        ["bash", "-c", f"source {ENV_SH} >/dev/null && nice -n 19 colcon --log-base log build --base-paths src {options}"
+         "--install-base install --build-base build --parallel-workers 1 "
          "--event-handlers console_direct- console_cohesion- --cmake-args -DBUILD_TESTING=OFF "
          "-DCMAKE_BUILD_TYPE=None '-DCMAKE_CXX_FLAGS=-Wall -Wextra' -DPython3_EXECUTABLE=$(command -v python3)"],
         cwd=ws, env=_env(ws / "home"), capture_output=True, text=True, timeout=4 * 3600)
-    return Workspace(ws, packages, build)
 
 
 @pytest.mark.parametrize("model", MODELS, ids=_fixture_name)
