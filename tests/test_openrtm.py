@@ -123,9 +123,9 @@ def test_data_types_are_carried_by_a_generated_idl() -> None:
                      ("DataInPort", "torques", "quadarm::TimedJointTorques", "quadarm_types.idl")]
     source = files["src/ArmInterface.cpp"]
     assert "  toIdl(::LwrArm::getJointState(), m_jointState.data);\n" in source
-    assert "    ::JointTorques value;\n    fromIdl(m_torques.data, value);\n    ::LwrArm::setTorques(value);\n" in source
+    assert "    ::quadarm::types::JointTorques value;\n    fromIdl(m_torques.data, value);\n    ::LwrArm::setTorques(value);\n" in source
     convert = files["include/quadarm/quadarm_types.h"]
-    assert "inline void toIdl(const ::JointState& in, ::quadarm::JointState& out)\n{\n  toIdlArray(in.position, out.position);" in convert
+    assert "inline void toIdl(const ::quadarm::types::JointState& in, ::quadarm::JointState& out)\n{\n  toIdlArray(in.position, out.position);" in convert
     # the model's C++ types for the atomic code, as on the other targets
     assert "struct JointState" in files["include/JointState.hpp"]
     conf = files["deploy/quadarm.rtc.conf"]

@@ -747,7 +747,9 @@ def test_ros1_composites_run_under_roscore_with_every_connection_live(app: str, 
         for call in calls:
             service = node(call.find(f"{pim}provider").get("instance")) + "/setCompliant"
             assert service in services, (service, sorted(services))
-            assert f'<remap from="setCompliant" to="{service}"/>' in launch_text
+            # from the root, or from the package's namespace argument (docs/ros.md, "Namespaces"), empty here
+            assert (f'<remap from="setCompliant" to="{service}"/>' in launch_text
+                    or f'<remap from="setCompliant" to="/$(arg ns){service}"/>' in launch_text), service
             answer = subprocess.run(["rosservice", "call", service, "true"], env=env, capture_output=True,
                                     text=True, timeout=20)
             assert "success: True" in answer.stdout, answer.stdout + answer.stderr
