@@ -60,6 +60,8 @@ def test_the_checker_says_whether_a_stage_is_valid_and_leaves_no_file(fresh: Che
 def test_a_checker_that_died_leaves_the_validation_to_the_driver(fresh: Checker) -> None:
     job = fresh.submit(VALID, FILESET)
     assert fresh.valid(job) is True
+    # stopped first, so that it cannot answer before it dies (it once did, and the run failed)
+    os.kill(fresh._proc.pid, signal.SIGSTOP)
     job = fresh.submit(VALID, FILESET)
     os.kill(fresh._proc.pid, signal.SIGKILL)
     assert fresh.valid(job) is None

@@ -397,6 +397,15 @@ def _free_port() -> int:
 
 
 @contextlib.contextmanager
+def _package_held(catkin_ws: Path, package: str):
+    """The shared workspace's ``package`` for this test alone: a test that edits its user files and one
+    that launches it may run at once on two pytest-xdist workers (a CI run once read the other's values)."""
+    with open(catkin_ws / f"{package}.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        yield
+
+
+@contextlib.contextmanager
 def _roscore_running(catkin_ws: Path, launch: Path, output: Path | None = None):
     """A roscore on a free port with ``launch`` running under it; yields the environment of its tools.
     ``output``: a file for what roslaunch and its nodes print (else it is discarded)."""
@@ -759,21 +768,22 @@ def test_ros1_a_list_of_mappings_parameter_is_read_by_the_node(catkin_ws: Path) 
     """Issue 37: the node reads `stages` item by item: a user value with six items, or one whose member
     is a string, is logged (the member keeps its value); seven good items with a member left out are not."""
     user = catkin_ws / "src/structured/config"
-    pristine = {k: (user / f"ctrl{k}.user.yaml").read_text() for k in (1, 2, 3)}
     item = "{stiffness: 100, damping: 5.0, maxTorque: 10.0}"
     values = {1: f"stages: [{', '.join([item] * 6)}]\n",
               2: f"stages: [{', '.join([item] * 6 + ['{stiffness: stiff}'])}]\n",
               3: f"stages: [{', '.join([item] * 6 + ['{damping: 1.0}'])}]\n"}
     printed = catkin_ws / "structured-items.out"
-    try:
-        for k, text in values.items():
-            (user / f"ctrl{k}.user.yaml").write_text(text)
-        with _roscore_running(catkin_ws, catkin_ws / "src/structured/launch/structured.launch", printed) as env:
-            _wait_for(env, {f"/ctrl{k}" for k in range(1, 5)}, {"/state1", "/torques1"})
-            time.sleep(2)
-    finally:
-        for k, text in pristine.items():
-            (user / f"ctrl{k}.user.yaml").write_text(text)
+    with _package_held(catkin_ws, "structured"):
+        pristine = {k: (user / f"ctrl{k}.user.yaml").read_text() for k in values}
+        try:
+            for k, text in values.items():
+                (user / f"ctrl{k}.user.yaml").write_text(text)
+            with _roscore_running(catkin_ws, catkin_ws / "src/structured/launch/structured.launch", printed) as env:
+                _wait_for(env, {f"/ctrl{k}" for k in range(1, 5)}, {"/state1", "/torques1"})
+                time.sleep(2)
+        finally:
+            for k, text in pristine.items():
+                (user / f"ctrl{k}.user.yaml").write_text(text)
     said = printed.read_text(errors="replace")
     rejected = [line for line in said.splitlines() if "parameter stages: not a list of 7 mappings" in line]
     assert len(rejected) == 2, said[-3000:]  # ctrl1 (six items) and ctrl2 (a string stiffness), not ctrl3
@@ -787,7 +797,8 @@ def test_ros1_structured_parameters_reach_the_nodes(catkin_ws: Path) -> None:
     an error to /rosout). `stages` (an array of a data type) is a list of mappings on ROS 1."""
     yaml = pytest.importorskip("yaml", reason="PyYAML not installed")
     printed = catkin_ws / "structured-roslaunch.out"
-    with _roscore_running(catkin_ws, catkin_ws / "src/structured/launch/structured.launch", printed) as env:
+    with _package_held(catkin_ws, "structured"), \
+            _roscore_running(catkin_ws, catkin_ws / "src/structured/launch/structured.launch", printed) as env:
         _wait_for(env, {f"/ctrl{k}" for k in range(1, 5)}, {"/state1", "/torques1"})
         got = yaml.safe_load(subprocess.run(["rosparam", "get", "/ctrl1"], env=env, capture_output=True, text=True,
                                             timeout=30).stdout)
