@@ -244,13 +244,76 @@ def test_a_structured_value_that_does_not_fit_is_located(capsys: pytest.CaptureF
     # offsets: Integer[7] with eight values (the model beside quadarm's atomic code, as in fixtures/cases)
     bad = text.replace("<body>{1, -2, 3, 0, 0, 0, 7}</body>", "<body>{1, 2, 3, 4, 5, 6, 7, 8}</body>", 1)
     assert bad != text
-    (tmp_path / "structured").mkdir()
-    (tmp_path / "structured" / "model.xmi").write_text(bad)
-    shutil.copytree(ROOT / "fixtures" / "cases" / "quadarm" / "atomic", tmp_path / "quadarm" / "atomic")
-    assert main(["generate", str(tmp_path / "structured" / "model.xmi"), "-o", str(tmp_path / "out"), "--target", "openrtm"]) == 1
+    model = _structured_beside_quadarm(tmp_path, bad)
+    assert main(["generate", str(model), "-o", str(tmp_path / "out"), "--target", "openrtm"]) == 1
     err = capsys.readouterr().err
     assert "error: [RTM002] default '{1, 2, 3, 4, 5, 6, 7, 8}' has 8 values, the array at most 7" in err and "INTERNAL" not in err
     assert not (tmp_path / "out").exists()
+
+
+def _structured_beside_quadarm(tmp_path: Path, text: str) -> Path:
+    """The structured model $text in tmp_path/structured, beside quadarm's atomic code as in fixtures/cases."""
+    (tmp_path / "structured").mkdir()
+    (tmp_path / "structured" / "model.xmi").write_text(text)
+    shutil.copytree(ROOT / "fixtures" / "cases" / "quadarm" / "atomic", tmp_path / "quadarm" / "atomic")
+    return tmp_path / "structured" / "model.xmi"
+
+
+# a part's values (seed 003) on ctrl2's structured attributes: an array, an enumeration
+CTRL2_VALUES = ('<ownedAttribute xmi:type="uml:Property" xmi:id="_qa103m" name="ctrl2" visibility="public" type="_qa011k" aggregation="composite"/>',
+                '<ownedAttribute xmi:type="uml:Property" xmi:id="_qa103m" name="ctrl2" visibility="public" type="_qa011k" aggregation="composite">'
+                '<defaultValue xmi:type="uml:InstanceValue" xmi:id="_rtmV" instance="_rtmIS"/></ownedAttribute>')
+CTRL2_SLOTS = ('<packagedElement xmi:type="uml:InstanceSpecification" xmi:id="_rtmIS" name="ctrl2_settings">'
+               '<slot xmi:type="uml:Slot" xmi:id="_rtmS1" definingFeature="_st2a">'
+               '<value xmi:type="uml:OpaqueExpression" xmi:id="_rtmS1v"><body>{7, 6, 5, 4, 3, 2, 1}</body></value></slot>'
+               '<slot xmi:type="uml:Slot" xmi:id="_rtmS2" definingFeature="_st1a">'
+               '<value xmi:type="uml:OpaqueExpression" xmi:id="_rtmS2v"><body>POSITION</body></value></slot>%s</packagedElement>\n'
+               '  </packagedElement>\n</uml:Model>')
+
+
+def test_a_part_sets_structured_values(tmp_path: Path) -> None:
+    text = (ROOT / "fixtures" / "cases" / "structured" / "model.xmi").read_text()
+    text = text.replace(*CTRL2_VALUES).replace("  </packagedElement>\n</uml:Model>", CTRL2_SLOTS % "")
+    model = _structured_beside_quadarm(tmp_path, text)
+    done = generate(model, tmp_path / "out", "openrtm", write=False)
+    files = {node.get("path"): node.text or "" for node in etree.fromstring(done.stages["text"].encode("utf-8")).iter(f"{FS}file")}
+    ctrl2, ctrl1 = _conf_values(files["conf/ctrl2.conf"]), _conf_values(files["conf/ctrl1.conf"])
+    assert (ctrl2["offsets"], ctrl2["fallback"]) == ("[7, 6, 5, 4, 3, 2, 1]", "POSITION")
+    assert (ctrl1["offsets"], ctrl1["fallback"]) == ("[1, -2, 3, 0, 0, 0, 7]", "TORQUE")
+    assert {k: v for k, v in ctrl2.items() if k not in ("offsets", "fallback")} == \
+        {k: v for k, v in ctrl1.items() if k not in ("offsets", "fallback")}
+
+
+def test_a_part_value_for_a_data_type_is_located(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    from robomda.cli import main
+    gains = ('<slot xmi:type="uml:Slot" xmi:id="_rtmS3" definingFeature="_qa061a">'
+             '<value xmi:type="uml:OpaqueExpression" xmi:id="_rtmS3v"><body>{1.0, 2.0, 3.0}</body></value></slot>')
+    text = (ROOT / "fixtures" / "cases" / "structured" / "model.xmi").read_text()
+    text = text.replace(*CTRL2_VALUES).replace("  </packagedElement>\n</uml:Model>", CTRL2_SLOTS % gains)
+    model = _structured_beside_quadarm(tmp_path, text)
+    assert main(["generate", str(model), "-o", str(tmp_path / "out"), "--target", "openrtm"]) == 1
+    err = capsys.readouterr().err
+    assert "error: [RTM002] value '{1.0, 2.0, 3.0}' of data type 'Gains': the data type's attributes give its value" in err
+    assert "INTERNAL" not in err and not (tmp_path / "out").exists()
+
+
+def test_an_attribute_openrtm_has_no_type_for_is_no_parameter(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    """What is still no parameter (RTM013): an array of an enumeration without a literal."""
+    from robomda.cli import main
+    text = (ROOT / "fixtures" / "cases" / "structured" / "model.xmi").read_text()
+    text = text.replace('<packagedElement xmi:type="uml:DataType" xmi:id="_qa002t"',
+                        '<packagedElement xmi:type="uml:Enumeration" xmi:id="_rtmE" name="Empty"/>\n'
+                        '    <packagedElement xmi:type="uml:DataType" xmi:id="_qa002t"', 1)
+    head, tail = text.split('xmi:id="_st4a" name="history" visibility="protected">', 1)
+    text = head + 'xmi:id="_st4a" name="history" visibility="protected">' + tail.replace(
+        '<type xmi:type="uml:PrimitiveType" href="pathmap://UML_LIBRARIES/UMLPrimitiveTypes.library.uml#Real"/>',
+        '<type xmi:type="uml:Enumeration" xmi:idref="_rtmE"/>', 1)
+    model = _structured_beside_quadarm(tmp_path, text)
+    assert main(["generate", str(model), "-o", str(tmp_path / "out"), "--target", "openrtm"]) == 0
+    err = capsys.readouterr().err
+    assert "warning: [RTM013] attribute 'history' of type 'Empty[*]' is no OpenRTM configuration parameter" in err
+    values = _conf_values((tmp_path / "out" / "conf" / "ctrl1.conf").read_text())
+    assert "history" not in values and values["limits"] == "[1.5, 2.5]"
 
 
 def test_the_configuration_reader_parses_what_the_package_writes(tmp_path: Path) -> None:
