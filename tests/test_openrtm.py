@@ -134,18 +134,23 @@ def test_data_types_are_carried_by_a_generated_idl() -> None:
     assert "arm1.jointState?port=ctrl1.jointState&" in conf
 
 
-def test_a_port_no_openrtm_type_carries_is_named(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
-    from robomda.cli import main
-    # quadarm with the datum of IJointState (and its accessors) an enumeration without literals
-    text = (ROOT / "fixtures" / "cases" / "quadarm" / "model.xmi").read_text()
+def _with_empty_enum(text: str, holders: tuple[str, ...], old_type: str) -> str:
+    """$text with an enumeration Empty (no literal) typing the first $old_type after each of $holders."""
     text = text.replace('<packagedElement xmi:type="uml:DataType" xmi:id="_qa002t"',
                         '<packagedElement xmi:type="uml:Enumeration" xmi:id="_rtmE" name="Empty"/>\n'
                         '    <packagedElement xmi:type="uml:DataType" xmi:id="_qa002t"', 1)
-    for holder in ('xmi:id="_qa087a" name="jointState" visibility="public">', 'xmi:id="_qa058p" name="return" direction="return">',
-                   'xmi:id="_qa081p" name="value">'):
+    for holder in holders:
         head, tail = text.split(holder, 1)
-        text = head + holder + tail.replace('<type xmi:type="uml:DataType" xmi:idref="_qa003t"/>',
-                                            '<type xmi:type="uml:Enumeration" xmi:idref="_rtmE"/>', 1)
+        text = head + holder + tail.replace(old_type, '<type xmi:type="uml:Enumeration" xmi:idref="_rtmE"/>', 1)
+    return text
+
+
+def test_a_port_no_openrtm_type_carries_is_named(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    from robomda.cli import main
+    # quadarm with the datum of IJointState (and its accessors) an enumeration without literals
+    text = _with_empty_enum((ROOT / "fixtures" / "cases" / "quadarm" / "model.xmi").read_text(),
+                            ('xmi:id="_qa087a" name="jointState" visibility="public">', 'xmi:id="_qa058p" name="return" direction="return">',
+                             'xmi:id="_qa081p" name="value">'), '<type xmi:type="uml:DataType" xmi:idref="_qa003t"/>')
     model = tmp_path / "model.xmi"
     model.write_text(text)
     shutil.copytree(ROOT / "fixtures" / "cases" / "quadarm" / "atomic", tmp_path / "atomic")
@@ -174,13 +179,8 @@ def test_a_data_type_default_that_does_not_fit_is_located(capsys: pytest.Capture
 def test_a_data_type_openrtm_cannot_declare_is_located(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
     from robomda.cli import main
     # quadarm with JointState's attribute mode of an enumeration without literals
-    text = (ROOT / "fixtures" / "cases" / "quadarm" / "model.xmi").read_text()
-    text = text.replace('<packagedElement xmi:type="uml:DataType" xmi:id="_qa002t"',
-                        '<packagedElement xmi:type="uml:Enumeration" xmi:id="_rtmE" name="Empty"/>\n'
-                        '    <packagedElement xmi:type="uml:DataType" xmi:id="_qa002t"', 1)
-    head, tail = text.split('xmi:id="_qa200a" name="mode" visibility="public">', 1)
-    text = head + 'xmi:id="_qa200a" name="mode" visibility="public">' + tail.replace(
-        '<type xmi:type="uml:Enumeration" xmi:idref="_qa001t"/>', '<type xmi:type="uml:Enumeration" xmi:idref="_rtmE"/>', 1)
+    text = _with_empty_enum((ROOT / "fixtures" / "cases" / "quadarm" / "model.xmi").read_text(),
+                            ('xmi:id="_qa200a" name="mode" visibility="public">',), '<type xmi:type="uml:Enumeration" xmi:idref="_qa001t"/>')
     (tmp_path / "model.xmi").write_text(text)
     shutil.copytree(ROOT / "fixtures" / "cases" / "quadarm" / "atomic", tmp_path / "atomic")
     assert main(["generate", str(tmp_path / "model.xmi"), "-o", str(tmp_path / "out"), "--target", "openrtm"]) == 1
@@ -300,14 +300,9 @@ def test_a_part_value_for_a_data_type_is_located(capsys: pytest.CaptureFixture[s
 def test_an_attribute_openrtm_has_no_type_for_is_no_parameter(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
     """What is still no parameter (RTM013): an array of an enumeration without a literal."""
     from robomda.cli import main
-    text = (ROOT / "fixtures" / "cases" / "structured" / "model.xmi").read_text()
-    text = text.replace('<packagedElement xmi:type="uml:DataType" xmi:id="_qa002t"',
-                        '<packagedElement xmi:type="uml:Enumeration" xmi:id="_rtmE" name="Empty"/>\n'
-                        '    <packagedElement xmi:type="uml:DataType" xmi:id="_qa002t"', 1)
-    head, tail = text.split('xmi:id="_st4a" name="history" visibility="protected">', 1)
-    text = head + 'xmi:id="_st4a" name="history" visibility="protected">' + tail.replace(
-        '<type xmi:type="uml:PrimitiveType" href="pathmap://UML_LIBRARIES/UMLPrimitiveTypes.library.uml#Real"/>',
-        '<type xmi:type="uml:Enumeration" xmi:idref="_rtmE"/>', 1)
+    text = _with_empty_enum((ROOT / "fixtures" / "cases" / "structured" / "model.xmi").read_text(),
+                            ('xmi:id="_st4a" name="history" visibility="protected">',),
+                            '<type xmi:type="uml:PrimitiveType" href="pathmap://UML_LIBRARIES/UMLPrimitiveTypes.library.uml#Real"/>')
     model = _structured_beside_quadarm(tmp_path, text)
     assert main(["generate", str(model), "-o", str(tmp_path / "out"), "--target", "openrtm"]) == 0
     err = capsys.readouterr().err
