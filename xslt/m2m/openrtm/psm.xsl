@@ -27,9 +27,13 @@
       get C++ headers (include/<Name>.hpp) and, those the ports carry, IDL.
   R3  configuration: the Configurable attributes of the realizing class (base
       kind: of the component), without any the convention's choice (public,
-      protected, not static, not read-only), of a primitive type: one
-      parameter of configuration set "default" with the model default;
-      the value an instance's part sets goes into the instance's .conf.
+      protected, not static, not read-only): one parameter of
+      configuration set "default" with the model default; the value an
+      instance's part sets goes into the instance's .conf. A single
+      primitive as coil::stringTo reads it; a data type, an enumeration or
+      an array (@kind struct / enum / sequence, @array, @size, @element) in
+      the text form of types.xsl fp:rtm-conf-text, which the generated
+      <pkg>_conf.h reads.
   R4  execution context: PeriodicExecutionContext at rate 1 / period (Hz),
       one per instance (exec_cxt.periodic.rate in the instance's .conf); a
       CPU affinity mask other than 0 as the list of its CPU numbers,
@@ -70,8 +74,9 @@
             PeriodicExecutionContext has neither setting
     RTM011  a non-periodic activity: the execution context runs at 1000 Hz
     RTM012  a connection end on another middleware: the connection is left out
-    RTM013  an attribute the convention would make a parameter whose type a
-            configuration parameter cannot carry
+    RTM013  an attribute that would be a configuration parameter whose type
+            OpenRTM has none for (an enumeration without a literal, or an
+            array of one): it is no parameter
     RTM014  a connection policy setting OpenRTM has no counterpart for
             (init: the last sample on connecting)
     RTM015  a required operation the realizing class does not declare (no
@@ -229,18 +234,30 @@
       <xsl:variable name="configurable" as="element(pim:attribute)*" select="fp:configurable-attributes($bc)"/>
       <xsl:variable name="convention" as="element(pim:attribute)*"
           select="if (exists($configurable)) then () else fp:convention-attributes($bc)"/>
-      <xsl:variable name="typed" as="element(pim:attribute)*" select="$convention[exists(fp:rtm-conf-type(.))]"/>
+      <xsl:variable name="typed" as="element(pim:attribute)*" select="$convention[exists(fp:rtm-conf-type(., $package))]"/>
       <xsl:sequence select="fp:warn-skipped-attributes($convention except $typed, 'RTM013', 'OpenRTM configuration parameter')"/>
-      <xsl:for-each select="$configurable[empty(fp:rtm-conf-type(.))]">
+      <xsl:for-each select="$configurable[empty(fp:rtm-conf-type(., $package))]">
         <xsl:sequence select="f:warn('RTM013', string(@id), 'attribute ''' || @name || ''' (Configurable) has type '
-            || fp:type-label(.) || ', which a configuration parameter of this target cannot carry: it is no parameter')"/>
+            || fp:type-label(.) || ', which has no OpenRTM type (an enumeration needs a literal): it is no parameter')"/>
       </xsl:for-each>
-      <xsl:for-each select="($configurable, $typed)[exists(fp:rtm-conf-type(.))]">
-        <xsl:variable name="type" as="element(ty:type)" select="fp:rtm-conf-type(.)"/>
-        <r:parameter xmi-id="{@id}" name="{f:cpp-identifier(@name)}" type="{$type/@conf}" primitive="{$type/@primitive}"
-                     default="{if (@default) then fp:rtm-value(@default, $type, @id) else fp:rtm-zero($type)}">
-          <xsl:sequence select="fp:psm-doc(.)"/>
-        </r:parameter>
+      <xsl:for-each select="($configurable, $typed)[exists(fp:rtm-conf-type(., $package))]">
+        <xsl:variable name="type" as="element(ty:type)" select="fp:rtm-conf-type(., $package)"/>
+        <xsl:choose>
+          <xsl:when test="$type/@conf">
+            <r:parameter xmi-id="{@id}" name="{f:cpp-identifier(@name)}" type="{$type/@conf}" primitive="{$type/@primitive}"
+                         default="{if (@default) then fp:rtm-value(@default, $type, @id) else fp:rtm-zero($type)}">
+              <xsl:sequence select="fp:psm-doc(.)"/>
+            </r:parameter>
+          </xsl:when>
+          <xsl:otherwise>
+            <!-- a structured parameter: its value in the text form <pkg>_conf.h reads (types.xsl) -->
+            <r:parameter xmi-id="{@id}" name="{f:cpp-identifier(@name)}" type="{$type/@cpp}" primitive="" kind="{$type/@kind}"
+                         default="{fp:rtm-conf-text(., $type, @default[normalize-space(.)], @id, 'RTM002')}">
+              <xsl:sequence select="fp:rtm-conf-bounds($type)"/>
+              <xsl:sequence select="fp:psm-doc(.)"/>
+            </r:parameter>
+          </xsl:otherwise>
+        </xsl:choose>
       </xsl:for-each>
     </r:component>
   </xsl:function>
@@ -292,10 +309,14 @@
     </xsl:choose>
   </xsl:function>
 
-  <!-- the type of a configuration parameter: a single primitive other than void -->
+  <!-- the type of a configuration parameter: a single primitive other than
+       void (coil::stringTo reads it), else any type OpenRTM has for it (a
+       data type, an enumeration with a literal, an array of these or of
+       primitives: the generated <pkg>_conf.h reads it) -->
   <xsl:function name="fp:rtm-conf-type" as="element(ty:type)?">
     <xsl:param name="typed" as="element()"/>
-    <xsl:sequence select="if (exists(fp:type-def($typed)) or exists(fp:array($typed))) then ()
+    <xsl:param name="package" as="xs:string"/>
+    <xsl:sequence select="if (exists(fp:type-def($typed)) or exists(fp:array($typed))) then fp:rtm-type($typed, $package)
                           else key('fp:type', string($typed/@primitive), $fp:types)[@conf]"/>
   </xsl:function>
 
@@ -436,8 +457,11 @@
       <xsl:sequence select="fp:warn-unused-values($instance, $rtc/r:parameter/@xmi-id, 'RTM008')"/>
       <xsl:for-each select="$rtc/r:parameter">
         <xsl:variable name="set" as="element(pim:property-value)?" select="$instance/pim:property-value[@attribute eq current()/@xmi-id]"/>
+        <xsl:variable name="attribute" as="element()" select="key('fp:id', @xmi-id, root($instance))"/>
         <r:parameter-value name="{@name}"
-            value="{if ($set) then fp:rtm-value($set/@value, key('fp:type', @primitive, $fp:types), $set/@holder) else @default}"/>
+            value="{if (empty($set)) then @default
+                    else if (@kind) then fp:rtm-conf-text($attribute, fp:rtm-type($attribute, $rtc/@category), $set/@value, $set/@holder, 'RTM002')
+                    else fp:rtm-value($set/@value, key('fp:type', @primitive, $fp:types), $set/@holder)}"/>
       </xsl:for-each>
       <xsl:for-each select="$instance/pim:start-after[@instance ! map:contains($targets, string(.))]">
         <r:start-after instance="{@instance}" xmi-id="{@xmi-id}"/>

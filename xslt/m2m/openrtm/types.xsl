@@ -2,14 +2,19 @@
 <!--
   xslt/m2m/openrtm/types.xsl - the OpenRTM-aist type of a data port's
   datum, and the package's data types: C++ headers for the atomic code and
-  an IDL of the types the data ports carry (part of xslt/m2m/openrtm/psm.xsl).
+  an IDL of the types the data ports carry; the text of a structured
+  configuration value (part of xslt/m2m/openrtm/psm.xsl).
 
   Reads:   typed elements of a bound PIM (@primitive, @type, @lower, @upper),
            pim:datatype, pim:enumeration; xslt/m2m/openrtm/types.xml.
-  Writes:  ty:type descriptions (values), r:data-types.
+  Writes:  ty:type descriptions (values), r:data-types, configuration texts.
   Params:  none.  Keys: fp:id (psm-kit.xsl), fp:type (psm.xsl).
-  Errors:  RTM021 a data type that contains itself;
-           RTM022 a default of a data type's attribute that does not fit its type.
+  Errors:  RTM021 a data type that contains itself, or an attribute of one
+                  whose type OpenRTM has none for;
+           RTM022 a default of a data type's attribute that does not fit its type;
+           RTM002 (the caller's code) a configuration value that does not fit
+                  its type, or a string in it with a double quote, backslash
+                  or line break.
 
   Port types (OpenRTM's data-port convention: a struct whose first member is
   "RTC::Time tm" and whose datum is "data"; the IDL is compiled by omniidl
@@ -168,18 +173,15 @@
     <xsl:param name="package" as="xs:string"/>
     <xsl:param name="idl" as="xs:boolean"/>
     <xsl:for-each select="fp:attributes($datatype)">
-      <xsl:variable name="type" as="element(ty:type)?" select="fp:rtm-type(., $package)"/>
+      <xsl:variable name="type" as="element(ty:type)" select="fp:rtm-field-type(., $datatype, $package)"/>
       <xsl:variable name="element" as="element(ty:type)?" select="($type/ty:type, $type)[1]"/>
-      <xsl:if test="empty($type)">
-        <xsl:sequence select="f:fail('RTM021', @id, 'attribute ''' || @name || ''' of data type ''' || $datatype/@name || ''' has type '''
-            || fp:type-label(.) || ''', which has no C++ / IDL type on OpenRTM (an enumeration needs a literal)')"/>
-      </xsl:if>
       <r:field xmi-id="{@id}" owner="{$datatype/@id}" name="{@name}" member="{f:cpp-identifier(@name)}" cpp-type="{$type/@cpp}"
                cpp-default="{fp:rtm-cpp-default(., $type)}">
         <xsl:if test="$type/@kind = ('struct', 'enum', 'sequence')">
           <xsl:attribute name="type-kind" select="$type/@kind"/>
           <xsl:sequence select="$type/@type-ref"/>
         </xsl:if>
+        <xsl:sequence select="fp:rtm-conf-bounds($type)"/>
         <xsl:if test="$idl">
           <xsl:attribute name="idl-type" select="if ($type/@array eq 'fixed') then $element/@idl else $type/@idl"/>
           <xsl:attribute name="element-idl" select="$element/@idl"/>
@@ -189,6 +191,88 @@
         <xsl:sequence select="fp:psm-doc(.)"/>
       </r:field>
     </xsl:for-each>
+  </xsl:function>
+
+  <!-- the type of an attribute of data type $datatype; RTM021 when OpenRTM has none -->
+  <xsl:function name="fp:rtm-field-type" as="element(ty:type)">
+    <xsl:param name="attribute" as="element()"/>
+    <xsl:param name="datatype" as="element()"/>
+    <xsl:param name="package" as="xs:string"/>
+    <xsl:sequence select="(fp:rtm-type($attribute, $package),
+        f:fail('RTM021', $attribute/@id, 'attribute ''' || $attribute/@name || ''' of data type ''' || $datatype/@name || ''' has type '''
+               || fp:type-label($attribute) || ''', which has no C++ / IDL type on OpenRTM (an enumeration needs a literal)'))[1]"/>
+  </xsl:function>
+
+  <!-- ================================================ configuration values -->
+  <!-- how many items an array of $type holds, for <pkg>_conf.h to check:
+       @array (fixed, bounded, unbounded) and @size; @element, the C++ type
+       of one item; nothing for a single value -->
+  <xsl:function name="fp:rtm-conf-bounds" as="attribute()*">
+    <xsl:param name="type" as="element(ty:type)?"/>
+    <xsl:if test="$type/@kind eq 'sequence'">
+      <xsl:attribute name="array" select="$type/@array"/>
+      <xsl:sequence select="$type/@size[. ne '']"/>
+      <xsl:attribute name="element" select="$type/ty:type/@cpp"/>
+    </xsl:if>
+  </xsl:function>
+
+  <!-- the text of the value $value (() = the one the model gives: a data
+       type's attributes' defaults, an enumeration's first literal, a
+       primitive's zero) of $typed, of the structured type $type, as a
+       configuration value of OpenRTM (a .conf file, RTC.xml, the RtsProfile)
+       that the generated <pkg>_conf.h reads: an array [a, b], a data type
+       {name: value, ...} (every attribute, in order), an enumeration its
+       literal's name, a string or character in double quotes, a number or
+       Boolean as written. The same values as the other targets' deployment
+       files (issue 37); the list form is ROS's YAML flow style. A value
+       that does not fit fails with $code, naming $id. -->
+  <xsl:function name="fp:rtm-conf-text" as="xs:string">
+    <xsl:param name="typed" as="element()"/>
+    <xsl:param name="type" as="element(ty:type)"/>
+    <xsl:param name="value" as="xs:string?"/>
+    <xsl:param name="id" as="xs:string"/>
+    <xsl:param name="code" as="xs:string"/>
+    <xsl:variable name="element" as="element(ty:type)" select="($type/ty:type, $type)[1]"/>
+    <xsl:sequence select="
+      if (exists($value) and $element/@kind eq 'struct')
+      then f:fail($code, $id, 'value ''' || $value || ''' of ' || (if ($type/@kind eq 'sequence') then 'an array of ' else '')
+                  || 'data type ''' || $element/@label || ''': the data type''s attributes give its value')
+      else if ($type/@kind eq 'sequence')
+      then '[' || string-join(
+             if (exists($value)) then fp:default-items($value, $typed, $id, $code) ! fp:rtm-conf-item(., $element, $typed, $id, $code)
+             else if ($type/@array eq 'fixed') then (1 to xs:integer($type/@size)) ! fp:rtm-conf-item((), $element, $typed, $id, $code)
+             else (), ', ') || ']'
+      else fp:rtm-conf-item($value ! fp:default-items(., $typed, $id, $code), $type, $typed, $id, $code)"/>
+  </xsl:function>
+
+  <!-- one value of a single type: a data type's attributes, each by name -->
+  <xsl:function name="fp:rtm-conf-item" as="xs:string">
+    <xsl:param name="value" as="xs:string?"/>
+    <xsl:param name="type" as="element(ty:type)"/>
+    <xsl:param name="typed" as="element()"/>
+    <xsl:param name="id" as="xs:string"/>
+    <xsl:param name="code" as="xs:string"/>
+    <xsl:variable name="def" as="element()?" select="$type/@type-ref ! key('fp:id', ., root($typed))"/>
+    <xsl:variable name="text" as="xs:string?"
+        select="if ($type/@kind = ('struct', 'enum') or empty($value)) then ()
+                else fp:parse-default($value, $type/@kind, $type/@primitive, $id, $code)"/>
+    <xsl:sequence select="
+      if ($type/@kind eq 'struct')
+      then '{' || string-join(fp:attributes($def) ! (@name || ': ' || fp:rtm-conf-text(., fp:rtm-field-type(., $def, ''),
+                  @default[normalize-space(.)], @id, 'RTM022')), ', ') || '}'
+      else if ($type/@kind eq 'enum')
+      then (if (exists($value)) then fp:enum-literal($value, $def, $id, $code) else $def/pim:literal[1])/@name
+      else if (empty($value))
+      then (if ($type/@kind = ('string', 'char')) then '&quot;&quot;' else if ($type/@kind eq 'boolean') then 'false'
+            else if ($type/@kind eq 'real') then '0.0' else '0')
+      else if ($type/@kind = ('string', 'char') and matches($text, '[&quot;\\&#10;&#13;]'))
+      then f:fail($code, $id, 'value ''' || $value || ''' has a double quote, backslash or line break, which a structured'
+                  || ' configuration value cannot hold')
+      else if ($type/@kind eq 'char' and string-length($text) ne 1)
+      then f:fail($code, $id, 'value ''' || $value || ''' is not a single character')
+      else if ($type/@kind = ('string', 'char')) then '&quot;' || $text || '&quot;'
+      else if ($type/@kind eq 'real') then fp:decimal($text)
+      else $text"/>
   </xsl:function>
 
   <!-- ========================================================= defaults -->

@@ -14,6 +14,8 @@
              include/<Type>.hpp        per data type / enumeration the components use (m2t/common/data-types.xsl)
              idl/<pkg>_types.idl, include/<pkg>/<pkg>_types.h  the data types the data ports
                                        carry, and their conversions (openrtm-types.xsl)
+             include/<pkg>/<pkg>_conf.h  the reader of structured configuration values,
+                                       when a component has such a parameter (openrtm-types.xsl)
              CMakeLists.txt            finds OpenRTM-aist, compiles the IDL, one module (.so) per component
              conf/<instance>.conf      per instance: execution context rate, configuration set
              deploy/<process>.rtc.conf per manager: modules, components, connections, activation
@@ -86,6 +88,9 @@
           <xsl:sequence select="$fp:file-margin, fp:file('include/' || $pkg || '/' || @idl || '.h', 'generated', $fp:types-xsl, fp:rtm-types-convert(.))"/>
         </xsl:if>
       </xsl:for-each>
+      <xsl:if test="r:component/r:parameter[@kind]">
+        <xsl:sequence select="$fp:file-margin, fp:file('include/' || $pkg || '/' || $pkg || '_conf.h', 'generated', $fp:types-xsl, fp:rtm-conf-header(.))"/>
+      </xsl:if>
       <xsl:for-each select="r:interface">
         <xsl:sequence select="$fp:file-margin, fp:file(concat('idl/', @name, '.idl'), 'generated', $fp:cpp-xsl, fp:rtm-idl(.))"/>
       </xsl:for-each>

@@ -7,7 +7,12 @@
   Writes:  strings: a header, a source (RTC::DataFlowComponentBase; its
            actions onInitialize / onActivated / onExecute / onDeactivated /
            onFinalize call the realizing class's configure / start / update /
-           stop / cleanup, seed 000), the user class of a component without
+           stop / cleanup, seed 000; onExecute logs, at INFO, each input
+           port's first sample: "input port <instance>.<port>: first sample
+           received"), its configuration parameters (bindParameter, with the
+           conversion of <pkg>_conf.h for a structured one, and a listener
+           that logs a warning for a value that does not parse), the user
+           class of a component without
            one, its service ports (RTC::CorbaPort: a servant calling the
            component's operation, or a consumer its override calls), the IDL
            of each interface, and CMakeLists.txt (omniidl for the IDL, one
@@ -45,6 +50,7 @@
       '// the IDL types first: OpenRTM''s port templates find their CORBA::Any operators only if declared before',
       '#include &lt;rtm/idl/BasicDataTypeSkel.h&gt;',
       if ($c/r:data-port[@convert ne 'primitive']) then '#include &lt;' || $pkg || '/' || $c/../r:data-types/@idl || '.h&gt;' else (),
+      if ($c/r:parameter[@kind]) then '#include &lt;' || $pkg || '/' || $pkg || '_conf.h&gt;' else (),
       distinct-values($c/r:service-port/@interface) ! ('#include &quot;' || . || '.hh&quot;'),
       '#include &lt;rtm/DataFlowComponentBase.h&gt;',
       '#include &lt;rtm/Manager.h&gt;',
@@ -74,9 +80,12 @@
       '  // data ports: the datum and its port (R2)',
       $c/r:data-port ! (
         '  ' || @timed || ' ' || @member || ';',
-        '  RTC::' || (if (@direction eq 'out') then 'OutPort' else 'InPort') || '&lt;' || @timed || '&gt; ' || @port-member || ';'),
+        '  RTC::' || (if (@direction eq 'out') then 'OutPort' else 'InPort') || '&lt;' || @timed || '&gt; ' || @port-member || ';',
+        if ($rc and @direction eq 'in') then '  bool ' || @port-member || 'Received = false;  // its first sample is logged' else ()),
       fp:rtm-service-members($c),
       if ($c/@kind eq 'base' and $c/r:parameter) then ('  // configuration parameters (R3)', $c/r:parameter ! ('  ' || @type || ' m_' || @name || ';')) else (),
+      if ($c/r:parameter) then ('  // logs a configuration value that does not parse (OpenRTM then sets the default)',
+                                '  void reportConfiguration(const char* name, const char* value);') else (),
       '};',
       '',
       '}  // namespace ' || $pkg,
@@ -242,6 +251,40 @@
         '  &quot;&quot;', '};')"/>
   </xsl:function>
 
+  <!-- the conversion of a parameter's text: coil::stringTo for a single
+       primitive (bindParameter's default), else the package's <pkg>_conf.h -->
+  <xsl:function name="fp:rtm-conf-parser" as="xs:string">
+    <xsl:param name="p" as="element(r:parameter)"/>
+    <xsl:variable name="scope" as="xs:string" select="'::' || $p/../@category || '::conf::'"/>
+    <xsl:sequence select="
+      if (empty($p/@kind)) then 'coil::stringTo'
+      else if ($p/@kind eq 'sequence')
+      then $scope || 'parseList&lt;' || $p/@element || ', ' || string-join(fp:rtm-conf-limits($p, $scope), ', ') || '&gt;'
+      else $scope || 'parse&lt;' || $p/@type || '&gt;'"/>
+  </xsl:function>
+
+  <!-- the listener of the configuration set: OpenRTM's ConfigAdmin sets a
+       parameter whose value does not parse to its default, silently; the
+       component parses the value again and logs a warning that names it -->
+  <xsl:function name="fp:rtm-report-configuration" as="xs:string*">
+    <xsl:param name="c" as="element(r:component)"/>
+    <xsl:if test="$c/r:parameter">
+      <xsl:sequence select="'',
+        '// a value of the configuration set that does not parse: OpenRTM sets the parameter to its default',
+        'void ' || $c/@generated-class || '::reportConfiguration(const char* name, const char* value)',
+        '{',
+        '  const std::string param(name);',
+        '  bool parses = true;',
+        $c/r:parameter ! ('  ' || (if (position() eq 1) then 'if' else 'else if') || ' (param == &quot;' || @name || '&quot;) { '
+                          || @type || ' v; parses = ' || fp:rtm-conf-parser(.) || '(v, value); }'),
+        '  if (!parses) {',
+        '    RTC_WARN((&quot;configuration parameter %s of %s: value ''%s'' does not parse, the parameter has its default&quot;, name,',
+        '              RTC::RTObject_impl::getInstanceName(), value));',
+        '  }',
+        '}'"/>
+    </xsl:if>
+  </xsl:function>
+
   <!-- a datum to the atomic code's type -->
   <xsl:function name="fp:rtm-from-datum" as="xs:string">
     <xsl:param name="port" as="element(r:data-port)"/>
@@ -275,12 +318,16 @@
       '{',
       $c/r:data-port ! ('  ' || (if (@direction eq 'out') then 'addOutPort' else 'addInPort') || '(&quot;' || @name || '&quot;, ' || @port-member || ');'),
       fp:rtm-service-registration($c),
+      if ($c/r:parameter) then ('  addConfigurationParamListener(RTC::ConfigurationParamListenerType::ON_UPDATE_CONFIG_PARAM, *this,',
+                                '                                &amp;' || $class || '::reportConfiguration);') else (),
       $c/r:parameter ! ('  bindParameter(&quot;' || @name || '&quot;, '
-                        || (if ($rc) then $rc/@cpp-name || '::' || @name else 'm_' || @name) || ', ' || fp:cpp-string(@default) || ');'),
+                        || (if ($rc) then $rc/@cpp-name || '::' || @name else 'm_' || @name) || ', ' || fp:cpp-string(@default)
+                        || (if (@kind) then ', &amp;' || fp:rtm-conf-parser(.) else '') || ');'),
       if ($rc) then fp:rtm-call($c, 'configure') else '  return RTC::RTC_OK;',
       '}',
       if ($rc) then $c/r:hook[@name ne 'configure'] ! ('', fp:rtm-action(., $c)) else (),
       fp:rtm-service-definitions($c),
+      fp:rtm-report-configuration($c),
       '',
       '}  // namespace ' || $pkg,
       if ($rc) then ('', fp:rtm-init($c)) else ()))"/>
@@ -319,6 +366,10 @@
         $c/r:data-port[@direction eq 'in'] ! (
           '  if (' || @port-member || '.isNew()) {',
           '    ' || @port-member || '.read();',
+          '    if (!' || @port-member || 'Received) {',
+          '      ' || @port-member || 'Received = true;',
+          '      RTC_INFO((&quot;input port %s.' || @name || ': first sample received&quot;, RTC::RTObject_impl::getInstanceName()));',
+          '    }',
           if (not(xs:boolean(@accessor-declared))) then ()
           else if (@convert eq 'primitive') then '    ' || $rc || '::' || @accessor || '(' || fp:rtm-from-datum(.) || ');'
           else ('    ' || @cpp || ' value;', '    fromIdl' || (if (@convert eq 'sequence') then 'Seq' else '') || '(' || @member || '.data, value);',
