@@ -223,7 +223,7 @@ def test_a_slot_on_top_of_the_configuration_wins(tmp_path: Path) -> None:
          '        <value xmi:type="uml:LiteralReal" xmi:id="_telS_ikgv" value="3.0"/>\n'
          '      </slot>\n    </packagedElement>')]})
     jobs, _ = _bound(model)
-    assert dict(jobs)["playback"] == [("robot", []), ("invkin", [("gain", "3.0")]), ("player", [("duration", "4.0")])]
+    assert dict(jobs)["playback"] == [("player", [("duration", "4.0")]), ("robot", []), ("invkin", [("gain", "3.0")])]
 
 
 def test_features_given_with_jobs_of_configurations_are_refused(tmp_path: Path) -> None:
@@ -270,7 +270,7 @@ def test_the_cli_refuses_a_broken_configuration_and_writes_nothing(tmp_path: Pat
                                                                   capsys: pytest.CaptureFixture[str]) -> None:
     model = _copy(tmp_path, {"model.xmi": [('configuration="variability/configs/playback.xml"',
                                             'configuration="variability/configs/nowhere.xml"')]})
-    code = main(["generate", str(model), "-o", str(tmp_path / "out"), "orocos"])
+    code = main(["generate", str(model), "-o", str(tmp_path / "out"), "-t", "orocos"])
     err = capsys.readouterr().err
     assert code == 1 and "[JOB100]" in err and "Traceback" not in err
     assert not (tmp_path / "out").exists()

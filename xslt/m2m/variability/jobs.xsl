@@ -51,20 +51,27 @@
     <xsl:param name="job" as="element(pim:job)"/>
     <xsl:param name="model-uri" as="xs:string"/>
     <xsl:variable name="rel" as="xs:string" select="fp:job-configuration($job)"/>
-    <xsl:variable name="folder" as="xs:string" select="replace($model-uri, '[^/]*$', '')"/>
+    <xsl:variable name="folder" as="xs:string" select="replace($model-uri, '/[^/]*$', '/')"/>
     <xsl:variable name="cfg" as="xs:string">
       <xsl:try select="if ($model-uri eq '') then '' else string(resolve-uri(iri-to-uri(translate($rel, '\', '/')), $model-uri))">
         <xsl:catch select="''"/>
       </xsl:try>
     </xsl:variable>
-    <xsl:variable name="inside" as="xs:boolean" select="$cfg ne '' and starts-with($cfg, $folder)"/>
+    <!-- compared as paths: Saxon writes file:/x where the driver wrote file:///x -->
+    <xsl:variable name="inside" as="xs:boolean" select="$cfg ne '' and starts-with(fp:path($cfg), fp:path($folder))"/>
     <xsl:variable name="fm" as="xs:string?"
         select="if ($inside and doc-available($cfg))
                 then ((resolve-uri('model.xml', $cfg), resolve-uri('../model.xml', $cfg)) ! string())
-                     [starts-with(., $folder)][doc-available(.)][1]
+                     [starts-with(fp:path(.), fp:path($folder))][doc-available(.)][1]
                 else ()"/>
     <xsl:sequence select="map { 'job': $job, 'rel': $rel, 'cfg': $cfg, 'inside': $inside, 'fm': $fm,
                                 'res': $fm ! string(resolve-uri('resolution.xml', .))[doc-available(.)] }"/>
+  </xsl:function>
+
+  <!-- a file URI as a path (file:/x, file:///x: /x), to compare -->
+  <xsl:function name="fp:path" as="xs:string">
+    <xsl:param name="uri" as="xs:string"/>
+    <xsl:sequence select="replace($uri, '^file:/*', '/')"/>
   </xsl:function>
 
   <!-- JOB100-JOB103, JOB106, JOB107: what keeps the jobs' configurations from being read -->
