@@ -266,6 +266,24 @@ def test_a_connector_one_job_drops_between_parts_it_runs_is_kept_with_a_warning(
     assert warnings[0].line == _line_of(model, 'xmi:id="_telC_link"')
 
 
+def test_a_default_set_by_some_jobs_becomes_their_members_values_or_a_warning(tmp_path: Path) -> None:
+    """A `set` without part of a feature not every job selects sets the job's members whose realizing class
+    owns the attribute: the player's scale in playback; the trackball's, which playback does not run, nowhere."""
+    model = _copy(tmp_path, {"variability/resolution.xml": [
+        ('  <feature name="HighGain">\n', '  <feature name="HighGain">\n'
+                                          '    <set attribute="teleop::atomic::RecordedTrajectory::scale" value="0.8"/>\n'
+                                          '    <set attribute="teleop::atomic::TrackballInput::scale" value="0.9"/>\n')]})
+    done = check(model)
+    assert done.exit_code == 0
+    warnings = [d for d in done.diagnostics if d.code == "JOB112"]
+    assert len(warnings) == 1 and "sets 'teleop::atomic::TrackballInput::scale' in the configuration of job 'playback'" \
+        in warnings[0].message
+    resolution = model.parent / "variability" / "resolution.xml"
+    assert (warnings[0].file, warnings[0].line) == (str(resolution), _line_of(resolution, 'value="0.9"'))
+    jobs, _ = _bound(model)
+    assert dict(jobs)["playback"][0] == ("player", [("scale", "0.8"), ("duration", "4.0")])
+
+
 def test_the_cli_refuses_a_broken_configuration_and_writes_nothing(tmp_path: Path,
                                                                   capsys: pytest.CaptureFixture[str]) -> None:
     model = _copy(tmp_path, {"model.xmi": [('configuration="variability/configs/playback.xml"',
