@@ -310,10 +310,11 @@ def line_package(tmp_path_factory) -> Path:
 
 
 @pytest.mark.orocos_toolchain
-def test_orocos_switches_the_variants_without_stopping_the_robot_interface(line_package: Path) -> None:
+@pytest.mark.parametrize("fmt", ["xml", "ops", "lua"])
+def test_orocos_switches_the_variants_without_stopping_the_robot_interface(line_package: Path, fmt: str) -> None:
     from test_jobs import _bash
 
-    run = _bash(f"oro_add_prefix {line_package / 'install'} && JOBS_FILE=teleop.xml timeout 120 nice -n 19 rttlua "
+    run = _bash(f"oro_add_prefix {line_package / 'install'} && JOBS_FILE=teleop.{fmt} timeout 120 nice -n 19 rttlua "
                 "../switch.lua", line_package / "deploy", timeout=300)
     out = run.stdout + run.stderr
     assert run.returncode == 0 and "JOBS-RESULT: OK" in out and "JOBS-CHECK FAILED" not in out, out[-4000:]
