@@ -244,7 +244,7 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
             index -= 1
             continue
         # only a leading run of steps: a step after one that ran has new input
-        resuming = resuming and index < len(resume.done) and resume.done[index][0] == key
+        resuming = ran
         if resuming:
             previous = _resumed(pipeline, index, key, resume, result, locator, engine)
             continue
