@@ -254,3 +254,26 @@ def test_pure_xslt_runner_configures_a_product_line(engine: Cli, workdir: Path) 
     bound = workdir / f"{engine.name}-researchcamp-runner-bind.xml"
     engine.run(ROOT / "xslt/util/run-pipeline.xsl", ROOT / "pipelines/import.xml", bound, params, workdir)
     assert bound.read_bytes() == (camp / "expected" / "map-vfh-hall" / "bind.xml").read_bytes()
+
+
+@pytest.mark.parametrize("engine", ENGINES)
+def test_configure_stage_resolves_jobs_given_as_configurations(engine: Cli, workdir: Path) -> None:
+    """The configure step in job mode (no features; the jobs name configurations, docs/jobs.md) on the
+    template's golden PIM writes the golden configured PIM of fixtures/variability/teleop."""
+    step = next(s for s in pipeline.load(ROOT / "pipelines" / "import.xml").steps if s.name == "configure")
+    line = ROOT / "fixtures" / "variability" / "teleop"
+    out = workdir / f"{engine.name}-teleop-jobs-configure.xml"
+    engine.run(step.stylesheet, line / "expected" / "import.xml", out, {"model-uri": (line / "model.xmi").as_uri()},
+               workdir)
+    assert out.read_bytes() == (line / "expected" / "configure.xml").read_bytes()
+
+
+@pytest.mark.parametrize("engine", ENGINES)
+def test_pure_xslt_runner_configures_jobs_given_as_configurations(engine: Cli, workdir: Path) -> None:
+    """run-pipeline.xsl runs the configure step when the model's jobs ask for it (step/@if
+    job-configurations) and writes the golden bound PIM."""
+    line = ROOT / "fixtures" / "variability" / "teleop"
+    bound = workdir / f"{engine.name}-teleop-jobs-runner-bind.xml"
+    engine.run(ROOT / "xslt/util/run-pipeline.xsl", ROOT / "pipelines/import.xml", bound,
+               {"model": (line / "model.xmi").as_uri()}, workdir)
+    assert bound.read_bytes() == (line / "expected" / "bind.xml").read_bytes()

@@ -463,7 +463,7 @@ def test_profile_matches_spec(profile):
         "Alternative": (["Component"], ["replaces"]),
         "Constant": (["Port", "Interface"], []),
         # seed 004 §4.3 (docs/jobs.md)
-        "Job": (["InstanceSpecification"], []),
+        "Job": (["InstanceSpecification"], ["configuration"]),  # a configuration of the product line (docs/jobs.md)
         "Subsystem": (["StateMachine"], []),
     }
     assert {k: (v["metas"], list(v["tags"])) for k, v in profile.items()} == expected

@@ -146,6 +146,7 @@ def _context(model: Path, out: Path | None, package_name: str, type_map: Path | 
         "package-name": package_name,
         "type-map": type_map.resolve().as_uri() if type_map is not None else "",
         "model-path": " ".join(d.resolve().as_uri().rstrip("/") + "/" for d in _model_path(model_path)),
+        "model-uri": model.resolve().as_uri(),
         **(package or PackageInfo()).context(),
         **feature_context(features),
     }

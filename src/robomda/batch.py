@@ -57,7 +57,7 @@ from lxml import etree
 
 from robomda import __version__
 from robomda.diagnostics import EXIT_FINDINGS, EXIT_OK, as_error, format_all, linked_files
-from robomda.inputs import robot_files
+from robomda.inputs import job_files, robot_files
 from robomda.output import STATE_FILE as OUTPUT_STATE
 from robomda.output import atomic_write
 from robomda.resources import resource_root
@@ -209,8 +209,9 @@ def _read_state(out: Path) -> dict[str, dict[str, str]]:
 
 
 def _input_hash(model: Path, linked: list[Path], features: Sequence[Path] = ()) -> str:
-    """A hash of the model file, of every model file it references and of the URDF files they name (and
-    of a variant's configuration, feature model and resolution model: ``features``)."""
+    """A hash of the model file, of every model file it references, of the URDF files they name and of the
+    product line files its jobs name (and of a variant's configuration, feature model and resolution model:
+    ``features``)."""
     digest = hashlib.sha256(model.read_bytes())
     for path in features:
         digest.update(b"\0features\0" + path.name.encode() + b"\0" + path.read_bytes())
@@ -218,6 +219,9 @@ def _input_hash(model: Path, linked: list[Path], features: Sequence[Path] = ()) 
         digest.update(b"\0" + path.as_posix().encode() + b"\0" + path.read_bytes())
     for path in robot_files(model, linked):
         digest.update(b"\0urdf\0" + path.as_posix().encode() + b"\0"
+                      + (path.read_bytes() if path.is_file() else b"(missing)"))
+    for path in job_files(model):  # the configurations its jobs name (docs/jobs.md)
+        digest.update(b"\0job\0" + path.as_posix().encode() + b"\0"
                       + (path.read_bytes() if path.is_file() else b"(missing)"))
     return digest.hexdigest()
 

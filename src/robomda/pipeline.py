@@ -60,7 +60,7 @@ class Step:
     schema: Path
     params: tuple[Param, ...]
     checks: tuple[Check, ...] = ()
-    when: str | None = None  # the manifest's @if: run only when the runner supplies this value
+    when: str | None = None  # the manifest's @if: run only when one of these values is supplied (_MODEL_VALUES)
 
 
 @dataclass(frozen=True)
@@ -102,6 +102,9 @@ class RunResult:
     # settles them before anything of a later step counts, and before it ends
     # (or a run resuming from it does)
     pending: list[_Pending] = field(default_factory=list)
+    # the steps left out because their input model did not ask for them (step/@if, _MODEL_VALUES):
+    # a run resuming from this one leaves them out too, without looking again
+    skipped: list[str] = field(default_factory=list)
 
     @property
     def output(self) -> str:
@@ -158,11 +161,34 @@ def load(manifest: Path) -> Pipeline:
     return Pipeline(root.get("name"), root.get("yields"), description, tuple(steps), manifest)
 
 
+# the values of step/@if that the step's input model supplies, not the runner: each an XPath that finds
+# something in a model that asks for the step (jobs given as configurations: docs/jobs.md)
+_MODEL_VALUES = {"job-configurations": "/pim:model/pim:coordination/pim:job/pim:stereotype[@name = 'Job']"
+                                       "/pim:tag[@name = 'configuration'][normalize-space(@value)]/@value"}
+_PIM = {"pim": "urn:robomda:pim:1"}
+
+
 def for_context(pipeline: Pipeline, context: dict[str, str]) -> Pipeline:
-    """``pipeline`` without the steps whose ``if`` value ``context`` does not supply (the configure step
-    without a configuration)."""
-    kept = tuple(s for s in pipeline.steps if s.when is None or context.get(s.when))
+    """``pipeline`` without the steps that no value of their ``if`` can ask for: none that ``context``
+    supplies, none that the model may (the configure step without a configuration or jobs given as
+    configurations; a step only the model may ask for is decided when it comes: :func:`run`)."""
+    kept = tuple(s for s in pipeline.steps if s.when is None or any(context.get(v) or v in _MODEL_VALUES
+                                                                      for v in s.when.split()))
     return pipeline if len(kept) == len(pipeline.steps) else dataclasses.replace(pipeline, steps=kept)
+
+
+def _left_out(step: Step, context: dict[str, str], previous: Path | str | Tree, engine: Engine,
+              resume: RunResult | None) -> bool:
+    """Whether ``step`` is left out: only its input model may ask for it, and it does not (an earlier run
+    on the same model, ``resume``, decided it already)."""
+    if step.when is None or any(context.get(v) for v in step.when.split()):
+        return False
+    if resume is not None and step.name in resume.skipped:
+        return True
+    if isinstance(previous, Path):  # the first step: nothing to ask yet
+        return False
+    tree = previous if isinstance(previous, Tree) else engine.parse(previous)
+    return not any(engine.strings(tree, _MODEL_VALUES[v], _PIM) for v in step.when.split() if v in _MODEL_VALUES)
 
 
 def _step_key(step: Step, params: dict[str, str]) -> tuple:
@@ -203,11 +229,22 @@ def run(pipeline: Pipeline, engine: Engine, model: Path, context: dict[str, str]
     chain = pipeline.steps[:steps]
     previous: Path | str | Tree = model.resolve()
     resuming = resume is not None
-    for index, step in enumerate(chain):
+    index = -1
+    while index + 1 < len(chain):
+        index += 1
+        step = chain[index]
         params = {p.name: (p.value if p.value is not None else context.get(p.source or "", "")) for p in step.params}
         key = _step_key(step, params)
+        ran = resuming and index < len(resume.done) and resume.done[index][0] == key
+        if not ran and _left_out(step, context, previous, engine, resume if resuming else None):
+            # as if the manifest had no such step: the later ones take its place
+            result.skipped.append(step.name)
+            pipeline = dataclasses.replace(pipeline, steps=tuple(s for s in pipeline.steps if s is not step))
+            chain = chain[:index] + chain[index + 1:]
+            index -= 1
+            continue
         # only a leading run of steps: a step after one that ran has new input
-        resuming = resuming and index < len(resume.done) and resume.done[index][0] == key
+        resuming = ran
         if resuming:
             previous = _resumed(pipeline, index, key, resume, result, locator, engine)
             continue

@@ -2,23 +2,38 @@
 <!--
   xslt/m2m/configure.xsl - resolve a template PIM for one configuration of
   its feature model (seed 002: template system model + feature selection +
-  resolution model -> configured system model).
+  resolution model -> configured system model), or for the configurations
+  the model's jobs name (a «Job» with tag configuration: docs/jobs.md,
+  "Jobs given as configurations").
 
   Reads:   a PIM, urn:robomda:pim:1 (schemas/pim/1/pim.xsd), as written by
            xslt/import/import.xsl (before bind); through doc() the files of
-           its parameters.
+           its parameters, or those the jobs' configuration tags name.
   Writes:  the configured PIM (schemas/pim/1/pim.xsd), indented as f:indent
            (common/indent.xsl) indents it: the template without the elements
            whose presence condition is false and what depends on them, with
            the actions of the selected features applied. Nothing else
            changes: a configured model is the model a user would write
            without the removed parts (tests/test_variability.py).
-  Params:  features       URI of a FeatureIDE configuration (required)
-           feature-model  URI of its FeatureIDE feature model (required)
+           For jobs given as configurations ("job mode": no `features`,
+           and some pim:job whose «Job» has a tag configuration): an element
+           is removed when its condition is false in every job's
+           configuration, the actions of the features every job selects are
+           applied as above, and each such job gets a pim:member per part
+           of its composite that its configuration keeps, with a pim:value
+           per value its configuration's other features set (pim:member /
+           pim:value @at: the job, where a diagnostic about them points);
+           the slots the «Job» lists itself are kept and win.
+  Params:  features       URI of a FeatureIDE configuration ("" = job mode
+                          when the model has jobs given as configurations)
+           feature-model  URI of its FeatureIDE feature model
            resolution     URI of the resolution model
-                          (schemas/variability/1/resolution.xsd; required)
-           The pipeline runs this step only when `features` is given
-           (pipelines/import.xml, step/@if).
+                          (schemas/variability/1/resolution.xsd)
+           model-uri      URI of the XMI model: a job's configuration tag is
+                          a path relative to its folder
+           The pipeline runs this step only when `features` is given or the
+           model has jobs given as configurations (pipelines/import.xml,
+           step/@if "features job-configurations").
   Modules: variability/features.xsl (configuration against feature model,
            formulas).
   Errors:  VAR010-VAR019 (variability/features.xsl): the configuration is
@@ -30,17 +45,38 @@
            features act on the same element the same way. All are stated
            before the run stops (f:fail-all), located in the configuration,
            feature model or resolution file.
+           Job mode (located on the «Job», else in the resolution file):
+           JOB100 a job's configuration cannot be read: no such file, not
+           well-formed XML, outside the model's folder; JOB101 no feature
+           model (model.xml) in its folder or the one above, or no
+           resolution.xml beside it; JOB102 the jobs' configurations belong
+           to different feature models; JOB103 a file that is no FeatureIDE
+           configuration / feature model / robomda resolution (its root
+           element); JOB104 a swap (realize), policy or deploy action that
+           some jobs' configurations select and others do not: the jobs share
+           one system; JOB105 a slot of a «Job» names a part that its
+           configuration (or, for a job of slots only, every job's
+           configuration) removes; JOB106 `features` given for a model whose
+           jobs are configurations; JOB107 a job given as a configuration
+           whose classifier is no composite component with parts.
   Info:    VAR030 an element removed by its presence condition (located at
            the element in the XMI, naming the condition); VAR031 an element
            removed with it (a part typed by a removed component, a connector
            or dependency with an end at a removed element, a deployment or
            manifestation of one), naming the element and condition that
-           removed it.
+           removed it. JOB111 (job mode) per job given as a configuration:
+           its features, members and values.
   Warning: VAR032 a connector removed (by its condition, or with a part)
            leaves a port of a part
            that stays without any connection: names the feature condition
            that removed it, so a rule failing later on the configured model
            (an unconnected input) can be traced to the feature.
+           JOB110 (job mode) a connector whose condition is false in a job's
+           configuration that keeps the parts at both its ends: kept for the
+           jobs that have it, it carries data in that job too. JOB112 (job
+           mode) a `set` of an attribute default that some jobs' features
+           select: it becomes a value of the job's members whose realizing
+           class owns the attribute, and reaches no member of that job.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -57,15 +93,19 @@
   <xsl:include href="../common/errors.xsl"/>
   <xsl:include href="../common/indent.xsl"/>
   <xsl:include href="variability/features.xsl"/>
+  <xsl:include href="variability/jobs.xsl"/>
 
   <xsl:param name="features" as="xs:string" select="''">
-    <!-- URI of the FeatureIDE configuration -->
+    <!-- URI of the FeatureIDE configuration ("": the jobs' configurations, if any) -->
   </xsl:param>
   <xsl:param name="feature-model" as="xs:string" select="''">
     <!-- URI of the FeatureIDE feature model the configuration configures -->
   </xsl:param>
   <xsl:param name="resolution" as="xs:string" select="''">
     <!-- URI of the resolution model (schemas/variability/1/resolution.xsd) -->
+  </xsl:param>
+  <xsl:param name="model-uri" as="xs:string" select="''">
+    <!-- URI of the XMI model, against which a job's configuration tag resolves -->
   </xsl:param>
 
   <xsl:global-context-item as="document-node(element(pim:model))" use="required"/>
@@ -83,26 +123,48 @@
   <xsl:key name="fp:feature-name" match="struct//*[@name]" use="@name"/>
 
   <xsl:variable name="pim" as="document-node()" select="/"/>
-  <xsl:variable name="fm" as="document-node()" select="doc($feature-model)"/>
-  <xsl:variable name="cfg" as="document-node()" select="doc($features)"/>
-  <xsl:variable name="res" as="document-node()" select="doc($resolution)"/>
-  <xsl:variable name="selected" as="xs:string*" select="f:selected($cfg)"/>
-  <xsl:variable name="config-name" as="xs:string" select="replace(base-uri($cfg/*), '^.*/', '')"/>
+  <!-- job mode: no configuration given, and jobs given as configurations (variability/jobs.xsl) -->
+  <xsl:variable name="config-jobs" as="element(pim:job)*"
+      select="/pim:model/pim:coordination/pim:job[exists(fp:job-configuration(.))]"/>
+  <xsl:variable name="job-mode" as="xs:boolean" select="$features eq '' and exists($config-jobs)"/>
+  <xsl:variable name="job-files" as="map(*)*" select="if ($job-mode) then $config-jobs ! fp:job-files(., $model-uri) else ()"/>
+  <xsl:variable name="fm" as="document-node()" select="doc(if ($job-mode) then $job-files[1]?fm else $feature-model)"/>
+  <xsl:variable name="res" as="document-node()" select="doc(if ($job-mode) then $job-files[1]?res else $resolution)"/>
+  <xsl:variable name="config-name" as="xs:string" select="replace($features, '^.*/', '')"/>
+  <!-- the selections resolved: the configuration given, or one per job given as a configuration -->
+  <xsl:variable name="selections" as="map(*)*" select="
+      if ($job-mode) then $job-files ! (let $cfg := doc(?cfg) return
+        map { 'job': ?job, 'cfg': $cfg, 'name': replace(?cfg, '^.*/', ''), 'selected': f:selected($cfg) })
+      else (let $cfg := doc($features) return map { 'cfg': $cfg, 'name': $config-name, 'selected': f:selected($cfg) })"/>
+  <!-- how the removals and the configuration are named in the messages -->
+  <xsl:variable name="config-label" as="xs:string" select="
+      if ($job-mode) then 'the configuration of every job (''' || string-join($selections ! ?name, ''', ''') || ''')'
+      else 'configuration ''' || $config-name || ''''"/>
 
-  <!-- the presence conditions that are false, each with the element it removes -->
-  <xsl:variable name="absent" as="map(*)*">
+  <!-- the presence conditions false in every selection, each with the element it removes -->
+  <xsl:variable name="absent" as="map(*)*" select="fp:absent($selections)"/>
+  <xsl:function name="fp:absent" as="map(*)*">
+    <xsl:param name="selections" as="map(*)*"/>
     <xsl:for-each select="$res/r:resolution/r:present">
-      <xsl:variable name="condition" as="xs:boolean"
-          select="if (@when) then string(@when) = $selected else f:holds(*[1], $selected)"/>
+      <xsl:variable name="present" as="element(r:present)" select="."/>
       <xsl:variable name="target" as="element()?" select="key('fp:qn', @element, $pim)[1]"/>
-      <xsl:if test="not($condition) and exists($target)">
+      <xsl:if test="exists($target) and (every $s in $selections satisfies not(fp:holds-in($present, $s)))">
         <xsl:sequence select="map { 'element': $target, 'why': fp:condition-text(.) }"/>
       </xsl:if>
     </xsl:for-each>
-  </xsl:variable>
+  </xsl:function>
+
+  <xsl:function name="fp:holds-in" as="xs:boolean">
+    <xsl:param name="present" as="element(r:present)"/>
+    <xsl:param name="selection" as="map(*)"/>
+    <xsl:sequence select="if ($present/@when) then string($present/@when) = $selection?selected
+                          else f:holds($present/*[1], $selection?selected)"/>
+  </xsl:function>
 
   <!-- removed element id -> map { why, by (the element whose removal removed it, or empty) } -->
-  <xsl:variable name="gone" as="map(xs:string, map(*))">
+  <xsl:variable name="gone" as="map(xs:string, map(*))" select="fp:gone($absent)"/>
+  <xsl:function name="fp:gone" as="map(xs:string, map(*))">
+    <xsl:param name="absent" as="map(*)*"/>
     <xsl:variable name="roots" as="map(xs:string, map(*))" select="map:merge(
         for $a in $absent, $e in $a?element/descendant-or-self::*[@id]
         return map:entry(string($e/@id), map { 'why': $a?why, 'by': () }),
@@ -120,11 +182,12 @@
                    key('fp:deployment-by-deployed', $id, $pim)[every $t in tokenize(@deployed) satisfies map:contains($parts, $t)])
         return map:entry(string($d/@id), map { 'why': $parts($id)?why, 'by': key('fp:id-any', $id, $pim)[1] })),
         map { 'duplicates': 'use-first' })"/>
-  </xsl:variable>
+  </xsl:function>
   <xsl:key name="fp:id-any" match="*[@id]" use="@id"/>
 
-  <!-- the selected features' actions, by the id of the element they act on -->
-  <xsl:variable name="acting" as="element()*" select="$res/r:resolution/r:feature[@name = $selected]/*"/>
+  <!-- the actions of the features every selection selects, by the id of the element they act on -->
+  <xsl:variable name="acting" as="element()*"
+      select="$res/r:resolution/r:feature[every $s in $selections satisfies @name = $s?selected]/*"/>
   <xsl:variable name="realize" as="map(*)" select="fp:by-target($acting/self::r:realize, 'component')"/>
   <xsl:variable name="set" as="map(*)" select="fp:by-target($acting/self::r:set[empty(@part)], 'attribute')"/>
   <!-- "part id|attribute id" -> the set action that gives that part's value of the attribute -->
@@ -155,8 +218,12 @@
   </xsl:function>
 
   <xsl:template match="/" as="document-node()">
-    <xsl:sequence select="f:fail-all((f:model-errors($fm), f:configuration-errors($fm, $cfg), fp:resolution-errors()))"/>
+    <!-- the files the jobs name first: nothing else can be read without them (variability/jobs.xsl) -->
+    <xsl:sequence select="f:fail-all(fp:job-file-errors())"/>
+    <xsl:sequence select="f:fail-all((f:model-errors($fm), $selections ! f:configuration-errors($fm, ?cfg),
+                                      fp:resolution-errors(), fp:job-errors()))"/>
     <xsl:call-template name="fp:report"/>
+    <xsl:call-template name="fp:job-report"/>
     <xsl:variable name="configured" as="document-node()">
       <xsl:document>
         <xsl:apply-templates select="pim:model" mode="mp:configure"/>
@@ -268,8 +335,8 @@
   <!-- ================================================ what was removed -->
   <xsl:template name="fp:report" as="empty-sequence()">
     <xsl:for-each select="$absent">
-      <xsl:message select="'VAR030: ' || fp:kind(?element) || ' ''' || ?element/@name || ''' removed in configuration '''
-          || $config-name || ''': its presence condition (' || ?why || ') [xmi:id=' || ?element/@id || ']'"/>
+      <xsl:message select="'VAR030: ' || fp:kind(?element) || ' ''' || ?element/@name || ''' removed in '
+          || $config-label || ': its presence condition (' || ?why || ') [xmi:id=' || ?element/@id || ']'"/>
     </xsl:for-each>
     <xsl:for-each select="map:keys($gone)[exists($gone(.)?by)]">
       <xsl:sort select="."/>
@@ -284,8 +351,8 @@
         <xsl:variable name="end" as="element(pim:end)" select="."/>
         <xsl:if test="every $k in key('fp:connector-by-end', string($end/@role), $pim)[pim:end/@part = $end/@part]
                       satisfies map:contains($gone, string($k/@id))">
-          <xsl:sequence select="f:warn('VAR032', string($c/@id), 'connector ''' || $c/@name || ''' is removed in configuration '''
-              || $config-name || ''' (' || $gone(string($c/@id))?why || '), which leaves port '''
+          <xsl:sequence select="f:warn('VAR032', string($c/@id), 'connector ''' || $c/@name || ''' is removed in '
+              || $config-label || ' (' || $gone(string($c/@id))?why || '), which leaves port '''
               || key('fp:id-any', $end/@role, $pim)[1]/@name || ''' of part ''' || key('fp:id-any', $end/@part, $pim)[1]/@name
               || ''' with no connection')"/>
         </xsl:if>
@@ -331,12 +398,22 @@
         </xsl:when>
       </xsl:choose>
     </xsl:for-each>
-    <xsl:for-each-group select="$acting" group-by="local-name() || '|' || string(@part) || '|' || string((@component, @attribute, @connector, @element)[1])">
-      <xsl:if test="count(current-group()) gt 1">
-        <xsl:sequence select="map { 'code': 'VAR024', 'id': f:where(current-group()[2]), 'message':
-            'features ' || string-join(current-group()/../@name, ' and ') || ' both ' || local-name() || ' '''
-            || (@component, @attribute, @connector, @element)[1] || ''' in this configuration' }"/>
-      </xsl:if>
+    <!-- per selection (each job's configuration in job mode), each clash once -->
+    <xsl:variable name="clashes" as="map(*)*">
+      <xsl:for-each select="$selections">
+        <xsl:variable name="selected" as="xs:string*" select="?selected"/>
+        <xsl:for-each-group select="$res/r:resolution/r:feature[@name = $selected]/*"
+            group-by="local-name() || '|' || string(@part) || '|' || string((@component, @attribute, @connector, @element)[1])">
+          <xsl:if test="count(current-group()) gt 1">
+            <xsl:sequence select="map { 'code': 'VAR024', 'id': f:where(current-group()[2]), 'message':
+                'features ' || string-join(current-group()/../@name, ' and ') || ' both ' || local-name() || ' '''
+                || (@component, @attribute, @connector, @element)[1] || ''' in this configuration' }"/>
+          </xsl:if>
+        </xsl:for-each-group>
+      </xsl:for-each>
+    </xsl:variable>
+    <xsl:for-each-group select="$clashes" group-by="?id">
+      <xsl:sequence select="current-group()[1]"/>
     </xsl:for-each-group>
   </xsl:function>
 

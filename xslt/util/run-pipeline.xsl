@@ -21,7 +21,10 @@
                                   URIs of a FeatureIDE configuration, its
                                   feature model and the resolution model:
                                   the configure step runs (step/@if) only
-                                  when features is given.
+                                  when features is given, or when the
+                                  model has jobs given as configurations
+                                  (step/@if job-configurations; the
+                                  step's model-uri param is $model).
   Errors:  RUN001 no model given; any error of a step's stylesheet
            (fn:transform passes it on unchanged).
 
@@ -120,6 +123,7 @@
       else if ($param/@from = 'features') then $features
       else if ($param/@from = 'feature-model') then $feature-model
       else if ($param/@from = 'resolution') then $resolution
+      else if ($param/@from = 'model-uri') then $model
       else ''"/>
   </xsl:function>
 
@@ -131,8 +135,10 @@
       <xsl:when test="empty($steps)">
         <xsl:sequence select="$input"/>
       </xsl:when>
-      <xsl:when test="head($steps)/@if = 'features' and $features = ''">
-        <!-- a step for a configuration, and none is given -->
+      <xsl:when test="exists(head($steps)/@if) and not(some $v in tokenize(head($steps)/@if) satisfies
+                      ($v eq 'features' and $features ne '' or $v eq 'job-configurations' and exists(
+                       $input/*:model/*:coordination/*:job/*:stereotype[@name eq 'Job']/*:tag[@name eq 'configuration'][normalize-space(@value)])))">
+        <!-- a step for a configuration, and neither the runner nor the model gives one -->
         <xsl:sequence select="fp:run(tail($steps), $input)"/>
       </xsl:when>
       <xsl:otherwise>

@@ -1,7 +1,9 @@
 <?xml version="1.0" encoding="UTF-8"?>
 <!--
   xslt/m2m/bind/jobs.xsl - jobs and subsystems resolved (seed 004 §4.3, docs/jobs.md).
-  Reads:   pim:coordination of the PIM (xslt/import/jobs.xsl) and the
+  Reads:   pim:coordination of the PIM (xslt/import/jobs.xsl; for jobs given
+           as configurations, as xslt/m2m/configure.xsl completed it: a
+           member or value with @at is located there, at the job) and the
            instances of fp:binding (sequenced: with @start-order).
   Writes:  pim:bound-job and pim:bound-subsystem (schemas/pim/1/binding.xsd);
            the instances of the initial jobs with the job's values
@@ -74,7 +76,7 @@
         <xsl:variable name="instance" as="element(pim:instance)?" select="fp:member-instance(., $instances)"/>
         <xsl:choose>
           <xsl:when test="empty($instance)">
-            <xsl:sequence select="map { 'code': 'JOB001', 'id': string(@id), 'message': 'job ''' || $job/@name
+            <xsl:sequence select="map { 'code': 'JOB001', 'id': string((@at, @id)[1]), 'message': 'job ''' || $job/@name
                 || ''': its slot names ''' || (key('fp:id', @part, $root)/@name, @part)[1]
                 || ''', which is no component instance (a part of the composite whose parts are the instances; a composite part: name its parts)' }"/>
           </xsl:when>
@@ -82,7 +84,7 @@
             <xsl:variable name="class" as="element()?" select="key('fp:id', $instance/@realization, $root)"/>
             <xsl:variable name="known" as="xs:string*" select="if ($class) then fp:attributes($class)/@id else ()"/>
             <xsl:for-each select="pim:value[not(@attribute = $known)]">
-              <xsl:sequence select="map { 'code': 'JOB002', 'id': string(@id), 'message': 'job ''' || $job/@name
+              <xsl:sequence select="map { 'code': 'JOB002', 'id': string((@at, @id)[1]), 'message': 'job ''' || $job/@name
                   || ''' sets ''' || (key('fp:id', @attribute, $root)/@name, @attribute)[1] || ''' on instance '''
                   || $instance/@name || ''', whose realizing class ''' || ($class/@name, '?')[1] || ''' has no such attribute' }"/>
             </xsl:for-each>
@@ -91,7 +93,7 @@
       </xsl:for-each>
       <xsl:for-each-group select="pim:member" group-by="@part">
         <xsl:if test="count(current-group()) gt 1">
-          <xsl:sequence select="map { 'code': 'JOB008', 'id': string(current-group()[2]/@id), 'message': 'job '''
+          <xsl:sequence select="map { 'code': 'JOB008', 'id': string(current-group()[2]/(@at, @id)[1]), 'message': 'job '''
               || $job/@name || ''' names part ''' || (key('fp:id', current-grouping-key(), $root)/@name)[1] || ''' twice' }"/>
         </xsl:if>
       </xsl:for-each-group>
@@ -167,7 +169,7 @@
           map { 'attribute': $attribute, 'name': string($declared/@name),
                 'value': string(($set/@value, $base/pim:property-value[@attribute eq $attribute][not(@source eq 'job')]/@value,
                                  $declared/@default, '')[1]) },
-          $set ! map { 'holder': string(@id) }))"/>
+          $set ! map { 'holder': string((@at, @id)[1]) }))"/>
     </xsl:for-each>
   </xsl:function>
 
@@ -203,7 +205,7 @@
       </xsl:if>
       <pim:bound-job name="{f:cpp-identifier(@name)}" xmi-id="{@id}">
         <xsl:for-each select="fp:job-instances(., $instances)">
-          <pim:member instance="{@name}" xmi-id="{$job/pim:member[@part eq current()/@xmi-id][1]/@id}">
+          <pim:member instance="{@name}" xmi-id="{$job/pim:member[@part eq current()/@xmi-id][1]/(@at, @id)[1]}">
             <xsl:sequence select="fp:sets(fp:job-values($job, ., .))"/>
           </pim:member>
         </xsl:for-each>
@@ -274,7 +276,7 @@
             <xsl:sequence select="pim:property-value[not(@attribute = $values/@attribute)]"/>
             <xsl:for-each select="$values">
               <pim:property-value attribute="{@attribute}" name="{key('fp:id', @attribute, $root)/@name}" value="{@value}"
-                  source="job" holder="{@id}"/>
+                  source="job" holder="{(@at, @id)[1]}"/>
             </xsl:for-each>
             <xsl:sequence select="* except (pim:activity | pim:property-value)"/>
           </xsl:copy>
