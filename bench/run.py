@@ -153,7 +153,7 @@ def _batch(count: int, java_models: int, workdir: Path) -> tuple[list[str], dict
     java = shutil.which("java")
     if java and SAXON_JAR.is_file():
         # the steps a model without a product-line configuration runs (no configure step)
-        steps = pipeline.for_context(pipeline.load(pipeline_path("orocos")), {}).steps
+        steps = pipeline.for_context(pipeline.load(pipeline_path("orocos")), {}, model_may_ask=False).steps
         started = time.perf_counter()
         for i in range(java_models):
             model = next((src / f"m{i:04d}").iterdir())
@@ -210,7 +210,7 @@ def _small(workdir: Path, runs: int) -> dict[str, float]:
 
     compileall.compile_dir(str(Path(pipeline.__file__).parent), quiet=1)
     # what a fresh command compiles: the chain without the configure step a model without features skips
-    chain = pipeline.for_context(pipeline.load(resources.pipeline_path("orocos")), {})
+    chain = pipeline.for_context(pipeline.load(resources.pipeline_path("orocos")), {}, model_may_ask=False)
     stylesheets = [str(step.stylesheet) for step in chain.steps]
     out = workdir / "small-out"
     robomda = [sys.executable, "-m", "robomda"]

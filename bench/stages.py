@@ -84,7 +84,7 @@ def measure(shape: str, sizes: list[int], target: str = "orocos", wall: bool = F
     clock = time.perf_counter if wall else time.process_time
     unit = "" if wall else " CPU"
     engine = Engine()
-    chain = pipeline.for_context(pipeline.load(pipeline_path(target)), {})  # no product-line configuration
+    chain = pipeline.for_context(pipeline.load(pipeline_path(target)), {}, model_may_ask=False)  # no product line
     for step in chain.steps:
         engine.compile(step.stylesheet)
     rows = []

@@ -168,12 +168,14 @@ _MODEL_VALUES = {"job-configurations": "/pim:model/pim:coordination/pim:job/pim:
 _PIM = {"pim": "urn:robomda:pim:1"}
 
 
-def for_context(pipeline: Pipeline, context: dict[str, str]) -> Pipeline:
+def for_context(pipeline: Pipeline, context: dict[str, str], *, model_may_ask: bool = True) -> Pipeline:
     """``pipeline`` without the steps that no value of their ``if`` can ask for: none that ``context``
     supplies, none that the model may (the configure step without a configuration or jobs given as
-    configurations; a step only the model may ask for is decided when it comes: :func:`run`)."""
-    kept = tuple(s for s in pipeline.steps if s.when is None or any(context.get(v) or v in _MODEL_VALUES
-                                                                      for v in s.when.split()))
+    configurations; a step only the model may ask for is decided when it comes: :func:`run`).
+    ``model_may_ask=False``: the model is known to ask for none (the bench's synthetic models), so
+    such a step is left out here, as a run would leave it out."""
+    kept = tuple(s for s in pipeline.steps if s.when is None or any(
+        context.get(v) or (model_may_ask and v in _MODEL_VALUES) for v in s.when.split()))
     return pipeline if len(kept) == len(pipeline.steps) else dataclasses.replace(pipeline, steps=kept)
 
 
