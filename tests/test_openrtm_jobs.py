@@ -127,12 +127,13 @@ class _Lines:
         for line in process.stdout:
             self.lines.append((time.monotonic(), line.rstrip("\n")))
 
-    def samples(self, since: float = 0.0, until: float = float("inf")) -> list[tuple[int, int, int]]:
+    def samples(self, since: float = 0.0) -> list[tuple[int, int, float]]:
+        """(sec, nsec, datum) of what a probe ("probe: ...") or a value probe ("value: ...") read after $since."""
         found = []
         for when, line in list(self.lines):
-            match = re.match(r"probe: (\d+) (\d+)(?: (-?\d+))?$", line)
-            if match and since <= when < until:
-                found.append((int(match.group(1)), int(match.group(2)), int(match.group(3) or 0)))
+            match = re.match(r"(?:probe|value): (\d+) (\d+)(?: (\S+))?$", line)
+            if match and since <= when:
+                found.append((int(match.group(1)), int(match.group(2)), float(match.group(3) or 0)))
         return found
 
 
@@ -152,9 +153,7 @@ def _side_conf(path: Path, ns_port: int, modules: Path, module: str, name: str, 
 
 
 def _build(out: Path, tmp_path: Path) -> None:
-    for script in (f"rtm_build_pkg {out}", f"rtm_build_probe {tmp_path / 'probe_long'}",
-                   f"rtm_build_probe {tmp_path / 'probe_double'} -DPROBE_TYPE=RTC::TimedDouble",
-                   f"rtm_build_events {tmp_path / 'events'}"):
+    for script in (f"rtm_build_pkg {out}", f"rtm_build_probe {tmp_path / 'probe_long'}", f"rtm_build_events {tmp_path / 'events'}"):
         built = _bash(script, tmp_path)
         assert built.returncode == 0, script + "\n" + built.stdout[-3000:] + built.stderr[-3000:]
 
@@ -189,9 +188,9 @@ def test_teleop_switches_jobs_on_openrtm_and_never_stops_the_robot(tmp_path: Pat
         side = {
             "cycles": _side_conf(tmp_path / "cycles.rtc.conf", ns_port, tmp_path / "probe_long", "Probe", "probe_cycles",
                                  "rtcname://*/robot.cycles?port=probe_cycles.in"),
-            "player": _side_conf(tmp_path / "player.rtc.conf", ns_port, tmp_path / "probe_double", "Probe", "probe_player",
+            "player": _side_conf(tmp_path / "player.rtc.conf", ns_port, tmp_path / "events", "ValueProbe", "probe_player",
                                  "rtcname://*/player.desiredPose?port=probe_player.in"),
-            "command": _side_conf(tmp_path / "command.rtc.conf", ns_port, tmp_path / "probe_double", "Probe", "probe_command",
+            "command": _side_conf(tmp_path / "command.rtc.conf", ns_port, tmp_path / "events", "ValueProbe", "probe_command",
                                   "rtcname://*/invkin.jointCommand?port=probe_command.in"),
         }
         probes = {key: _rtcd2(conf, env) for key, conf in side.items()}
@@ -213,6 +212,12 @@ def test_teleop_switches_jobs_on_openrtm_and_never_stops_the_robot(tmp_path: Pat
         played = send("play", "job playback active (event play)")
         assert _wait_for(lambda: len(seen["player"].samples(since=played)) >= 20, 30), text()[-3000:]
         assert _wait_for(lambda: len(seen["command"].samples(since=played)) >= 20, 30)
+        # the player's trajectory falls by sample / duration each cycle: 0.01 / 4.0, the duration its
+        # job sets before activating it (its .conf says 2.0), some cycles unread by the probe
+        poses = [value for _, _, value in seen["player"].samples(since=played)]
+        steps = [a - b for a, b in zip(poses, poses[1:])]
+        assert 0 < poses[0] <= 1.0 and all(s > 0 and abs(s / 0.0025 - round(s / 0.0025)) < 1e-6 for s in steps), poses
+        assert abs(min(steps) - 0.0025) < 1e-9, steps
         send("nothing", "event nothing: no switch from job playback: ignored")
         back = send("teleoperate", "job teleoperation active (event teleoperate)")
         assert _wait_for(lambda: len(seen["command"].samples(since=back)) >= 20, 30)
