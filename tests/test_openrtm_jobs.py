@@ -113,6 +113,30 @@ def test_a_job_value_on_no_configuration_parameter_is_named(tmp_path: Path) -> N
     assert start.get("instance") == "player" and start.find("r:value", R) is None
 
 
+def test_a_member_on_another_middleware_is_named(tmp_path: Path) -> None:
+    # teleop deployed: the player in a ROS process, the rest in an OpenRTM one (unprofiled: the
+    # execution environment's name is its middleware)
+    def environment(name: str, parts: tuple[str, ...]) -> str:
+        return (f'<nestedNode xmi:type="uml:ExecutionEnvironment" xmi:id="_tE{name}" name="{name}">'
+                + "".join(f'<deployment xmi:type="uml:Deployment" xmi:id="_tD{part}" client="_tE{name}" '
+                          f'supplier="_telP_{part}" deployedArtifact="_telP_{part}"/>' for part in parts) + "</nestedNode>")
+    node = ('<packagedElement xmi:type="uml:Node" xmi:id="_tN" name="pc">' + environment("OPENRTM", ("trackball", "invkin", "robot"))
+            + environment("ROS", ("player",)) + "</packagedElement>\n    ")
+    text = TELEOP.read_text(encoding="utf-8")
+    anchor = '<packagedElement xmi:type="uml:InstanceSpecification" xmi:id="_telJ_teleoperation"'
+    assert text.count(anchor) == 1
+    model = tmp_path / "model.xmi"
+    model.write_text(text.replace(anchor, node + anchor), encoding="utf-8")
+    (tmp_path / "atomic").symlink_to(TELEOP.parent / "atomic")
+    done, psm, _ = _generated(model)
+    found = [d for d in done.warnings if d.code.startswith("JOB")]
+    assert [(d.code, d.severity) for d in found] == [("JOB041", "warning")], found
+    assert "instance 'player' of the jobs of subsystem 'arm' is not in the OpenRTM package" in found[0].message and found[0].line
+    play = psm.find("r:coordinator/r:transition[@event='play']", R)
+    assert [(s.tag.split("}")[1], s.get("instance")) for s in play] == [("stop", "trackball"), ("reconfigure", "invkin"),
+                                                                        ("keep", "robot")]
+
+
 # ---------------------------------------------------------------- the real OpenRTM
 class _Lines:
     """The lines a process prints, each with the monotonic time it was read, collected by a thread."""
