@@ -152,10 +152,10 @@ class _Lines:
             self.lines.append((time.monotonic(), line.rstrip("\n")))
 
     def samples(self, since: float = 0.0) -> list[tuple[int, int, float]]:
-        """(sec, nsec, datum) of what a probe ("probe: ...") or a value probe ("value: ...") read after $since."""
+        """(sec, nsec, datum) of the samples a probe printed after $since (its datum: a TimedLong's or TimedDouble's)."""
         found = []
         for when, line in list(self.lines):
-            match = re.match(r"(?:probe|value): (\d+) (\d+)(?: (\S+))?$", line)
+            match = re.match(r"probe: (\d+) (\d+)(?: (\S+))?$", line)
             if match and since <= when:
                 found.append((int(match.group(1)), int(match.group(2)), float(match.group(3) or 0)))
         return found
@@ -177,7 +177,9 @@ def _side_conf(path: Path, ns_port: int, modules: Path, module: str, name: str, 
 
 
 def _build(out: Path, tmp_path: Path) -> None:
-    for script in (f"rtm_build_pkg {out}", f"rtm_build_probe {tmp_path / 'probe_long'}", f"rtm_build_events {tmp_path / 'events'}"):
+    for script in (f"rtm_build_pkg {out}", f"rtm_build_probe {tmp_path / 'probe_long'}",
+                   f"rtm_build_probe {tmp_path / 'probe_double'} -DPROBE_TYPE=RTC::TimedDouble",
+                   f"rtm_build_events {tmp_path / 'events'}"):
         built = _bash(script, tmp_path)
         assert built.returncode == 0, script + "\n" + built.stdout[-3000:] + built.stderr[-3000:]
 
@@ -200,7 +202,9 @@ def test_teleop_switches_jobs_on_openrtm_and_never_stops_the_robot(tmp_path: Pat
                LD_LIBRARY_PATH=f"{OPENRTM / 'lib'}:{os.environ.get('LD_LIBRARY_PATH', '')}",
                PATH=f"{OPENRTM / 'bin'}:{os.environ['PATH']}")
     log = out / "deploy" / "teleop.log"
-    text = lambda: log.read_text(errors="replace") if log.exists() else ""  # noqa: E731
+
+    def text() -> str:
+        return log.read_text(errors="replace") if log.exists() else ""
     started: list[subprocess.Popen[str]] = []
     try:
         time.sleep(1)
@@ -212,9 +216,9 @@ def test_teleop_switches_jobs_on_openrtm_and_never_stops_the_robot(tmp_path: Pat
         side = {
             "cycles": _side_conf(tmp_path / "cycles.rtc.conf", ns_port, tmp_path / "probe_long", "Probe", "probe_cycles",
                                  "rtcname://*/robot.cycles?port=probe_cycles.in"),
-            "player": _side_conf(tmp_path / "player.rtc.conf", ns_port, tmp_path / "events", "ValueProbe", "probe_player",
+            "player": _side_conf(tmp_path / "player.rtc.conf", ns_port, tmp_path / "probe_double", "Probe", "probe_player",
                                  "rtcname://*/player.desiredPose?port=probe_player.in"),
-            "command": _side_conf(tmp_path / "command.rtc.conf", ns_port, tmp_path / "events", "ValueProbe", "probe_command",
+            "command": _side_conf(tmp_path / "command.rtc.conf", ns_port, tmp_path / "probe_double", "Probe", "probe_command",
                                   "rtcname://*/invkin.jointCommand?port=probe_command.in"),
         }
         probes = {key: _rtcd2(conf, env) for key, conf in side.items()}

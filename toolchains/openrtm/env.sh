@@ -6,10 +6,10 @@
 #   rtm_build_pkg PKGDIR      configure + build a generated OpenRTM package in PKGDIR/build
 #                             (the component modules <Class>.so land there)
 #   rtm_build_events DIR      build the test event source (events/EventSource.cpp: an OutPort
-#                             RTC::TimedString that writes each line of its manager's stdin) and
-#                             events/ValueProbe.cpp (an InPort RTC::TimedDouble that prints its values) into DIR
+#                             RTC::TimedString that writes each line of its manager's stdin) into DIR
 #   rtm_build_probe DIR [CMAKE_ARG...]  build the test probe (probe/Probe.cpp: an InPort that prints
-#                             the time stamp of what it reads; -DPROBE_TYPE=..., -DPROBE_HEADER=...,
+#                             the time stamp of what it reads, and a TimedLong's or TimedDouble's datum;
+#                             -DPROBE_TYPE=..., -DPROBE_HEADER=...,
 #                             -DPROBE_PACKAGE_BUILD=... for a generated package's type) into DIR
 #
 # Tunables (environment): RTM_JOBS (make -j, default 2), RTM_CMAKE_ARGS (extra cmake args).
@@ -55,8 +55,8 @@ rtm_build_probe() {
   _rtm_cmake "$_RTM_HERE/probe" "$out" "$@" && [ -f "$out/Probe.so" ]
 }
 
-rtm_build_events() {  # rtm_build_events DIR: the test event source and value probe (events/) into DIR
+rtm_build_events() {  # rtm_build_events DIR: the test event source (events/EventSource.cpp) into DIR
   local out
   out=$(readlink -f "${1:?usage: rtm_build_events DIR}") || return 2
-  _rtm_cmake "$_RTM_HERE/events" "$out" && [ -f "$out/EventSource.so" ] && [ -f "$out/ValueProbe.so" ]
+  _rtm_cmake "$_RTM_HERE/events" "$out" && [ -f "$out/EventSource.so" ]
 }
