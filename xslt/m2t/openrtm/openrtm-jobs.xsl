@@ -38,7 +38,8 @@
            (fp:rtm-activated: not the idle ones; its coordinators last).
   Params:  none (main.xsl's).
   Errors:  none.
-  Uses:    ../common/jobs.xsl (fp:job-tables; this file's template of mode m:job-value).
+  Uses:    ../common/jobs.xsl (fp:job-tables; this file's template of mode m:job-value),
+           key fp:rtm-instance (openrtm-deploy.xsl), $fp:rtm-version and $fp:jobs-xsl (main.xsl).
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
