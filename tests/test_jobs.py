@@ -119,7 +119,7 @@ def test_orocos_starts_the_initial_job_and_loads_the_coordinator_everywhere() ->
     assert "tc:addEventPort(events)" in script
 
 
-@pytest.mark.parametrize("target,code", [("ros1", "JOB050"), ("openrtm", "JOB041")])  # ROS 2: no warning (docs/jobs.md)
+@pytest.mark.parametrize("target,code", [("ros1", "JOB050")])  # ROS 2, OpenRTM: no warning (docs/jobs.md)
 def test_targets_without_a_coordinator_say_so(target: str, code: str) -> None:
     done = generate(TELEOP, None, target, write=False)
     found = [d for d in done.warnings if d.code.startswith("JOB")]

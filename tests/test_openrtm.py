@@ -570,7 +570,8 @@ def test_fixture_runs_on_openrtm(case: Path, tmp_path: Path) -> None:
             started.append(subprocess.Popen(["sh", str(script)], env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                             start_new_session=True, text=True))
         assert _wait_for(lambda: len(_activation_order(out)) >= len(order), 90), _logs(out)
-        assert _activation_order(out) == order
+        # (a job coordinator, activated after its manager's instances, is no component of the RtsProfile)
+        assert [n for n in _activation_order(out) if n in order] == order
         text = _logs(out)
         # (a manager that is no master says "Master manager not found": a warning, no error)
         assert "Connection error" not in text and " ERROR: " not in text, text

@@ -5,8 +5,11 @@
 #
 #   rtm_build_pkg PKGDIR      configure + build a generated OpenRTM package in PKGDIR/build
 #                             (the component modules <Class>.so land there)
+#   rtm_build_events DIR      build the test event source (events/EventSource.cpp: an OutPort
+#                             RTC::TimedString that writes each line of its manager's stdin) into DIR
 #   rtm_build_probe DIR [CMAKE_ARG...]  build the test probe (probe/Probe.cpp: an InPort that prints
-#                             the time stamp of what it reads; -DPROBE_TYPE=..., -DPROBE_HEADER=...,
+#                             the time stamp of what it reads, and a TimedLong's or TimedDouble's datum;
+#                             -DPROBE_TYPE=..., -DPROBE_HEADER=...,
 #                             -DPROBE_PACKAGE_BUILD=... for a generated package's type) into DIR
 #
 # Tunables (environment): RTM_JOBS (make -j, default 2), RTM_CMAKE_ARGS (extra cmake args).
@@ -50,4 +53,10 @@ rtm_build_probe() {
   out=$(readlink -f "${1:?usage: rtm_build_probe DIR [CMAKE_ARG...]}") || return 2
   shift
   _rtm_cmake "$_RTM_HERE/probe" "$out" "$@" && [ -f "$out/Probe.so" ]
+}
+
+rtm_build_events() {  # rtm_build_events DIR: the test event source (events/EventSource.cpp) into DIR
+  local out
+  out=$(readlink -f "${1:?usage: rtm_build_events DIR}") || return 2
+  _rtm_cmake "$_RTM_HERE/events" "$out" && [ -f "$out/EventSource.so" ]
 }

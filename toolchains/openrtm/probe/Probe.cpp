@@ -1,7 +1,8 @@
 // An RT-Component for the openrtm_toolchain tests: one InPort<PROBE_TYPE> "in" (any
 // type of OpenRTM's data-port convention, with a time stamp "tm"; CMakeLists.txt sets
 // it, default RTC::TimedLong); every sample it reads is printed as
-// "probe: <sec> <nsec>" (with PROBE_PRINT_DATA: "probe: <sec> <nsec> <data>") on stdout,
+// "probe: <sec> <nsec>" (with PROBE_PRINT_DATA: "probe: <sec> <nsec> <data>"; with PROBE_PRINT_REAL,
+// RTC::TimedDouble: the datum with 17 significant digits) on stdout,
 // flushed, so a test can tell that data flows on a connection of a running system.
 // Loaded by rtcd2 (ProbeInit), connected by its rtc.conf's preconnect.
 #include PROBE_HEADER  // first: the port templates need its CORBA::Any operators declared
@@ -30,9 +31,12 @@ public:
   {
     while (m_inIn.isNew()) {
       m_inIn.read();
-#ifdef PROBE_PRINT_DATA
+#if defined(PROBE_PRINT_DATA)
       std::printf("probe: %lu %lu %ld\n", static_cast<unsigned long>(m_in.tm.sec), static_cast<unsigned long>(m_in.tm.nsec),
                   static_cast<long>(m_in.data));
+#elif defined(PROBE_PRINT_REAL)
+      std::printf("probe: %lu %lu %.17g\n", static_cast<unsigned long>(m_in.tm.sec), static_cast<unsigned long>(m_in.tm.nsec),
+                  static_cast<double>(m_in.data));
 #else
       std::printf("probe: %lu %lu\n", static_cast<unsigned long>(m_in.tm.sec), static_cast<unsigned long>(m_in.tm.nsec));
 #endif

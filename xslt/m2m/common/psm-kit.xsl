@@ -24,8 +24,6 @@
     fp:kept-connection($connection, $binding, $targets)  a connection with an end in the package
     fp:psm-host-resources($host)  real-time, cores, memory and buses of a host
     fp:check-class-names($components, $code)
-    fp:warn-jobs-not-switched($binding, $instances, $code, $target)  a target without a job
-                                 coordinator: one warning per subsystem with an instance there
     fp:is-array($typed)          multiplicity upper bound other than 1
     fp:type-label($typed)        'Type' or 'Type[*]', for messages
     fp:realization($bc)          the realizing class of a bound component
@@ -495,23 +493,5 @@
   <xsl:function name="fp:decimal" as="xs:string">
     <xsl:param name="number" as="xs:string"/>
     <xsl:sequence select="if (contains($number, '.') or contains(lower-case($number), 'e')) then $number else $number || '.0'"/>
-  </xsl:function>
-  <!-- a target that generates no job coordinator (docs/jobs.md): one
-       located warning per subsystem whose jobs have an instance in the
-       package; the package deploys every instance, all started -->
-  <xsl:function name="fp:warn-jobs-not-switched" as="empty-sequence()">
-    <xsl:param name="binding" as="element(pim:binding)"/>
-    <xsl:param name="instances" as="element(pim:instance)*"/>
-    <xsl:param name="code" as="xs:string"/>
-    <xsl:param name="target" as="xs:string"/>
-    <xsl:for-each select="$binding/pim:bound-subsystem">
-      <xsl:variable name="jobs" as="element(pim:bound-job)*" select="../pim:bound-job[@name = current()/pim:transition/(@from, @to)]"/>
-      <xsl:variable name="members" as="xs:string*" select="distinct-values($jobs/pim:member/@instance[. = $instances/@name])"/>
-      <xsl:if test="exists($members)">
-        <xsl:sequence select="f:warn($code, string(@xmi-id), 'subsystem ''' || @name || ''': ' || $target
-            || ' gets no job coordinator yet: the jobs ''' || string-join($jobs/@name, ''', ''') || ''' are not switched at run time;'
-            || ' every instance of them (''' || string-join($members, ''', ''') || ''') is deployed and started at once, with the initial job''s values')"/>
-      </xsl:if>
-    </xsl:for-each>
   </xsl:function>
 </xsl:stylesheet>

@@ -10,6 +10,7 @@
            configuration type).
   Uses:    xslt/m2m/openrtm/types.xsl (port types, r:data-types; RTM021, RTM022).
   Uses:    xslt/m2m/common/psm-kit.xsl (wrapper, hooks, attributes, defaults).
+  Uses:    xslt/m2m/openrtm/jobs.xsl (the job coordinators, R7).
   Params:  package-name (the CMake project; '' = lower snake case of the model name).
 
   Rules (docs/openrtm.md)
@@ -51,6 +52,10 @@
       (rtc.conf precreate / preconnect / preactivation); a connection whose
       ends are in two processes is made by the later one through the
       naming service.
+  R7  jobs (docs/jobs.md): per subsystem with a member here an RT-Component
+      <Subsystem>Coordinator (r:coordinator, jobs.xsl) in the manager of its
+      initial job's first member; an instance of a job other than the
+      initial one is created, not activated (r:instance idle="true").
   Deployment: instances with middleware OpenRTM (all instances when none is
   on OPENRTM, RTM006); connections with ends on both sides.
 
@@ -61,8 +66,8 @@
     RTM005  nothing to generate: the model has no component instance
     RTM021, RTM022  (types.xsl) a data type that cannot be declared; a bad default of its attribute
   Warnings (f:warn):
-    JOB041  a subsystem with jobs on OpenRTM: no job coordinator generated (common/psm-kit.xsl;
-            docs/jobs.md)
+    JOB041, JOB042  the job coordinators (jobs.xsl): a member of a subsystem's jobs on
+            another middleware; a value a job sets on no configuration parameter
     RTM001  a data port whose datum has no OpenRTM data type (an
             enumeration without a literal): no port
     RTM006  no instance is deployed on OpenRTM: all are generated anyway
@@ -106,6 +111,7 @@
   <xsl:include href="../../common/sequence.xsl"/>
   <xsl:include href="../common/psm-kit.xsl"/>
   <xsl:include href="types.xsl"/>
+  <xsl:include href="jobs.xsl"/>
 
   <xsl:param name="package-name" as="xs:string" select="''"/>
 
@@ -138,8 +144,6 @@
     <xsl:variable name="binding" as="element(pim:binding)" select="pim:binding"/>
     <xsl:variable name="package" as="xs:string" select="fp:package-name($package-name, .)"/>
     <xsl:variable name="instances" as="element(pim:instance)*" select="$binding/pim:instance[fp:on-target(., 'OpenRTM')]"/>
-    <!-- jobs (docs/jobs.md): no coordinator on this target yet -->
-    <xsl:sequence select="fp:warn-jobs-not-switched($binding, $instances, 'JOB041', 'OpenRTM')"/>
     <xsl:sequence select="fp:check-targets(., $instances, 'OpenRTM', 'OpenRTM', ('RTM005', 'RTM006', 'RTM007'))"/>
     <!-- the names of the package's instances, as a set; its components, by key -->
     <xsl:variable name="targets" as="map(xs:string, xs:boolean)"
@@ -181,6 +185,7 @@
         <xsl:sequence select="$binding/pim:connection[fp:kept-connection(., $binding, $targets)] ! fp:rtm-connection(., $targets, $files)"/>
         <xsl:sequence select="$binding/pim:call ! fp:rtm-service-connection(., $targets, $rtcs)"/>
         <xsl:sequence select="$ordered ! fp:rtm-instance(., $rtcs, $targets, $files)"/>
+        <xsl:sequence select="fp:rtm-coordinators($binding, $ordered, $rtcs, $files)"/>
       </xsl:variable>
       <xsl:call-template name="t:indented-content">
         <xsl:with-param name="children" select="$children"/>
@@ -225,6 +230,10 @@
               <xsl:attribute name="port-member" select="'m_' || @name || (if (@direction eq 'out') then 'Out' else 'In')"/>
               <xsl:attribute name="accessor" select="fp:accessor(.)"/>
               <xsl:attribute name="accessor-declared" select="fp:accessor-declared(.)"/>
+              <xsl:if test="@constant = ('true', '1')">
+                <!-- a configuration constant (seed 004, «Constant»): an input is read before configure() -->
+                <xsl:attribute name="constant" select="'true'"/>
+              </xsl:if>
               <xsl:sequence select="fp:psm-doc(key('fp:id', @port, root(.)))"/>
             </r:data-port>
           </xsl:otherwise>
@@ -440,6 +449,10 @@
                 process="{map:get($files, string($instance/@execution-environment))}"
                 rate="{if ($period gt 0) then fp:decimal(string(round(1 div $period * 1000000) div 1000000)) else '1000.0'}"
                 period="{$activity/@period}">
+      <xsl:if test="fp:rtm-job-idle($instance)">
+        <!-- in a job other than the initial one: created, activated by a switch (R7) -->
+        <xsl:attribute name="idle" select="'true'"/>
+      </xsl:if>
       <!-- the model's CPU bit mask as OpenRTM-aist 2.0's list of CPU numbers, counted from 1 as
            its PeriodicExecutionContext checks them (mask 3: "1,2"); it pins the thread to the
            first n CPUs of the machine for a list of n, so a mask that is not 0..n-1 is RTM023 -->

@@ -21,9 +21,11 @@
              deploy/<process>.rtc.conf per manager: modules, components, connections, activation
              deploy/<model>.rtsys.xml  the RtsProfile of the system
              deploy/start_<host>.sh    per host: its managers in the modelled order
+             src/<Subsystem>Coordinator.cpp  per subsystem with jobs: its job coordinator (openrtm-jobs.xsl)
   Params:  model-dir-from-output (xslt/m2t/common/text.xsl), package-version.
   Errors:  none (the PSM is complete and valid).
-  Modules: ../common/text.xsl, ../common/user-class.xsl, ../common/data-types.xsl, openrtm-cpp.xsl, openrtm-types.xsl, openrtm-profile.xsl, openrtm-deploy.xsl.
+  Modules: ../common/text.xsl, ../common/user-class.xsl, ../common/data-types.xsl, openrtm-cpp.xsl, openrtm-types.xsl, openrtm-profile.xsl, openrtm-deploy.xsl,
+           ../common/jobs.xsl, openrtm-jobs.xsl.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -41,6 +43,8 @@
   <xsl:include href="openrtm-types.xsl"/>
   <xsl:include href="openrtm-profile.xsl"/>
   <xsl:include href="openrtm-deploy.xsl"/>
+  <xsl:include href="../common/jobs.xsl"/>
+  <xsl:include href="openrtm-jobs.xsl"/>
 
   <xsl:param name="package-version" as="xs:string" select="''"/>
   <!-- the version of the system and its components' profiles: the package version, else 1.0.0 -->
@@ -51,6 +55,7 @@
   <xsl:variable name="fp:cpp-xsl" as="xs:string" select="'m2t/openrtm/openrtm-cpp.xsl'"/>
   <xsl:variable name="fp:profile-xsl" as="xs:string" select="'m2t/openrtm/openrtm-profile.xsl'"/>
   <xsl:variable name="fp:deploy-xsl" as="xs:string" select="'m2t/openrtm/openrtm-deploy.xsl'"/>
+  <xsl:variable name="fp:jobs-xsl" as="xs:string" select="'m2t/openrtm/openrtm-jobs.xsl'"/>
   <xsl:mode name="m:emit-files" on-no-match="fail"/>
   <xsl:variable name="fp:file-margin" as="xs:string" select="'&#10;  '"/>
 
@@ -91,6 +96,9 @@
       <xsl:if test="r:component/r:parameter[@kind]">
         <xsl:sequence select="$fp:file-margin, fp:file('include/' || $pkg || '/' || $pkg || '_conf.h', 'generated', $fp:types-xsl, fp:rtm-conf-header(.))"/>
       </xsl:if>
+      <xsl:for-each select="r:coordinator">
+        <xsl:sequence select="$fp:file-margin, fp:file(concat('src/', @class, '.cpp'), 'generated', $fp:jobs-xsl, fp:rtm-coordinator(.))"/>
+      </xsl:for-each>
       <xsl:for-each select="r:interface">
         <xsl:sequence select="$fp:file-margin, fp:file(concat('idl/', @name, '.idl'), 'generated', $fp:cpp-xsl, fp:rtm-idl(.))"/>
       </xsl:for-each>

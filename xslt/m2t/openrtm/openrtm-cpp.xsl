@@ -9,10 +9,12 @@
            onFinalize call the realizing class's configure / start / update /
            stop / cleanup, seed 000; onExecute logs, at INFO, each input
            port's first sample: "input port <instance>.<port>: first sample
-           received"), its configuration parameters (bindParameter, with the
-           conversion of <pkg>_conf.h for a structured one, and a listener
-           that logs a warning for a value that does not parse), the user
-           class of a component without
+           received"; with configuration-constant inputs, «Constant»,
+           configure runs on the first activation, once they arrived), its
+           configuration parameters (bindParameter, with the conversion of
+           <pkg>_conf.h for a structured one, and a listener that logs a
+           warning for a value that does not parse), the user class of a
+           component without
            one, its service ports (RTC::CorbaPort: a servant calling the
            component's operation, or a consumer its override calls), the IDL
            of each interface, and CMakeLists.txt (omniidl for the IDL, one
@@ -58,6 +60,7 @@
       '#include &lt;rtm/OutPort.h&gt;',
       if ($c/r:service-port) then ('#include &lt;rtm/CorbaPort.h&gt;', '#include &lt;rtm/CorbaConsumer.h&gt;') else (),
       '#include &lt;string&gt;',
+      if (exists(fp:rtm-constants($c))) then ('#include &lt;chrono&gt;', '#include &lt;thread&gt;') else (),
       $rc ! ('#include &quot;' || @header || '&quot;'),
       '',
       'namespace ' || $pkg || ' {',
@@ -86,6 +89,7 @@
       if ($c/@kind eq 'base' and $c/r:parameter) then ('  // configuration parameters (R3)', $c/r:parameter ! ('  ' || @type || ' m_' || @name || ';')) else (),
       if ($c/r:parameter) then ('  // logs a configuration value that does not parse (OpenRTM then sets the default)',
                                 '  void reportConfiguration(const char* name, const char* value);') else (),
+      if (exists(fp:rtm-constants($c))) then ('  // configure() has run (on the first activation, after the configuration constants)', '  bool m_configured = false;') else (),
       '};',
       '',
       '}  // namespace ' || $pkg,
@@ -323,7 +327,8 @@
       $c/r:parameter ! ('  bindParameter(&quot;' || @name || '&quot;, '
                         || (if ($rc) then $rc/@cpp-name || '::' || @name else 'm_' || @name) || ', ' || fp:cpp-string(@default)
                         || (if (@kind) then ', &amp;' || fp:rtm-conf-parser(.) else '') || ');'),
-      if ($rc) then fp:rtm-call($c, 'configure') else '  return RTC::RTC_OK;',
+      if (exists(fp:rtm-constants($c))) then ('  // configure() runs on the first activation, after the configuration constants (onActivated)', '  return RTC::RTC_OK;')
+      else if ($rc) then fp:rtm-call($c, 'configure') else '  return RTC::RTC_OK;',
       '}',
       if ($rc) then $c/r:hook[@name ne 'configure'] ! ('', fp:rtm-action(., $c)) else (),
       fp:rtm-service-definitions($c),
@@ -363,19 +368,7 @@
       replace(fp:rtm-action-signature($hook/@name), '^(RTC::ReturnCode_t )', '$1' || $c/@generated-class || '::'),
       '{',
       if ($hook/@name eq 'update') then (
-        $c/r:data-port[@direction eq 'in'] ! (
-          '  if (' || @port-member || '.isNew()) {',
-          '    ' || @port-member || '.read();',
-          '    if (!' || @port-member || 'Received) {',
-          '      ' || @port-member || 'Received = true;',
-          '      RTC_INFO((&quot;input port %s.' || @name || ': first sample received&quot;, RTC::RTObject_impl::getInstanceName()));',
-          '    }',
-          if (not(xs:boolean(@accessor-declared))) then ()
-          else if (@convert eq 'primitive') then '    ' || $rc || '::' || @accessor || '(' || fp:rtm-from-datum(.) || ');'
-          else ('    ' || @cpp || ' value;', '    fromIdl' || (if (@convert eq 'sequence') then 'Seq' else '') || '(' || @member || '.data, value);',
-                '    ' || $rc || '::' || @accessor || '(value);'),
-          if (xs:boolean(@accessor-declared)) then () else '    // ' || $rc-name || ' declares no ' || @accessor || '()',
-          '  }'),
+        $c/r:data-port[@direction eq 'in'] ! ('  if (' || @port-member || '.isNew()) {', fp:rtm-take(., $c), '  }'),
         if (empty($hook/@call)) then '  // ' || $rc-name || ' declares no update()' else '  ' || $rc || '::' || $hook/@call || '();',
         $c/r:data-port[@direction eq 'out'] ! (
           if (xs:boolean(@accessor-declared)) then (
@@ -386,8 +379,64 @@
             '  ' || @port-member || '.write();')
           else '  // ' || $rc-name || ' declares no ' || @accessor || '(): ' || @name || ' is not written'),
         '  return RTC::RTC_OK;')
+      else if ($hook/@name eq 'start') then (fp:rtm-constants-first($c), fp:rtm-call($c, 'start'))
       else fp:rtm-call($c, $hook/@name),
       '}')"/>
+  </xsl:function>
+
+  <!-- the lines that read an input port's sample and hand it to the realizing class -->
+  <xsl:function name="fp:rtm-take" as="xs:string+">
+    <xsl:param name="port" as="element(r:data-port)"/>
+    <xsl:param name="c" as="element(r:component)"/>
+    <xsl:variable name="rc" as="xs:string" select="$c/r:realizing-class/@cpp-name"/>
+    <xsl:for-each select="$port">
+      <xsl:sequence select="(
+          '    ' || @port-member || '.read();',
+          if ($c/r:realizing-class) then (
+            '    if (!' || @port-member || 'Received) {',
+            '      ' || @port-member || 'Received = true;',
+            '      RTC_INFO((&quot;input port %s.' || @name || ': first sample received&quot;, RTC::RTObject_impl::getInstanceName()));',
+            '    }') else (),
+          if (not(xs:boolean(@accessor-declared))) then ()
+          else if (@convert eq 'primitive') then '    ' || $rc || '::' || @accessor || '(' || fp:rtm-from-datum(.) || ');'
+          else ('    ' || @cpp || ' value;', '    fromIdl' || (if (@convert eq 'sequence') then 'Seq' else '') || '(' || @member || '.data, value);',
+                '    ' || $rc || '::' || @accessor || '(value);'),
+          if (xs:boolean(@accessor-declared)) then () else '    // ' || $c/r:realizing-class/@name || ' declares no ' || @accessor || '()')"/>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- a wrapper's configuration-constant inputs (seed 004, «Constant»): its configure() runs
+       on the first activation, once each constant has arrived (its writer, activated
+       before it, writes it), not in onInitialize, where no connection is made yet -->
+  <xsl:function name="fp:rtm-constants" as="element(r:data-port)*">
+    <xsl:param name="c" as="element(r:component)"/>
+    <xsl:sequence select="$c[r:realizing-class]/r:data-port[@direction eq 'in'][@constant eq 'true']"/>
+  </xsl:function>
+
+  <xsl:function name="fp:rtm-constants-first" as="xs:string*">
+    <xsl:param name="c" as="element(r:component)"/>
+    <xsl:variable name="ports" as="element(r:data-port)*" select="fp:rtm-constants($c)"/>
+    <xsl:variable name="configure" as="element(r:hook)" select="$c/r:hook[@name eq 'configure']"/>
+    <xsl:if test="exists($ports)">
+      <xsl:sequence select="(
+        '  if (!m_configured) {',
+        '    // the configuration constants first (seed 004), waited for up to 10 s, then configure()',
+        '    for (int i = 0; i &lt; 1000 &amp;&amp; !(' || string-join($ports ! (@port-member || '.isNew()'), ' &amp;&amp; ') || '); ++i) {',
+        '      std::this_thread::sleep_for(std::chrono::milliseconds(10));',
+        '    }',
+        $ports ! (
+          '    if (!' || @port-member || '.isNew()) {',
+          '      RTC_ERROR((&quot;' || @name || ': no configuration constant after 10 s: not configured&quot;));',
+          '      return RTC::RTC_ERROR;',
+          '    }',
+          fp:rtm-take(., $c)),
+        if (empty($configure/@call)) then '    // ' || $c/r:realizing-class/@name || ' declares no configure()'
+        else if (xs:boolean($configure/@returns-bool))
+        then ('    if (!' || $c/r:realizing-class/@cpp-name || '::' || $configure/@call || '()) {', '      return RTC::RTC_ERROR;', '    }')
+        else '    ' || $c/r:realizing-class/@cpp-name || '::' || $configure/@call || '();',
+        '    m_configured = true;',
+        '  }')"/>
+    </xsl:if>
   </xsl:function>
 
   <!-- the factory registration rtcd2 calls when it loads the module -->
@@ -459,6 +508,7 @@
         'target_link_libraries(' || @class || (if ($system/r:interface or $system/r:data-types[(r:enum | r:struct)[xs:boolean(@idl)]]) then ' ' || $pkg || '_idl' else '') || ' ${OPENRTM_LIBRARIES}'
           || string-join($system/r:library ! (' ' || @target)) || ')',
         'install(TARGETS ' || @class || ' LIBRARY DESTINATION lib/' || $pkg || ')'),
+      $system/r:coordinator ! fp:rtm-coordinator-cmake(.),
       'install(DIRECTORY conf deploy rtc DESTINATION share/' || $pkg || ')'))"/>
   </xsl:function>
 

@@ -18,10 +18,14 @@
                                    managers in start order, the other end
                                    found through the naming service,
                                    rtcname://*/), activation
-                                   in start order (preactivation)
+                                   in start order (preactivation); with
+                                   jobs its job coordinators after its
+                                   instances, and no instance of a job
+                                   other than the initial one activated
+                                   (fp:rtm-activated, openrtm-jobs.xsl)
            deploy/start_<host>.sh  starts the host's managers in order, each
                                    once the one before has activated its
-                                   components
+                                   components (those it activates)
   Params:  none (main.xsl's).
   Errors:  none.
 -->
@@ -109,14 +113,18 @@
       'logger.log_level: INFO',
       '',
       '# the component modules (lib/' || $s/@package || '/&lt;Class&gt;.so; the start script sets the folder)',
-      'manager.preload.modules: ' || string-join(distinct-values($members/@component) ! (. || '.so'), ', '),
+      'manager.preload.modules: ' || string-join(distinct-values(($members/@component, fp:rtm-coordinators-in($p)/@class)) ! (. || '.so'), ', '),
       '# the instances, in start order, each with its configuration',
-      'manager.components.precreate: ' || string-join($members ! (@component || '?instance_name=' || @name), ', '),
+      'manager.components.precreate: ' || string-join(($members ! (@component || '?instance_name=' || @name),
+                                                       fp:rtm-coordinators-in($p) ! (@class || '?instance_name=' || @name)), ', '),
       $members ! (@category || '.' || @name || '.config_file: ../conf/' || @name || '.conf'),
+      fp:rtm-coordinators-in($p) ! ('# the job coordinator of subsystem ' || @name || ': it polls its events at 20 Hz',
+                                    ../@package || '.' || @name || '.exec_cxt.periodic.rate: 20'),
       '# the connections and operation calls whose later end (in start order) is here',
       'manager.components.preconnect: ' || string-join(($connects, $calls), ', '),
-      '# activation in start order',
-      'manager.components.preactivation: ' || string-join($members/@name, ', ')))"/>
+      '# activation in start order' || (if ($members/@idle = 'true') then
+        ('; not the instances of a job other than the initial one: the job coordinator activates them') else ''),
+      'manager.components.preactivation: ' || string-join(fp:rtm-activated($p), ', ')))"/>
   </xsl:function>
 
   <xsl:function name="fp:rtm-start-script" as="xs:string">
@@ -153,7 +161,7 @@
         'rm -f ' || @file || '.log',
         'rtcd2 -f ' || @file || '.rtc.conf &quot;$@&quot; &amp;',
         'echo &quot;started manager ' || @file || ' (pid $!)&quot;',
-        'wait_active ' || @file || '.log ' || @members),
+        'wait_active ' || @file || '.log ' || string-join(fp:rtm-activated(.), ' ')),
       'wait'))"/>
   </xsl:function>
 </xsl:stylesheet>

@@ -11,7 +11,8 @@
            data ports, configuration set and execution context,
            DataPortConnectors with the buffer settings as rtsExt
            Properties, ServicePortConnectors, StartUp and Activation with a Preceding condition
-           per modelled StartAfter). Checked against
+           per modelled StartAfter; Activation without the instances a job
+           coordinator activates later). Checked against
            tests/schemas/openrtm/*.xsd by tests/test_openrtm.py.
   Params:  none (main.xsl's).
   Errors:  none.
@@ -167,7 +168,8 @@
         fp:att('rts:instanceName', $end/@instance), fp:att('rts:componentId', $component-id(string($end/@instance)))), ' ') || '/&gt;'"/>
   </xsl:function>
 
-  <!-- StartUp / Activation: a target per instance in start order; its StartAfter instances precede it.
+  <!-- StartUp / Activation: a target per instance in start order (Activation: not one of a job other
+       than the initial one, which the job coordinator activates); its StartAfter instances precede it.
        TargetComponent and PrecedingComponents name an execution context of the instance (rts:id, the
        id of its ExecutionContexts: "0"), as rtsprofile's TargetExecutionContext reads them -->
   <xsl:function name="fp:rts-sequence" as="xs:string+">
@@ -176,7 +178,7 @@
     <xsl:param name="component-id" as="map(xs:string, xs:string)"/>
     <xsl:sequence select="(
       '  &lt;rts:' || $element || '&gt;',
-      $s/r:instance ! (
+      $s/r:instance[not($element eq 'Activation' and @idle = 'true')] ! (
         '    &lt;rts:targets ' || fp:att('rts:sequence', string(position() - 1)) || '&gt;',
         '      &lt;rts:TargetComponent ' || fp:att('rts:componentId', $component-id(string(@name))) || ' ' || fp:att('rts:instanceName', @name)
           || ' ' || fp:att('rts:id', '0') || '/&gt;',

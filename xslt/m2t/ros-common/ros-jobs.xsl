@@ -9,7 +9,8 @@
   Params:  none.  Errors: none.
 
     fp:ros-job-tables($coordinator, $version)  the C++ tables of a
-        coordinator: kInitialJob, kJobs (each job's members in start order)
+        coordinator (m2t/common/jobs.xsl, with the template of mode
+        m:job-value here): kInitialJob, kJobs (each job's members in start order)
         and kSwitches (per transition: from, event, to, the instances to
         stop, in reverse start order, to reconfigure and to start, with
         their values, and to keep), in an anonymous namespace; a value is
@@ -30,6 +31,7 @@
     xmlns:xs="http://www.w3.org/2001/XMLSchema"
     xmlns:r="urn:robomda:psm-ros:1"
     xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:m="urn:robomda:xslt:mode"
     exclude-result-prefixes="#all">
 
   <xsl:key name="fp:ros-instance-by-name" match="r:package/r:instance" use="@name"/>
@@ -68,59 +70,15 @@
   <xsl:function name="fp:ros-job-tables" as="xs:string+">
     <xsl:param name="coordinator" as="element(r:coordinator)"/>
     <xsl:param name="version" as="xs:string"/>
-    <xsl:variable name="value-type" as="xs:string"
-        select="if ($version eq '2') then 'rclcpp::Parameter' else 'std::pair&lt;std::string, std::function&lt;void(const std::string&amp;)&gt;&gt;'"/>
-    <xsl:sequence select="
-        'namespace',
-        '{',
-        '// an instance a switch reconfigures or starts, with the values it sets first',
-        'struct Member',
-        '{',
-        '  std::string instance;',
-        concat('  std::vector&lt;', $value-type, '&gt; values;'),
-        '};',
-        '',
-        '// a transition of the subsystem: on event, from job from to job to',
-        'struct Switch',
-        '{',
-        '  std::string from;',
-        '  std::string event;',
-        '  std::string to;',
-        '  std::vector&lt;std::string&gt; stop;  // in reverse start order',
-        '  std::vector&lt;Member&gt; reconfigure;',
-        '  std::vector&lt;Member&gt; start;  // in start order',
-        '  std::vector&lt;std::string&gt; keep;  // never stopped',
-        '};',
-        '',
-        concat('const char* const kInitialJob = ', fp:cpp-string($coordinator/@initial-job), ';'),
-        '',
-        '// the members of each job, in start order',
-        'const std::map&lt;std::string, std::vector&lt;std::string&gt;&gt; kJobs = {',
-        $coordinator/r:job ! concat('  {', fp:cpp-string(@name), ', {', string-join(r:member ! fp:cpp-string(@instance), ', '), '}},'),
-        '};',
-        '',
-        'const std::vector&lt;Switch&gt; kSwitches = {',
-        for $t in $coordinator/r:transition return (
-          concat('  {', fp:cpp-string($t/@from), ', ', fp:cpp-string($t/@event), ', ', fp:cpp-string($t/@to), ','),
-          concat('   {', string-join($t/r:stop ! fp:cpp-string(@instance), ', '), '},'),
-          concat('   {', string-join($t/r:reconfigure ! fp:ros-job-member(., $version), ', '), '},'),
-          concat('   {', string-join($t/r:start ! fp:ros-job-member(., $version), ', '), '},'),
-          concat('   {', string-join($t/r:keep ! fp:ros-job-member-name(.), ', '), '}},')),
-        '};',
-        '}  // namespace'"/>
+    <xsl:sequence select="fp:job-tables($coordinator, if ($version eq '2') then 'rclcpp::Parameter'
+        else 'std::pair&lt;std::string, std::function&lt;void(const std::string&amp;)&gt;&gt;', $version)"/>
   </xsl:function>
 
-  <xsl:function name="fp:ros-job-member" as="xs:string">
-    <xsl:param name="switched" as="element()"/>
+  <!-- a value of the tables (m2t/common/jobs.xsl) -->
+  <xsl:template match="r:value" mode="m:job-value" as="xs:string">
     <xsl:param name="version" as="xs:string"/>
-    <xsl:sequence select="'{' || fp:cpp-string($switched/@instance) || ', {'
-                          || string-join($switched/r:value ! fp:ros-job-value(., $version), ', ') || '}}'"/>
-  </xsl:function>
-
-  <xsl:function name="fp:ros-job-member-name" as="xs:string">
-    <xsl:param name="switched" as="element()"/>
-    <xsl:sequence select="fp:cpp-string($switched/@instance)"/>
-  </xsl:function>
+    <xsl:sequence select="fp:ros-job-value(., $version)"/>
+  </xsl:template>
 
   <!-- the main loop of a coordinator (after the initial job runs): $spin
        runs the callbacks, which queue the events; switch(...) and

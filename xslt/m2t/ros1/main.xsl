@@ -21,7 +21,7 @@
   Errors:  none (the PSM is complete and valid).
   Modules: ../ros-common/ros-text.xsl, ../common/user-class.xsl,
            ../ros-common/ros-user.xsl, ros1-cpp.xsl, ros1-build.xsl, ros1-launch.xsl,
-           ../ros-common/ros-jobs.xsl, ros1-jobs.xsl.
+           ../common/jobs.xsl, ../ros-common/ros-jobs.xsl, ros1-jobs.xsl.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -45,6 +45,7 @@
   <xsl:include href="ros1-cpp.xsl"/>
   <xsl:include href="ros1-build.xsl"/>
   <xsl:include href="ros1-launch.xsl"/>
+  <xsl:include href="../common/jobs.xsl"/>
   <xsl:include href="../ros-common/ros-jobs.xsl"/>
   <xsl:include href="ros1-jobs.xsl"/>
 

@@ -24,7 +24,7 @@
   Errors:  none (the PSM is complete and valid).
   Modules: ../../common/sequence.xsl, ../ros-common/ros-text.xsl, ../common/user-class.xsl,
            ../ros-common/ros-user.xsl, ros2-cpp.xsl, ros2-build.xsl, ros2-launch.xsl, ros2-lifecycle.xsl,
-           ../ros-common/ros-jobs.xsl, ros2-jobs.xsl.
+           ../common/jobs.xsl, ../ros-common/ros-jobs.xsl, ros2-jobs.xsl.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -50,6 +50,7 @@
   <xsl:include href="ros2-build.xsl"/>
   <xsl:include href="ros2-launch.xsl"/>
   <xsl:include href="ros2-lifecycle.xsl"/>
+  <xsl:include href="../common/jobs.xsl"/>
   <xsl:include href="../ros-common/ros-jobs.xsl"/>
   <xsl:include href="ros2-jobs.xsl"/>
 
