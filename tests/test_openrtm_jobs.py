@@ -90,6 +90,11 @@ def test_a_configuration_constant_is_read_before_configure() -> None:
     initialize = source.split("InverseKinematics::onInitialize()", 1)[1].split("\n}\n", 1)[0]
     assert "configure()" not in initialize.replace("// configure() runs", "")
     activated = source.split("InverseKinematics::onActivated(RTC::UniqueId ec_id)", 1)[1].split("\n}\n", 1)[0]
+    # (the port's first sample is logged, docs/openrtm.md, as on every input)
+    logged = ('    if (!m_linkLengthInReceived) {\n      m_linkLengthInReceived = true;\n      RTC_INFO(("input port '
+              '%s.linkLength: first sample received", RTC::RTObject_impl::getInstanceName()));\n    }\n')
+    assert activated.count(logged) == 1
+    activated = activated.replace(logged, "")
     assert ("  if (!m_configured) {\n" in activated and "!(m_linkLengthIn.isNew())" in activated
             and "    m_linkLengthIn.read();\n    ::GeneralizedInverseKinematics::setLinkLength(static_cast<double>(m_linkLength.data));\n"
             "    if (!::GeneralizedInverseKinematics::configure()) {\n      return RTC::RTC_ERROR;\n    }\n"
