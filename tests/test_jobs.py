@@ -213,16 +213,21 @@ def _bash(script: str, cwd: Path, timeout: int = 1500) -> subprocess.CompletedPr
                           capture_output=True, text=True, timeout=timeout)
 
 
-@pytest.fixture(scope="module")
-def teleop_package(tmp_path_factory) -> Path:
+def switch_package(model: Path, out: Path) -> Path:
+    """MODEL's Orocos package generated into OUT and built, with the switching script beside it
+    (tests/test_jobs_variability.py runs the product line's variants the same way)."""
     if not (INSTALL / "bin" / "deployer").exists():
         pytest.skip(f"no Orocos toolchain in {INSTALL}: build it with toolchains/orocos/build.sh")
-    out = tmp_path_factory.mktemp("jobs") / "teleop"
-    generate(TELEOP, out, "orocos")
+    generate(model, out, "orocos")
     built = _bash(f"nice -n 19 bash -c 'source {ENV_SH} >/dev/null && oro_build_pkg {out}'", out.parent)
     assert built.returncode == 0, built.stdout[-3000:] + built.stderr[-3000:]
     (out / "switch.lua").write_text(SWITCH_LUA, encoding="utf-8")
     return out
+
+
+@pytest.fixture(scope="module")
+def teleop_package(tmp_path_factory) -> Path:
+    return switch_package(TELEOP, tmp_path_factory.mktemp("jobs") / "teleop")
 
 
 @pytest.mark.orocos_toolchain

@@ -300,16 +300,9 @@ def test_the_cli_refuses_a_broken_configuration_and_writes_nothing(tmp_path: Pat
 # ---------------------------------------------------------------- the real Orocos toolchain
 @pytest.fixture(scope="module")
 def line_package(tmp_path_factory) -> Path:
-    from test_jobs import ENV_SH, INSTALL, SWITCH_LUA, _bash  # the teleop case's run: the same switches
+    from test_jobs import switch_package  # the teleop case's run: the same switches
 
-    if not (INSTALL / "bin" / "deployer").exists():
-        pytest.skip(f"no Orocos toolchain in {INSTALL}: build it with toolchains/orocos/build.sh")
-    out = tmp_path_factory.mktemp("jobs-line") / "teleop"
-    generate(MODEL, out, "orocos")
-    built = _bash(f"nice -n 19 bash -c 'source {ENV_SH} >/dev/null && oro_build_pkg {out}'", out.parent)
-    assert built.returncode == 0, built.stdout[-3000:] + built.stderr[-3000:]
-    (out / "switch.lua").write_text(SWITCH_LUA, encoding="utf-8")
-    return out
+    return switch_package(MODEL, tmp_path_factory.mktemp("jobs-line") / "teleop")
 
 
 @pytest.mark.orocos_toolchain
