@@ -424,6 +424,18 @@ def _stop(process: subprocess.Popen[str]) -> None:
             process.wait()
 
 
+def _naming_service(tmp_path: Path, out: Path) -> tuple[subprocess.Popen[str], int, dict[str, str]]:
+    """An omniNames on a free loopback port (its log in TMP_PATH), its port, and the environment in
+    which the start scripts of package OUT (built) and rtcd2 run against it."""
+    ns_port = _free_port()
+    names = subprocess.Popen(["omniNames", "-start", str(ns_port), "-logdir", str(tmp_path)], stdout=subprocess.DEVNULL,
+                             stderr=subprocess.DEVNULL, start_new_session=True, text=True)
+    env = dict(os.environ, RTM_NAMESERVER=f"localhost:{ns_port}", RTM_MODULES=str(out / "build"),
+               LD_LIBRARY_PATH=f"{OPENRTM / 'lib'}:{os.environ.get('LD_LIBRARY_PATH', '')}",
+               PATH=f"{OPENRTM / 'bin'}:{os.environ['PATH']}")
+    return names, ns_port, env
+
+
 def _single_middleware(case: Path) -> bool:
     """Whether the fixture deploys every instance, and at least one, on one middleware."""
     bound = etree.parse(str(case / "expected" / "bind.xml"))
@@ -556,12 +568,7 @@ def test_fixture_runs_on_openrtm(case: Path, tmp_path: Path) -> None:
     port, data_type, prints_data = _probe_port(out, case.name)
     built = _bash(f"rtm_build_probe {tmp_path / 'probe'} {_probe_args(out, data_type)}", tmp_path)
     assert built.returncode == 0, built.stdout[-3000:] + built.stderr[-3000:]
-    ns_port = _free_port()
-    names = subprocess.Popen(["omniNames", "-start", str(ns_port), "-logdir", str(tmp_path)], stdout=subprocess.DEVNULL,
-                             stderr=subprocess.DEVNULL, start_new_session=True, text=True)
-    env = dict(os.environ, RTM_NAMESERVER=f"localhost:{ns_port}", RTM_MODULES=str(out / "build"),
-               LD_LIBRARY_PATH=f"{OPENRTM / 'lib'}:{os.environ.get('LD_LIBRARY_PATH', '')}",
-               PATH=f"{OPENRTM / 'bin'}:{os.environ['PATH']}")
+    names, ns_port, env = _naming_service(tmp_path, out)
     started: list[subprocess.Popen[str]] = []
     probe = None
     try:

@@ -7,7 +7,6 @@ jobs through the coordinator's event port while probes watch the shared robot in
 
 from __future__ import annotations
 
-import os
 import re
 import subprocess
 import threading
@@ -18,7 +17,7 @@ import pytest
 from lxml import etree
 
 from robomda.api import generate
-from test_openrtm import OPENRTM, _bash, _free_port, _stop, _wait_for
+from test_openrtm import OPENRTM, _bash, _naming_service, _stop, _wait_for
 
 ROOT = Path(__file__).resolve().parents[1]
 TELEOP = ROOT / "fixtures" / "cases" / "teleop" / "model.xmi"
@@ -200,12 +199,7 @@ def test_teleop_switches_jobs_on_openrtm_and_never_stops_the_robot(tmp_path: Pat
     out = tmp_path / "teleop"
     generate(TELEOP, out, "openrtm", write=True)
     _build(out, tmp_path)
-    ns_port = _free_port()
-    names = subprocess.Popen(["omniNames", "-start", str(ns_port), "-logdir", str(tmp_path)], stdout=subprocess.DEVNULL,
-                             stderr=subprocess.DEVNULL, start_new_session=True, text=True)
-    env = dict(os.environ, RTM_NAMESERVER=f"localhost:{ns_port}", RTM_MODULES=str(out / "build"),
-               LD_LIBRARY_PATH=f"{OPENRTM / 'lib'}:{os.environ.get('LD_LIBRARY_PATH', '')}",
-               PATH=f"{OPENRTM / 'bin'}:{os.environ['PATH']}")
+    names, ns_port, env = _naming_service(tmp_path, out)
     log = out / "deploy" / "teleop.log"
 
     def text() -> str:
