@@ -61,9 +61,19 @@ def _check_readable(model: Path) -> None:
                            EXIT_INPUT)
 
 
+class _NoTree:
+    """A parser target that builds nothing: the parse only checks that the XML is well-formed."""
+
+    def close(self) -> None:
+        return None
+
+
 def _check_well_formed(model: Path) -> None:
     """Fail with a located diagnostic when ``model`` is not well-formed XML."""
-    parser = etree.XMLParser(huge_tree=True, resolve_entities=False, no_network=True)
+    # parsed to a target that keeps nothing: a tree of the whole model, freed at once, still left the
+    # process about 550 MiB larger at 10,000 components (glibc does not hand the freed nodes back), which
+    # the whole run carried as peak memory (issue 35); the events alone are also 3.6 times faster
+    parser = etree.XMLParser(huge_tree=True, resolve_entities=False, no_network=True, target=_NoTree())
     try:
         etree.parse(str(model), parser)
     except etree.XMLSyntaxError as exc:

@@ -185,6 +185,12 @@
                 priority="3" as="empty-sequence()"/>
   <xsl:template match="comment() | processing-instruction()" mode="mp:normalise"
                 as="empty-sequence()"/>
+  <!-- the line breaks and indentation between elements: no rule reads
+       them, and they were as many nodes as the elements, in the copy every
+       rule reads (issue 35: the import's memory and time). A text that is
+       all the content of its element (a comment's body) stays. -->
+  <xsl:template match="text()[not(normalize-space())][../*]" mode="mp:normalise"
+                as="empty-sequence()"/>
 
   <!-- the attributes of the context element: those in no namespace (most
        of them) copied in one go, XMI ones into x: (xmi:id and xmi:type,
