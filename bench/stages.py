@@ -10,15 +10,19 @@ A quick profile for stylesheet work: for each shape of bench/synth.py, each
 stage's time at each size, then the ratio of each stage's time between
 consecutive sizes beside the ratio of the sizes. A stage whose ratio is
 well above the sizes' (issue 35: t(4,000) / t(2,000) <= 2.2) has a
-super-linear step on that shape. Stylesheets are compiled before timing; one
-engine serves every shape and size, so the ratios are taken in one process.
-The times are this process's CPU seconds (SaxonC runs in it), which other
-work on a shared machine does not stretch as it stretches wall time
-(--wall: wall time); --repeat runs each stage that many times and keeps
-the least time (other work on a shared machine only ever adds). Beside
-each ratio, that of the identity transform of the stage's input in the
-same run: what the engine's own growth (its garbage collector on a larger
-heap) adds whatever the stylesheet does. --target times another target's
+super-linear step on that shape. Each size is measured in a fresh process
+(its stylesheets compiled before timing), as bench/run.py measures the
+whole chain: in one process serving both sizes, the larger one ran on the
+heap the smaller one had left, and the same stage grew more (the Orocos
+text stage on the nested shape from 2,000 to 4,000: 2.49 in one process,
+1.93 in fresh ones, the stylesheet and inputs the same). The times are the
+measuring process's CPU seconds (SaxonC runs in it), which other work on a
+shared machine does not stretch as it stretches wall time (--wall: wall
+time); --repeat runs each stage that many times and keeps the least time
+(other work on a shared machine only ever adds). Beside each ratio, that
+of the identity transform of the stage's input in the same processes: what
+the engine's own growth (its garbage collector on a larger heap) adds
+whatever the stylesheet does. --target times another target's
 chain (ros1, ros2, openrtm), on models deployed on its middleware.
 """
 
@@ -26,6 +30,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import subprocess
 import sys
 import tempfile
 import time
@@ -76,28 +81,38 @@ def _fastest(runs: list[list[tuple[str, float, int, float]]]) -> list[tuple[str,
             for j, (name, _, size, _) in enumerate(runs[0])]
 
 
-def measure(shape: str, sizes: list[int], target: str = "orocos", wall: bool = False,
-            log: Callable[[str], None] = print, repeat: int = 1) -> dict[str, object]:
-    """Each stage's seconds at each size of ``shape`` (with the identity transform of its input), one engine and
-    chain for every size, the least of ``repeat`` runs; ``log`` gets a line per size. The result: sizes, stage
-    names, seconds per size (``seconds[i][j]``: size i, stage j) and the identity's likewise."""
+def _one_size(shape: str, size: int, target: str, wall: bool, repeat: int) -> list[tuple[str, float, int, float]]:
+    """Each stage's seconds at one size of ``shape`` (with the identity of its input), in this process: its
+    own engine and heap, the stylesheets compiled before timing, the least of ``repeat`` runs."""
     clock = time.perf_counter if wall else time.process_time
-    unit = "" if wall else " CPU"
     engine = Engine()
     chain = pipeline.for_context(pipeline.load(pipeline_path(target)), {}, model_may_ask=False)  # no product line
     for step in chain.steps:
         engine.compile(step.stylesheet)
-    rows = []
     with tempfile.TemporaryDirectory() as tmp:
         identity = Path(tmp) / "identity.xsl"
         identity.write_text(_IDENTITY)
         engine.compile(identity)
-        for size in sizes:
-            model = write_model(size, Path(tmp) / f"{shape}-{size}.xmi", shape, MIDDLEWARE[target])
-            rows.append(_fastest([_time_stages(engine, chain, model, clock, identity)
-                                  for _ in range(max(1, repeat))]))
-            log(f"{shape:>10} {size:>6}: " + ", ".join(f"{name} {t:.2f}s{unit} ({n // 1024} KiB)"
-                                                     for name, t, n, _ in rows[-1]))
+        model = write_model(size, Path(tmp) / f"{shape}-{size}.xmi", shape, MIDDLEWARE[target])
+        return _fastest([_time_stages(engine, chain, model, clock, identity) for _ in range(max(1, repeat))])
+
+
+def measure(shape: str, sizes: list[int], target: str = "orocos", wall: bool = False,
+            log: Callable[[str], None] = print, repeat: int = 1) -> dict[str, object]:
+    """Each stage's seconds at each size of ``shape`` (with the identity transform of its input), each size in a
+    fresh process (:func:`_one_size`), the least of ``repeat`` runs; ``log`` gets a line per size. The result: sizes, stage
+    names, seconds per size (``seconds[i][j]``: size i, stage j) and the identity's likewise."""
+    unit = "" if wall else " CPU"
+    rows = []
+    for size in sizes:
+        command = [sys.executable, __file__, str(size), "--one-size", "--shapes", shape, "--target", target,
+                   "--repeat", str(repeat)] + (["--wall"] if wall else [])
+        proc = subprocess.run(command, capture_output=True, text=True)
+        if proc.returncode != 0:
+            raise RuntimeError(f"bench/stages.py on {shape} at {size} failed:\n{proc.stderr}")
+        rows.append([tuple(stage) for stage in json.loads(proc.stdout.strip().splitlines()[-1])])
+        log(f"{shape:>10} {size:>6}: " + ", ".join(f"{name} {t:.2f}s{unit} ({n // 1024} KiB)"
+                                                 for name, t, n, _ in rows[-1]))
     return {"shape": shape, "sizes": sizes, "stages": [name for name, _, _, _ in rows[0]] if rows else [],
             "seconds": [[t for _, t, _, _ in row] for row in rows],
             "identity": [[f for _, _, _, f in row] for row in rows]}
@@ -130,7 +145,11 @@ def main(argv: list[str] | None = None) -> int:
                         help="runs of each stage at each size: the least time of them is reported (the identity's "
                              "likewise); 2 or 3 on a busy machine")
     parser.add_argument("--json", action="store_true", help="a last line with the measures as JSON (bench/run.py)")
+    parser.add_argument("--one-size", action="store_true", help=argparse.SUPPRESS)  # a child of measure()
     args = parser.parse_args(argv)
+    if args.one_size:
+        print(json.dumps(_one_size(args.shapes[0], args.sizes[0], args.target, args.wall, args.repeat)))
+        return 0
     worst = 0.0
     found = []
     for shape in args.shapes:
