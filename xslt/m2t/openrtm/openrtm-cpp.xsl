@@ -29,6 +29,11 @@
     xmlns:fp="urn:robomda:xslt:function:private"
     exclude-result-prefixes="#all">
 
+  <!-- the system's data types (one r:data-types), looked up by every
+       component and data port: from a component, ../r:data-types scanned
+       every component and instance of the system (issue 35) -->
+  <xsl:key name="fp:rtm-data-types" match="r:system/r:data-types" use="'data-types'"/>
+
   <!-- the actions, each with the lifecycle operation it calls -->
   <xsl:variable name="fp:rtm-actions" as="map(xs:string, xs:string)"
       select="map { 'configure': 'onInitialize', 'start': 'onActivated', 'update': 'onExecute',
@@ -51,7 +56,7 @@
       '',
       '// the IDL types first: OpenRTM''s port templates find their CORBA::Any operators only if declared before',
       '#include &lt;rtm/idl/BasicDataTypeSkel.h&gt;',
-      if ($c/r:data-port[@convert ne 'primitive']) then '#include &lt;' || $pkg || '/' || $c/../r:data-types/@idl || '.h&gt;' else (),
+      if ($c/r:data-port[@convert ne 'primitive']) then '#include &lt;' || $pkg || '/' || key('fp:rtm-data-types', 'data-types', root($c))/@idl || '.h&gt;' else (),
       if ($c/r:parameter[@kind]) then '#include &lt;' || $pkg || '/' || $pkg || '_conf.h&gt;' else (),
       distinct-values($c/r:service-port/@interface) ! ('#include &quot;' || . || '.hh&quot;'),
       '#include &lt;rtm/DataFlowComponentBase.h&gt;',
@@ -481,6 +486,11 @@
     <xsl:param name="system" as="element(r:system)"/>
     <xsl:param name="version" as="xs:string"/>
     <xsl:variable name="pkg" as="xs:string" select="$system/@package"/>
+    <!-- what every component's module links, said once: tested per
+         component, it scanned the system's children per component -->
+    <xsl:variable name="links" as="xs:string"
+        select="(if ($system/r:interface or $system/r:data-types[(r:enum | r:struct)[xs:boolean(@idl)]]) then ' ' || $pkg || '_idl' else '')
+                || ' ${OPENRTM_LIBRARIES}' || string-join($system/r:library ! (' ' || @target))"/>
     <xsl:sequence select="fp:lines((
       fp:banner('# ', $fp:cpp-xsl, 'model ''' || $system/@model-name || '''', false()),
       'cmake_minimum_required(VERSION 3.5)',
@@ -505,8 +515,7 @@
         'add_library(' || @class || ' MODULE src/' || @generated-class || '.cpp'
           || (if (@kind eq 'base') then ' src/' || @class || '.cpp' else '') || ')',
         'set_target_properties(' || @class || ' PROPERTIES PREFIX &quot;&quot;)',
-        'target_link_libraries(' || @class || (if ($system/r:interface or $system/r:data-types[(r:enum | r:struct)[xs:boolean(@idl)]]) then ' ' || $pkg || '_idl' else '') || ' ${OPENRTM_LIBRARIES}'
-          || string-join($system/r:library ! (' ' || @target)) || ')',
+        'target_link_libraries(' || @class || $links || ')',
         'install(TARGETS ' || @class || ' LIBRARY DESTINATION lib/' || $pkg || ')'),
       $system/r:coordinator ! fp:rtm-coordinator-cmake(.),
       'install(DIRECTORY conf deploy rtc DESTINATION share/' || $pkg || ')'))"/>

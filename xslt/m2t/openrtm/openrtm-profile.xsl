@@ -26,6 +26,10 @@
     xmlns:fp="urn:robomda:xslt:function:private"
     exclude-result-prefixes="#all">
 
+  <!-- the instances of a component (its RTC.xml's rate is the first one's):
+       a look-up, not a scan of the system's instances per component -->
+  <xsl:key name="fp:rtm-instance-of" match="r:system/r:instance" use="@component"/>
+
   <xsl:variable name="fp:rtm-date" as="xs:string" select="'2000-01-01T00:00:00'"/>
   <!-- RTC.xml's Actions, in RTCBuilder's order, and the lifecycle hook each calls -->
   <xsl:variable name="fp:rtc-actions" as="xs:string+" select="('OnInitialize', 'OnFinalize', 'OnStartup', 'OnShutdown',
@@ -49,7 +53,9 @@
   <xsl:function name="fp:rtc-profile" as="xs:string">
     <xsl:param name="c" as="element(r:component)"/>
     <xsl:param name="version" as="xs:string"/>
-    <xsl:variable name="rate" as="xs:string" select="($c/../r:instance[@component eq $c/@class]/@rate, '1000.0')[1]"/>
+    <xsl:variable name="rate" as="xs:string" select="(key('fp:rtm-instance-of', string($c/@class), root($c))/@rate, '1000.0')[1]"/>
+    <!-- the IDL file of the system's data types (openrtm-cpp.xsl's key) -->
+    <xsl:variable name="idl" as="xs:string?" select="key('fp:rtm-data-types', 'data-types', root($c))/@idl"/>
     <xsl:variable name="wrapper" as="xs:boolean" select="$c/@kind eq 'wrapper'"/>
     <xsl:sequence select="fp:lines((
       '&lt;?xml version=&quot;1.0&quot; encoding=&quot;UTF-8&quot;?&gt;',
@@ -73,7 +79,7 @@
       $c/r:data-port ! ('  &lt;rtc:DataPorts ' || string-join((
           fp:att('rtc:portType', if (@direction eq 'out') then 'DataOutPort' else 'DataInPort'), fp:att('rtc:name', @name),
           fp:att('rtc:type', @timed),
-          fp:att('rtc:idlFile', if (starts-with(@timed, 'RTC::')) then 'BasicDataType.idl' else ../../r:data-types/@idl || '.idl'), fp:att('rtc:interfaceType', 'corba_cdr'),
+          fp:att('rtc:idlFile', if (starts-with(@timed, 'RTC::')) then 'BasicDataType.idl' else $idl || '.idl'), fp:att('rtc:interfaceType', 'corba_cdr'),
           fp:att('rtc:dataflowType', 'push,pull'), fp:att('rtc:subscriptionType', 'flush,new,periodic')), ' ') || '/&gt;'),
       $c/r:service-port ! (
         '  &lt;rtc:ServicePorts ' || fp:att('rtc:name', @name) || '&gt;',
