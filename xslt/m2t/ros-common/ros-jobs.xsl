@@ -35,6 +35,11 @@
     exclude-result-prefixes="#all">
 
   <xsl:key name="fp:ros-instance-by-name" match="r:package/r:instance" use="@name"/>
+  <!-- the package's coordinators and a node's instances, looked up per
+       node: through the node's parent they were a scan of every node and
+       instance of the package per node (issue 35) -->
+  <xsl:key name="fp:ros-coordinator" match="r:package/r:coordinator" use="'coordinator'"/>
+  <xsl:key name="fp:ros-instance-of-node" match="r:package/r:instance" use="@node"/>
 
   <!-- true when a job coordinator sets values on an instance of $node
        (xslt/m2m/ros/jobs.xsl): it then writes them into the atomic code
@@ -43,9 +48,12 @@
     <xsl:param name="node" as="element(r:node)"/>
     <!-- ROS 1 sets a starting node's values in its launch file: only a
          reconfigured one reloads them -->
-    <xsl:sequence select="exists($node/../r:coordinator/r:transition/*[r:value]
-                                 [$node/../@ros-version eq '2' or self::r:reconfigure]/@instance
-                                 [. = $node/../r:instance[@node eq $node/@class]/@name])"/>
+    <xsl:variable name="coordinators" as="element(r:coordinator)*"
+        select="key('fp:ros-coordinator', 'coordinator', root($node))"/>
+    <xsl:sequence select="exists($coordinators)
+        and exists($coordinators/r:transition/*[r:value]
+                     [$node/../@ros-version eq '2' or self::r:reconfigure]/@instance
+                     [. = key('fp:ros-instance-of-node', string($node/@class), root($node))/@name])"/>
   </xsl:function>
 
   <xsl:function name="fp:ros-job-instance" as="element(r:instance)">

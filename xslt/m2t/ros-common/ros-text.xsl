@@ -383,16 +383,19 @@
     <xsl:sequence select="concat('${PROJECT_NAME}::', $lib/@target)"/>
   </xsl:function>
 
-  <!-- the link items and the build dependencies of the libraries -->
+  <!-- the link items and the build dependencies of the libraries (the
+       package's r:library elements, found once by the caller: a node's
+       lines asked the package for them, a scan of its nodes and instances
+       per node) -->
   <xsl:function name="fp:library-vars" as="xs:string*">
-    <xsl:param name="package" as="element(r:package)"/>
-    <xsl:sequence select="$package/r:library ! fp:library-target(.)"/>
+    <xsl:param name="libraries" as="element(r:library)*"/>
+    <xsl:sequence select="$libraries ! fp:library-target(.)"/>
   </xsl:function>
 
   <xsl:function name="fp:library-depends" as="xs:string*">
-    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:param name="libraries" as="element(r:library)*"/>
     <xsl:param name="target" as="xs:string"/>
-    <xsl:sequence select="$package/r:library ! (
+    <xsl:sequence select="$libraries ! (
         concat('if(', replace(@cmake-var, '_DIR$', '_DEPENDS'), ')'),
         concat('  add_dependencies(', $target, ' ${', replace(@cmake-var, '_DIR$', '_DEPENDS'), '})'),
         'endif()')"/>

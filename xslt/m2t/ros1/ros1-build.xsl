@@ -35,6 +35,9 @@
     <xsl:param name="package" as="element(r:package)"/>
     <xsl:variable name="deps" as="xs:string*" select="fp:ros1-deps($package)"/>
     <xsl:variable name="msgs" as="xs:boolean" select="exists($package/r:types/*[@message])"/>
+    <!-- the libraries every node links, found once (not per node) -->
+    <xsl:variable name="libraries" as="element(r:library)*" select="$package/r:library"/>
+    <xsl:variable name="library-vars" as="xs:string" select="string-join(fp:library-vars($libraries), ' ')"/>
     <xsl:sequence select="fp:lines((
         fp:banner('# ', $fp:build-xsl, concat('model ''', $package/@model-name, ''''), false()),
         'cmake_minimum_required(VERSION 3.0.2)',
@@ -63,8 +66,8 @@
                  string-join(fp:ros-user-sources($n) ! (' ' || .)), ')'),
           concat('set_target_properties(${PROJECT_NAME}_', $n/@executable, ' PROPERTIES OUTPUT_NAME ', $n/@executable, ')'),
           concat('add_dependencies(${PROJECT_NAME}_', $n/@executable, ' ${${PROJECT_NAME}_EXPORTED_TARGETS} ${catkin_EXPORTED_TARGETS})'),
-          fp:library-depends($package, concat('${PROJECT_NAME}_', $n/@executable)),
-          concat('target_link_libraries(${PROJECT_NAME}_', $n/@executable, ' ${catkin_LIBRARIES} ', string-join(fp:library-vars($package), ' '), ')')),
+          fp:library-depends($libraries, concat('${PROJECT_NAME}_', $n/@executable)),
+          concat('target_link_libraries(${PROJECT_NAME}_', $n/@executable, ' ${catkin_LIBRARIES} ', $library-vars, ')')),
         for $c in $package/r:coordinator return (
           '',
           concat('# the job coordinator of subsystem ', $c/@name),

@@ -65,8 +65,8 @@
         '  $&lt;INSTALL_INTERFACE:include/${PROJECT_NAME}&gt;)',
         concat('ament_target_dependencies(', $lib, ' ', string-join($deps, ' '), ')'),
         if ($msgs) then concat('target_link_libraries(', $lib, ' ${${PROJECT_NAME}_msgs_cpp})') else (),
-        fp:library-depends($package, $lib),
-        if ($package/r:library) then concat('target_link_libraries(', $lib, ' ', string-join(fp:library-vars($package), ' '), ')') else (),
+        fp:library-depends($package/r:library, $lib),
+        if ($package/r:library) then concat('target_link_libraries(', $lib, ' ', string-join(fp:library-vars($package/r:library), ' '), ')') else (),
         concat('rclcpp_components_register_nodes(', $lib, ' ',
                string-join(($package/r:node/@type-name, $package/r:node/@lifecycle-type-name) ! concat('&quot;', ., '&quot;'), ' '), ')'),
         for $n in $package/r:node return (
