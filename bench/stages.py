@@ -100,8 +100,8 @@ def _one_size(shape: str, size: int, target: str, wall: bool, repeat: int) -> li
 def measure(shape: str, sizes: list[int], target: str = "orocos", wall: bool = False,
             log: Callable[[str], None] = print, repeat: int = 1) -> dict[str, object]:
     """Each stage's seconds at each size of ``shape`` (with the identity transform of its input), each size in a
-    fresh process (:func:`_one_size`), the least of ``repeat`` runs; ``log`` gets a line per size. The result: sizes, stage
-    names, seconds per size (``seconds[i][j]``: size i, stage j) and the identity's likewise."""
+    fresh process (:func:`_one_size`), the least of ``repeat`` runs; ``log`` gets a line per size. The result:
+    sizes, stage names, seconds per size (``seconds[i][j]``: size i, stage j) and the identity's likewise."""
     unit = "" if wall else " CPU"
     rows = []
     for size in sizes:

@@ -29,7 +29,7 @@
        up per instance, where a scan of the binding's children (every
        instance, connection and call of the model) made the PSM quadratic
        (issue 35: 1.1 of 8.9 s at 10,000 nested components, Saxon-HE -TP) -->
-  <xsl:key name="fp:oro-member-job" match="pim:bound-job" use="pim:member/@instance"/>
+  <xsl:key name="fp:oro-member-job" match="pim:binding/pim:bound-job" use="pim:member/@instance"/>
   <xsl:key name="fp:oro-subsystem" match="pim:binding/pim:bound-subsystem" use="'subsystem'"/>
 
   <!-- true when $instance is in a job of a subsystem but not in its
@@ -38,10 +38,10 @@
     <xsl:param name="instance" as="element(pim:instance)"/>
     <xsl:variable name="binding" as="element(pim:binding)" select="$instance/.."/>
     <xsl:variable name="jobs" as="element(pim:bound-job)*"
-        select="key('fp:oro-member-job', $instance/@name, $binding)[.. is $binding]"/>
-    <xsl:sequence select="exists($jobs) and (some $s in key('fp:oro-subsystem', 'subsystem', $binding)[.. is $binding] satisfies
+        select="key('fp:oro-member-job', $instance/@name, $binding)"/>
+    <xsl:sequence select="some $s in key('fp:oro-subsystem', 'subsystem', $binding) satisfies
         (exists(key('fp:oro-bound-job', $s/pim:transition/(@from, @to), root($binding)) intersect $jobs)
-         and not($instance/@name = key('fp:oro-bound-job', $s/@initial-job, root($binding))/pim:member/@instance)))"/>
+         and not($instance/@name = key('fp:oro-bound-job', $s/@initial-job, root($binding))/pim:member/@instance))"/>
   </xsl:function>
 
   <xsl:function name="fp:oro-coordinators" as="element(o:coordinator)*">

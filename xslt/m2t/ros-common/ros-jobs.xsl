@@ -48,12 +48,9 @@
     <xsl:param name="node" as="element(r:node)"/>
     <!-- ROS 1 sets a starting node's values in its launch file: only a
          reconfigured one reloads them -->
-    <xsl:variable name="coordinators" as="element(r:coordinator)*"
-        select="key('fp:ros-coordinator', 'coordinator', root($node))"/>
-    <xsl:sequence select="exists($coordinators)
-        and exists($coordinators/r:transition/*[r:value]
-                     [$node/../@ros-version eq '2' or self::r:reconfigure]/@instance
-                     [. = key('fp:ros-instance-of-node', string($node/@class), root($node))/@name])"/>
+    <xsl:sequence select="exists(key('fp:ros-coordinator', 'coordinator', root($node))/r:transition/*[r:value]
+                                 [$node/../@ros-version eq '2' or self::r:reconfigure]/@instance
+                                 [. = key('fp:ros-instance-of-node', string($node/@class), root($node))/@name])"/>
   </xsl:function>
 
   <xsl:function name="fp:ros-job-instance" as="element(r:instance)">
