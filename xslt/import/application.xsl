@@ -565,7 +565,10 @@
   <xsl:template match="ownedOperation" mode="mp:feature" as="element(pim:operation)">
     <xsl:param name="root" as="element()" tunnel="yes"/>
     <xsl:param name="href-types" as="map(*)" tunnel="yes"/>
-    <pim:operation id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}"
+    <!-- a parameter's qualified name is its operation's and its own name
+         (fp:qname), not the path from the root again per parameter -->
+    <xsl:variable name="qname" as="xs:string" select="fp:qname(., $root)"/>
+    <pim:operation id="{fp:id(.)}" name="{@name}" qualified-name="{$qname}"
         visibility="{fp:visibility(.)}" static="{fp:bool(@isStatic, false())}"
         abstract="{fp:bool(@isAbstract, false())}" query="{fp:bool(@isQuery, false())}">
       <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
@@ -574,7 +577,7 @@
       <xsl:for-each select="ownedParameter">
         <xsl:variable name="typed" as="attribute()*" select="fp:typed(., $href-types)"/>
         <xsl:if test="not(@direction = 'return' and $typed[name() eq 'primitive'] = 'void')">
-          <pim:parameter id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
+          <pim:parameter id="{fp:id(.)}" name="{@name}" qualified-name="{$qname}::{@name}">
             <xsl:sequence select="$typed"/>
             <xsl:attribute name="direction"
                 select="if (@direction = ('in', 'out', 'inout', 'return')) then string(@direction) else 'in'"/>

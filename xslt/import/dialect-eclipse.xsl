@@ -61,7 +61,7 @@
     <xsl:sequence select="contains(lower-case($exporter), 'papyrus')
         or (not($exporter) and (
               (some $ns in $doc/*/namespace::* satisfies contains(lower-case($ns), 'papyrus'))
-              or exists(($doc//@href[contains(lower-case(.), 'papyrus')])[1])))"/>
+              or exists(distinct-values($doc//@href)[contains(lower-case(.), 'papyrus')][1])))"/>
   </xsl:function>
 
   <xsl:function name="fp:is-eclipse-uml2" as="xs:boolean">

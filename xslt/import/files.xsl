@@ -251,7 +251,7 @@
          call each -->
     <xsl:variable name="hrefs" as="attribute()*" select="$doc//@href"/>
     <xsl:variable name="files" as="xs:string*"
-        select="distinct-values($hrefs ! fp:href-doc(.))[exists(fp:model-file-doc(.))]"/>
+        select="distinct-values(distinct-values($hrefs) ! fp:href-doc(.))[exists(fp:model-file-doc(.))]"/>
     <xsl:variable name="base" as="xs:string" select="string(base-uri($doc))"/>
     <xsl:for-each-group select="if (empty($files)) then () else $hrefs[fp:href-doc(.) = $files][fp:model-file-ref(.)]"
                         group-by="(fp:ref-uri(fp:model-file-ref(.), $base, $sandbox)[. ne ''], fp:model-file-ref(.))[1]">
@@ -324,7 +324,8 @@
     <xsl:param name="norm" as="document-node()"/>
     <xsl:variable name="hrefs" as="attribute()*" select="$norm//@href"/>
     <xsl:variable name="docs" as="xs:string*"
-        select="distinct-values($hrefs ! fp:href-doc(.))[exists(fp:used-project(.))][fp:href-library(.) eq 'external']"/>
+        select="distinct-values(distinct-values($hrefs) ! fp:href-doc(.))[exists(fp:used-project(.))]
+                  [fp:href-library(.) eq 'external']"/>
     <xsl:for-each-group select="if (empty($docs)) then () else $hrefs[fp:href-doc(.) = $docs][fp:leaves-out(.)]"
                         group-by="fp:used-project(fp:href-doc(.))">
       <xsl:variable name="who" as="element()?" select="ancestor::*[@x:id][1]"/>

@@ -258,8 +258,9 @@
   <xsl:function name="fp:check-model" as="xs:boolean">
     <xsl:param name="norm" as="document-node()"/>
     <xsl:param name="model-el" as="element()"/>
-    <!-- ids are per file: fp:id is "FILE#id" where several files use one -->
-    <xsl:variable name="ids" as="xs:string*" select="$norm//*[@x:id] ! fp:id(.)"/>
+    <!-- ids are per file: fp:id is "FILE#id" where several files use one
+         (x:qid beside x:id); written out here, not a call per element -->
+    <xsl:variable name="ids" as="xs:string*" select="$norm//@x:id ! string((../@x:qid, .)[1])"/>
     <xsl:variable name="duplicates" as="xs:string*">
       <xsl:for-each-group select="if (count(distinct-values($ids)) eq count($ids)) then () else $ids"
           group-by="string(.)">

@@ -305,8 +305,8 @@
        "robomda.<path>" anchored at the nearest ancestor that has an xmi:id -->
   <xsl:function name="fp:id" as="xs:string">
     <xsl:param name="element" as="element()"/>
-    <xsl:sequence select="if ($element/@x:id) then string(($element/@x:qid, $element/@x:id)[1])
-                          else fp:synthetic-id($element)"/>
+    <xsl:variable name="written" as="attribute()?" select="($element/@x:qid, $element/@x:id)[1]"/>
+    <xsl:sequence select="if ($written) then string($written) else fp:synthetic-id($element)"/>
   </xsl:function>
 
   <xsl:function name="fp:synthetic-id" as="xs:string">
