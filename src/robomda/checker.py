@@ -38,6 +38,8 @@ __all__ = ["Checker", "Job", "checker", "ENABLED"]
 # ROBOMDA_CHECKER=0 validates every stage in the driver's own process (tests
 # compare both ways)
 ENABLED = os.environ.get("ROBOMDA_CHECKER", "1") != "0"
+# characters of a stage encoded at a time as it is written for the process
+_PIECE = 1 << 20
 
 
 class Job:
@@ -68,7 +70,11 @@ class Checker:
             proc = self._process()
             self._next += 1
             path = self._folder / f"{self._next}.xml"
-            path.write_bytes(text.encode("utf-8"))
+            # in pieces: the whole text encoded at once was a second copy of
+            # the largest stage beside the driver's peak
+            with open(path, "w", encoding="utf-8", newline="") as out:
+                for start in range(0, len(text), _PIECE):
+                    out.write(text[start:start + _PIECE])
             request = {"job": self._next, "file": str(path), "schema": str(schema)}
             proc.stdin.write(json.dumps(request) + "\n")
             proc.stdin.flush()
