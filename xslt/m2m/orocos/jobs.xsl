@@ -39,9 +39,11 @@
     <xsl:variable name="binding" as="element(pim:binding)" select="$instance/.."/>
     <xsl:variable name="jobs" as="element(pim:bound-job)*"
         select="key('fp:oro-member-job', $instance/@name, $binding)"/>
-    <xsl:sequence select="some $s in key('fp:oro-subsystem', 'subsystem', $binding) satisfies
+    <!-- an instance in no job (most of them) is not idle: the subsystems'
+         transitions and initial jobs are looked up only for the others -->
+    <xsl:sequence select="exists($jobs) and (some $s in key('fp:oro-subsystem', 'subsystem', $binding) satisfies
         (exists(key('fp:oro-bound-job', $s/pim:transition/(@from, @to), root($binding)) intersect $jobs)
-         and not($instance/@name = key('fp:oro-bound-job', $s/@initial-job, root($binding))/pim:member/@instance))"/>
+         and not($instance/@name = key('fp:oro-bound-job', $s/@initial-job, root($binding))/pim:member/@instance)))"/>
   </xsl:function>
 
   <xsl:function name="fp:oro-coordinators" as="element(o:coordinator)*">
