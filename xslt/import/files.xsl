@@ -86,6 +86,13 @@
     <xsl:sequence select="substring-before($href || '#', '#')"/>
   </xsl:function>
 
+  <!-- the distinct documents $hrefs name (fp:href-doc), each distinct href
+       cut once: a model repeats the same library hrefs thousands of times -->
+  <xsl:function name="fp:href-docs" as="xs:string*">
+    <xsl:param name="hrefs" as="attribute()*"/>
+    <xsl:sequence select="distinct-values(distinct-values($hrefs) ! fp:href-doc(.))"/>
+  </xsl:function>
+
   <!-- the id an href's fragment names: before "?" (RSA "#id?Path/Name?") -->
   <xsl:function name="fp:href-id" as="xs:string">
     <xsl:param name="href" as="xs:string"/>
@@ -251,7 +258,7 @@
          call each -->
     <xsl:variable name="hrefs" as="attribute()*" select="$doc//@href"/>
     <xsl:variable name="files" as="xs:string*"
-        select="distinct-values(distinct-values($hrefs) ! fp:href-doc(.))[exists(fp:model-file-doc(.))]"/>
+        select="fp:href-docs($hrefs)[exists(fp:model-file-doc(.))]"/>
     <xsl:variable name="base" as="xs:string" select="string(base-uri($doc))"/>
     <xsl:for-each-group select="if (empty($files)) then () else $hrefs[fp:href-doc(.) = $files][fp:model-file-ref(.)]"
                         group-by="(fp:ref-uri(fp:model-file-ref(.), $base, $sandbox)[. ne ''], fp:model-file-ref(.))[1]">
@@ -324,8 +331,7 @@
     <xsl:param name="norm" as="document-node()"/>
     <xsl:variable name="hrefs" as="attribute()*" select="$norm//@href"/>
     <xsl:variable name="docs" as="xs:string*"
-        select="distinct-values(distinct-values($hrefs) ! fp:href-doc(.))[exists(fp:used-project(.))]
-                  [fp:href-library(.) eq 'external']"/>
+        select="fp:href-docs($hrefs)[exists(fp:used-project(.))][fp:href-library(.) eq 'external']"/>
     <xsl:for-each-group select="if (empty($docs)) then () else $hrefs[fp:href-doc(.) = $docs][fp:leaves-out(.)]"
                         group-by="fp:used-project(fp:href-doc(.))">
       <xsl:variable name="who" as="element()?" select="ancestor::*[@x:id][1]"/>
