@@ -17,9 +17,15 @@ heap the smaller one had left, and the same stage grew more (the Orocos
 text stage on the nested shape from 2,000 to 4,000: 2.49 in one process,
 1.93 in fresh ones, the stylesheet and inputs the same). The times are the
 measuring process's CPU seconds (SaxonC runs in it), which other work on a
-shared machine does not stretch as it stretches wall time (--wall: wall
-time); --repeat runs each stage that many times and keeps the least time
-(other work on a shared machine only ever adds). Beside each ratio, that
+shared machine stretches less than wall time (--wall: wall time);
+--repeat runs each stage that many times and keeps the least time (other
+work on a shared machine only ever adds). The sizes' processes take turns,
+one run of the chain each, so that a slow spell of the machine falls on
+every size alike. Here, the import of the ring at 4,000 took 5.2 s at one
+time and 6.8 to 8.1 s a quarter of an hour later, the stylesheet the same;
+at 2,000, four runs in one process went from 3.80 down to 2.43 s. A ratio
+of two figures measured minutes apart is the machine's as much as the
+stage's. Beside each ratio, that
 of the identity transform of the stage's input in the same processes: what
 the engine's own growth (its garbage collector on a larger heap) adds
 whatever the stylesheet does. --target times another target's
@@ -81,9 +87,10 @@ def _fastest(runs: list[list[tuple[str, float, int, float]]]) -> list[tuple[str,
             for j, (name, _, size, _) in enumerate(runs[0])]
 
 
-def _one_size(shape: str, size: int, target: str, wall: bool, repeat: int) -> list[tuple[str, float, int, float]]:
-    """Each stage's seconds at one size of ``shape`` (with the identity of its input), in this process: its
-    own engine and heap, the stylesheets compiled before timing, the least of ``repeat`` runs."""
+def _serve(shape: str, size: int, target: str, wall: bool) -> None:
+    """One size of ``shape`` in this process (its own engine and heap, the stylesheets compiled first): "ready"
+    on stdout, then for each line on stdin one run of the chain, each stage's seconds (with the identity of its
+    input) as a line of JSON, until stdin ends."""
     clock = time.perf_counter if wall else time.process_time
     engine = Engine()
     chain = pipeline.for_context(pipeline.load(pipeline_path(target)), {}, model_may_ask=False)  # no product line
@@ -94,25 +101,49 @@ def _one_size(shape: str, size: int, target: str, wall: bool, repeat: int) -> li
         identity.write_text(_IDENTITY)
         engine.compile(identity)
         model = write_model(size, Path(tmp) / f"{shape}-{size}.xmi", shape, MIDDLEWARE[target])
-        return _fastest([_time_stages(engine, chain, model, clock, identity) for _ in range(max(1, repeat))])
+        print("ready", flush=True)
+        for _ in sys.stdin:
+            print(json.dumps(_time_stages(engine, chain, model, clock, identity)), flush=True)
+
+
+def _ask(child: subprocess.Popen, shape: str, size: int, request: str | None) -> str:
+    """Send ``request`` (a line; None: nothing) to ``child`` and read its answer line."""
+    if request is not None:
+        child.stdin.write(request + "\n")
+        child.stdin.flush()
+    answer = child.stdout.readline()
+    if not answer:
+        child.wait()
+        raise RuntimeError(f"bench/stages.py on {shape} at {size} failed:\n{child.stderr.read()}")
+    return answer
 
 
 def measure(shape: str, sizes: list[int], target: str = "orocos", wall: bool = False,
             log: Callable[[str], None] = print, repeat: int = 1) -> dict[str, object]:
     """Each stage's seconds at each size of ``shape`` (with the identity transform of its input), each size in a
-    fresh process (:func:`_one_size`), the least of ``repeat`` runs; ``log`` gets a line per size. The result:
-    sizes, stage names, seconds per size (``seconds[i][j]``: size i, stage j) and the identity's likewise."""
+    fresh process of its own (:func:`_serve`), the least of ``repeat`` runs, the sizes taking turns run by run;
+    ``log`` gets a line per size. The result: sizes, stage names, seconds per size (``seconds[i][j]``: size i,
+    stage j) and the identity's likewise."""
     unit = "" if wall else " CPU"
-    rows = []
-    for size in sizes:
-        command = [sys.executable, __file__, str(size), "--one-size", "--shapes", shape, "--target", target,
-                   "--repeat", str(repeat)] + (["--wall"] if wall else [])
-        proc = subprocess.run(command, capture_output=True, text=True)
-        if proc.returncode != 0:
-            raise RuntimeError(f"bench/stages.py on {shape} at {size} failed:\n{proc.stderr}")
-        rows.append([tuple(stage) for stage in json.loads(proc.stdout.strip().splitlines()[-1])])
+    children = [subprocess.Popen([sys.executable, __file__, str(size), "--serve", "--shapes", shape,
+                                  "--target", target] + (["--wall"] if wall else []),
+                                 stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                for size in sizes]
+    try:
+        for child, size in zip(children, sizes):
+            _ask(child, shape, size, None)  # "ready": compiled, model written
+        runs: list[list[list[tuple[str, float, int, float]]]] = [[] for _ in sizes]
+        for _ in range(max(1, repeat)):
+            for i, (child, size) in enumerate(zip(children, sizes)):
+                runs[i].append([tuple(stage) for stage in json.loads(_ask(child, shape, size, "run"))])
+    finally:
+        for child in children:
+            child.stdin.close()
+            child.wait()
+    rows = [_fastest(size_runs) for size_runs in runs]
+    for size, row in zip(sizes, rows):
         log(f"{shape:>10} {size:>6}: " + ", ".join(f"{name} {t:.2f}s{unit} ({n // 1024} KiB)"
-                                                 for name, t, n, _ in rows[-1]))
+                                                 for name, t, n, _ in row))
     return {"shape": shape, "sizes": sizes, "stages": [name for name, _, _, _ in rows[0]] if rows else [],
             "seconds": [[t for _, t, _, _ in row] for row in rows],
             "identity": [[f for _, _, _, f in row] for row in rows]}
@@ -145,10 +176,10 @@ def main(argv: list[str] | None = None) -> int:
                         help="runs of each stage at each size: the least time of them is reported (the identity's "
                              "likewise); 2 or 3 on a busy machine")
     parser.add_argument("--json", action="store_true", help="a last line with the measures as JSON (bench/run.py)")
-    parser.add_argument("--one-size", action="store_true", help=argparse.SUPPRESS)  # a child of measure()
+    parser.add_argument("--serve", action="store_true", help=argparse.SUPPRESS)  # a child of measure()
     args = parser.parse_args(argv)
-    if args.one_size:
-        print(json.dumps(_one_size(args.shapes[0], args.sizes[0], args.target, args.wall, args.repeat)))
+    if args.serve:
+        _serve(args.shapes[0], args.sizes[0], args.target, args.wall)
         return 0
     worst = 0.0
     found = []
