@@ -109,8 +109,11 @@ def _serve(shape: str, size: int, target: str, wall: bool) -> None:
 def _ask(child: subprocess.Popen, shape: str, size: int, request: str | None) -> str:
     """Send ``request`` (a line; None: nothing) to ``child`` and read its answer line."""
     if request is not None:
-        child.stdin.write(request + "\n")
-        child.stdin.flush()
+        try:
+            child.stdin.write(request + "\n")
+            child.stdin.flush()
+        except BrokenPipeError:  # it has ended: its report is on stderr
+            pass
     answer = child.stdout.readline()
     if not answer:
         child.wait()
@@ -138,7 +141,10 @@ def measure(shape: str, sizes: list[int], target: str = "orocos", wall: bool = F
                 runs[i].append([tuple(stage) for stage in json.loads(_ask(child, shape, size, "run"))])
     finally:
         for child in children:
-            child.stdin.close()
+            try:
+                child.stdin.close()  # the end of its runs
+            except BrokenPipeError:
+                pass
             child.wait()
     rows = [_fastest(size_runs) for size_runs in runs]
     for size, row in zip(sizes, rows):
