@@ -212,7 +212,9 @@ class Engine:
             self._serializer = self._xslt.compile_stylesheet(stylesheet_text=_SERIALIZER)
         serializer = self._serializer.clone()  # as in run: the compiled one must not hold the tree
         serializer.set_global_context_item(xdm_item=tree.node)
-        return serializer.apply_templates_returning_string(xdm_value=tree.node)
+        # through a file, as a stage's text is: 0.66 against 0.85 s for a bound PIM of 35 MB (4,000 components
+        # with calls), the same bytes
+        return _returning_text(serializer, tree.node)
 
 
 def _returning_text(executable: object, node: object) -> str:
