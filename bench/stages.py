@@ -106,8 +106,9 @@ def _serve(shape: str, size: int, target: str, wall: bool) -> None:
             print(json.dumps(_time_stages(engine, chain, model, clock, identity)), flush=True)
 
 
-def _ask(child: subprocess.Popen, shape: str, size: int, request: str | None) -> str:
-    """Send ``request`` (a line; None: nothing) to ``child`` and read its answer line."""
+def _ask(child: subprocess.Popen, err, shape: str, size: int, request: str | None) -> str:
+    """Send ``request`` (a line; None: nothing) to ``child`` and read its answer line (``err``: the file its
+    stderr goes to, read back when it has ended)."""
     if request is not None:
         try:
             child.stdin.write(request + "\n")
@@ -117,7 +118,8 @@ def _ask(child: subprocess.Popen, shape: str, size: int, request: str | None) ->
     answer = child.stdout.readline()
     if not answer:
         child.wait()
-        raise RuntimeError(f"bench/stages.py on {shape} at {size} failed:\n{child.stderr.read()}")
+        err.seek(0)
+        raise RuntimeError(f"bench/stages.py on {shape} at {size} failed:\n{err.read()}")
     return answer
 
 
@@ -128,24 +130,28 @@ def measure(shape: str, sizes: list[int], target: str = "orocos", wall: bool = F
     ``log`` gets a line per size. The result: sizes, stage names, seconds per size (``seconds[i][j]``: size i,
     stage j) and the identity's likewise."""
     unit = "" if wall else " CPU"
+    # each child's stderr in a file, not a pipe: a pipe nobody reads until the end would stop a child that
+    # wrote more than its buffer holds
+    errs = [tempfile.TemporaryFile("w+", encoding="utf-8") for _ in sizes]
     children = [subprocess.Popen([sys.executable, __file__, str(size), "--serve", "--shapes", shape,
                                   "--target", target] + (["--wall"] if wall else []),
-                                 stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-                for size in sizes]
+                                 stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=err, text=True)
+                for size, err in zip(sizes, errs)]
     try:
-        for child, size in zip(children, sizes):
-            _ask(child, shape, size, None)  # "ready": compiled, model written
+        for child, err, size in zip(children, errs, sizes):
+            _ask(child, err, shape, size, None)  # "ready": compiled, model written
         runs: list[list[list[tuple[str, float, int, float]]]] = [[] for _ in sizes]
         for _ in range(max(1, repeat)):
-            for i, (child, size) in enumerate(zip(children, sizes)):
-                runs[i].append([tuple(stage) for stage in json.loads(_ask(child, shape, size, "run"))])
+            for i, (child, err, size) in enumerate(zip(children, errs, sizes)):
+                runs[i].append([tuple(stage) for stage in json.loads(_ask(child, err, shape, size, "run"))])
     finally:
-        for child in children:
+        for child, err in zip(children, errs):
             try:
                 child.stdin.close()  # the end of its runs
             except BrokenPipeError:
                 pass
             child.wait()
+            err.close()
     rows = [_fastest(size_runs) for size_runs in runs]
     for size, row in zip(sizes, rows):
         log(f"{shape:>10} {size:>6}: " + ", ".join(f"{name} {t:.2f}s{unit} ({n // 1024} KiB)"
