@@ -387,8 +387,7 @@ def _report(shape: str, rows: list[dict[str, object]]) -> None:
     for r in rows:
         print(f"  {r['size']:>6}: " + ", ".join(f"{n} {t:.2f}/{v:.2f}/{c:.2f}" for n, t, v, c in r["steps"]))
     print("the chain's floor (SaxonC identity over each stage's input, one tree at a time as the chain hands them")
-    print("over, the least of two runs; XSD; rules; the")
-    print("rest: locating, writing the files):")
+    print("over, the least of two runs; XSD; rules; the rest: locating, writing the files):")
     for r in rows:
         rest = r["wall_s"] - r["xslt_s"] - r["xsd_s"] - r["rules_s"]
         print(f"  {r['size']:>6}: identity {r['chain_identity_s']:.2f} + XSD {r['xsd_s']:.2f} + rules "
