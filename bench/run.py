@@ -461,6 +461,9 @@ def main() -> int:
     parser.add_argument("--watch-cpu", type=int, help=argparse.SUPPRESS)
     parser.add_argument("--workdir", type=Path, help=argparse.SUPPRESS)
     args = parser.parse_args()
+    # each line as it is printed: a full run takes about an hour, and redirected to a file the output was
+    # block-buffered, so it showed nothing until the end
+    sys.stdout.reconfigure(line_buffering=True)
     if args.one:
         print(json.dumps(_one(args.one, args.workdir, args.shape)))
         return 0
