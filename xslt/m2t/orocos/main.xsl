@@ -71,13 +71,17 @@
 
   <xsl:template match="o:deployment" mode="m:emit-files" as="element(fs:files)">
     <xsl:variable name="pkg" as="xs:string" select="@package"/>
+    <!-- the definitions, once: not a new sequence of them all for each
+         type, nor a search of the whole model for them in each component's
+         header (a scan per component: quadratic, issue 35) -->
+    <xsl:variable name="definitions" as="element()*" select="o:types/(o:struct | o:enum)"/>
     <!-- each file on a line of its own, as f:indent would put it: written
          straight into fs:files, not built first and copied (the text of
          every file would be copied once more) -->
     <fs:files target="orocos">
       <xsl:for-each select="o:task-context">
         <xsl:sequence select="$fp:file-margin, fp:file(concat('include/', $pkg, '/', @generated-class, '.hpp'), 'generated', $fp:cpp-xsl,
-                                      if (@kind eq 'thread') then fp:thread-header(.) else fp:cpp-header(.))"/>
+                                      if (@kind eq 'thread') then fp:thread-header(.) else fp:cpp-header(., $definitions))"/>
         <xsl:sequence select="$fp:file-margin, fp:file(concat('src/', @generated-class, '.cpp'), 'generated', $fp:cpp-xsl,
                                       if (@kind eq 'thread') then fp:thread-source(.) else fp:cpp-source(.))"/>
         <xsl:if test="@kind eq 'base'">
@@ -85,8 +89,6 @@
           <xsl:sequence select="$fp:file-margin, fp:user-file(concat('src/', @class, '.cpp'), ., fp:user-source(.))"/>
         </xsl:if>
       </xsl:for-each>
-      <!-- the definitions, once: not a new sequence of them all for each type -->
-      <xsl:variable name="definitions" as="element()*" select="o:types/(o:struct | o:enum)"/>
       <xsl:for-each select="$definitions">
         <xsl:sequence select="$fp:file-margin, fp:file('include/' || @header, 'generated', 'm2t/common/data-types.xsl',
                                       fp:type-header(., $definitions, ../../@model-name))"/>

@@ -39,13 +39,15 @@
 
   <xsl:function name="fp:includes" as="xs:string*">
     <xsl:param name="tc" as="element(o:task-context)"/>
+    <!-- every type definition of the deployment (o:types) -->
+    <xsl:param name="definitions" as="element()*"/>
     <xsl:sequence select="'#include &lt;rtt/TaskContext.hpp&gt;',
         if ($tc/o:port[@direction eq 'in']) then '#include &lt;rtt/InputPort.hpp&gt;' else (),
         if ($tc/o:port[@direction eq 'out']) then '#include &lt;rtt/OutputPort.hpp&gt;' else (),
         if ($tc/o:required-service) then ('#include &lt;rtt/Logger.hpp&gt;', '#include &lt;rtt/OperationCaller.hpp&gt;') else (),
         '#include &lt;string&gt;',
         if ($tc//*[@type-kind eq 'sequence']) then '#include &lt;vector&gt;' else (),
-        distinct-values(fp:definitions-of($tc//@type-ref, root($tc)//o:types/*)/@header) ! ('#include &quot;' || . || '&quot;')"/>
+        distinct-values(fp:definitions-of($tc//@type-ref, $definitions)/@header) ! ('#include &quot;' || . || '&quot;')"/>
   </xsl:function>
 
   <xsl:function name="fp:member-decls" as="xs:string*">
@@ -141,6 +143,9 @@
   <!-- ================================================ generated header -->
   <xsl:function name="fp:cpp-header" as="xs:string">
     <xsl:param name="tc" as="element(o:task-context)"/>
+    <!-- every type definition of the deployment (o:types), for the
+         headers the component includes -->
+    <xsl:param name="definitions" as="element()*"/>
     <xsl:variable name="cls" as="xs:string" select="$tc/@generated-class"/>
     <xsl:variable name="guard" as="xs:string" select="fp:guard($tc/@namespace, $cls)"/>
     <xsl:variable name="wrapper" as="xs:boolean" select="$tc/@kind eq 'wrapper'"/>
@@ -149,7 +154,7 @@
         concat('#ifndef ', $guard),
         concat('#define ', $guard),
         '',
-        fp:includes($tc),
+        fp:includes($tc, $definitions),
         if ($wrapper) then concat('#include &quot;', $tc/o:realizing-class/@header, '&quot;') else (),
         '',
         concat('namespace ', $tc/@namespace, ' {'),
