@@ -124,14 +124,27 @@
         select="$components ! (pim:data-port, fp:attributes(fp:owner(.)), fp:operations(fp:owner(.))/pim:parameter)"/>
     <xsl:variable name="defs" as="element()*"
         select="fp:data-types($typed ! fp:type-def(.), 'RTM021')[self::pim:datatype or pim:literal]"/>
+    <!-- the ports whose data is converted, as a set: a look-up per data
+         port, not a comparison with every port (quadratic, issue 35) -->
+    <xsl:variable name="converted" as="map(xs:string, xs:boolean)"
+        select="map:merge($ports[@convert ne 'primitive']/@xmi-id ! map:entry(string(.), true()))"/>
     <xsl:variable name="port-data" as="element(pim:data-port)*"
-        select="$components/pim:data-port[@port = $ports[@convert ne 'primitive']/@xmi-id]"/>
+        select="$components/pim:data-port[@port ! map:contains($converted, string(.))]"/>
     <xsl:variable name="carried" as="element()*" select="fp:type-closure($port-data/fp:type-def(.))"/>
     <xsl:variable name="carried-set" as="map(xs:string, xs:boolean)" select="map:merge($carried ! map:entry(generate-id(.), true()))"/>
     <xsl:if test="exists($defs) or exists($port-data)">
       <!-- every typed element the IDL declares: the carried types' fields, the ports' data -->
       <xsl:variable name="fields" as="element(r:field)*"
           select="$defs[map:contains($carried-set, generate-id(.))]/self::pim:datatype ! fp:rtm-fields(., $package, true())"/>
+      <!-- those fields by their struct: a look-up per struct, not a scan
+           of every field (quadratic, issue 35) -->
+      <xsl:variable name="fields-of" as="map(xs:string, element(r:field)*)">
+        <xsl:map>
+          <xsl:for-each-group select="$fields" group-by="string(@owner)">
+            <xsl:map-entry key="current-grouping-key()" select="current-group()"/>
+          </xsl:for-each-group>
+        </xsl:map>
+      </xsl:variable>
       <r:data-types idl="{$package}_types" module="{$package}">
         <xsl:for-each select="$defs">
           <xsl:variable name="type" as="element(ty:type)" select="fp:rtm-def-type(., $package)"/>
@@ -147,7 +160,7 @@
             <xsl:for-each select="self::pim:enumeration/pim:literal">
               <r:literal xmi-id="{@id}" name="{@name}" member="{f:cpp-identifier(@name)}" value="{position() - 1}"/>
             </xsl:for-each>
-            <xsl:sequence select="if ($idl) then $fields[@owner eq current()/@id] else self::pim:datatype ! fp:rtm-fields(., $package, false())"/>
+            <xsl:sequence select="if ($idl) then $fields-of(string(@id)) else self::pim:datatype ! fp:rtm-fields(., $package, false())"/>
           </xsl:element>
         </xsl:for-each>
         <!-- the sequences the IDL's fields and generated Timed types hold, by name -->
