@@ -127,6 +127,9 @@
   <xsl:key name="fp:instance-by-name" match="pim:instance" use="@name"/>
   <xsl:key name="fp:data-port" match="pim:data-port" use="@port"/>
   <xsl:key name="fp:rtc" match="r:component" use="@xmi-id"/>
+  <!-- a generated service port by its id (the ends of an operation call):
+       a look-up per end, not a scan of every component's ports (issue 35) -->
+  <xsl:key name="fp:service-port" match="r:service-port" use="@xmi-id"/>
 
   <xsl:variable name="fp:types" as="document-node()" select="doc('types.xml')"/>
 
@@ -419,7 +422,7 @@
         <xsl:sequence select="f:warn('RTM012', string($call/@xmi-id), 'operation call ''' || $call/@name || ''' joins '''
             || string-join($ends/@instance, ''' and ''') || ''', one of which the OpenRTM package does not hold: the call is left out')"/>
       </xsl:when>
-      <xsl:when test="every $e in $ends satisfies exists($rtcs/r:component/r:service-port[@xmi-id eq $e/@port])">
+      <xsl:when test="every $e in $ends satisfies exists(key('fp:service-port', string($e/@port), $rtcs))">
         <r:service-connection xmi-id="{$call/@xmi-id}" name="{$call/@name}"
             caller="{$call/pim:caller/@instance}" caller-port="{$call/pim:caller/@service-port}"
             provider="{$call/pim:provider/@instance}" provider-port="{$call/pim:provider/@service-port}"/>
