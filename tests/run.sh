@@ -23,6 +23,9 @@ python3 -c 'import venv, ensurepip' >/dev/null 2>&1 || need+=(python3-venv)
 # with) for tests/test_diagrams.py: every fixture's diagrams render to SVG.
 command -v plantuml >/dev/null 2>&1 || need+=(plantuml)
 command -v dot >/dev/null 2>&1 || need+=(graphviz)
+# valgrind for bench/instructions.py, which .ci/run runs as a smoke run: the
+# stylesheets' instructions counted, the one measure a shared machine leaves steady
+command -v valgrind >/dev/null 2>&1 || need+=(valgrind)
 # ROS 1 (Debian's own packages) for tests/test_ros.py: catkin build, catkin_lint,
 # roslaunch loader, roscore / rostopic / rosnode / rosservice, std_msgs, std_srvs.
 [ -x /usr/bin/catkin_make ] || need+=(catkin)
