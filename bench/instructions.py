@@ -5,12 +5,15 @@ depend on what else the machine is doing.
     python bench/instructions.py 500 1000 --shapes ring calls --target ros2
 
 bench/stages.py times each stage; on a shared machine the same stage took 5.2 s at one time and 6.8 to 8.1 s a
-quarter of an hour later, so a change that saves 3 to 5 % cannot be told from the machine. Counted, six runs of
-the same process (the Orocos text stage of the ring at 1,000 components, with the machine busy or not) gave
-10,931 to 10,965 million instructions, a spread of 0.3 %. The count includes the work SaxonC's garbage
-collector does for the stage. A count is a difference of two processes' counts, so at a few components, where
-compiling dwarfs the stage, that spread is a large part of it: the smallest sizes show that the stages run, not
-how much they cost.
+quarter of an hour later, so a change that saves 3 to 5 % cannot be told from the machine. A count does not depend
+on what else the machine does, but it includes the work of SaxonC's garbage collector, and the same run does not
+collect at the same points every time, so its count still varies: six counts of a process running the Orocos text
+stage on the ring at 1,000 components spread over 0.3 % (10,931 to 10,965 million instructions), four of the import
+of calls at 1,000 over 1.1 %, five of the Orocos PSM of calls at 1,000 over 4 % of the process (6 % of the stage:
+one count fell 0.4 G below the others). --repeat N counts each run N times and keeps the least, as bench/stages.py
+keeps the least time. A count is a difference of two processes' counts, so at a few components, where compiling
+dwarfs the stage, the spread is a large part of it: the smallest sizes show that the stages run, not how much they
+cost.
 
 For each shape and size it writes the model, runs the chain once to get every stage's input, then for each stage
 and for the identity transform of the stage's input runs a fresh process twice under valgrind (cachegrind, no
@@ -19,12 +22,13 @@ every count alike), compiling the stylesheet and parsing the stage's input into 
 over (the base); then the same and one run of the stylesheet on that tree, as the chain runs it (a kept tree
 serialized too). A count is the second process's minus the base's. It prints each stage's count beside its
 identity's and their ratio, then each stage's growth between consecutive sizes beside its identity's: a stage
-that grows with the square of the model stands out without any noise (issue 35 asks t(4,000) / t(2,000) <= 2.2
+that grows with the square of the model stands out above that spread (issue 35 asks t(4,000) / t(2,000) <= 2.2
 of every stage).
 
 valgrind runs a process about 15 times slower, so the sizes are small (CI counts 10 components of one shape; a
-whole run at 500 and 1,000 takes about 10 minutes a shape on two cores). --jobs runs that many counts at once
-(default 2). Needs valgrind (Debian package valgrind); without it, it says so and exits 2.
+whole run at 500 and 1,000 takes about 7 minutes a shape on two cores with --repeat 1, 12 with --repeat 3).
+--jobs runs that many counts at once (default 2). Needs valgrind (Debian package valgrind); without it, it says so
+and exits 2.
 """
 
 from __future__ import annotations
@@ -101,9 +105,11 @@ def _count(args: list[str]) -> int:
     return int(found[-1].replace(",", ""))
 
 
-def measure(shape: str, sizes: list[int], target: str, jobs: int, workdir: Path) -> dict[str, object]:
+def measure(shape: str, sizes: list[int], target: str, jobs: int, workdir: Path,
+            repeat: int = 1) -> dict[str, object]:
     """Each stage's instructions at each size of ``shape`` and those of the identity transform of its input:
-    ``counts[i][j]`` and ``identity[i][j]`` for size i, stage j."""
+    ``counts[i][j]`` and ``identity[i][j]`` for size i, stage j; each run counted ``repeat`` times, the least
+    kept."""
     identity = workdir / "identity.xsl"
     identity.write_text(_IDENTITY, encoding="utf-8")
     work = []
@@ -114,9 +120,11 @@ def measure(shape: str, sizes: list[int], target: str, jobs: int, workdir: Path)
             work.append((size, name, [[str(xsl), str(identity), str(source), json.dumps(given), keep_flag, run]
                                       for xsl, given in ((stylesheet, params), (identity, {}))
                                       for run in ("0", "1")]))
+    # the base once (compiling and parsing vary by 0.2 % at most), each run ``repeat`` times
     with ThreadPoolExecutor(max(1, jobs)) as pool:
-        counted = [[pool.submit(_count, args) for args in runs] for _, _, runs in work]
-        counted = [[future.result() for future in runs] for runs in counted]
+        counted = [[[pool.submit(_count, args) for _ in range(1 if args[-1] == "0" else max(1, repeat))]
+                    for args in runs] for _, _, runs in work]
+        counted = [[min(future.result() for future in futures) for futures in runs] for runs in counted]
     names = list(dict.fromkeys(name for _, name, _ in work))
     counts = [[0] * len(names) for _ in sizes]
     ident = [[0] * len(names) for _ in sizes]
@@ -142,7 +150,8 @@ def report(measured: dict[str, object]) -> list[str]:
     for i in range(len(sizes) - 1):
         growth = ", ".join(f"{name} {b / max(a, 1):.2f} (identity {g / max(f, 1):.2f})"
                            for name, a, b, f, g in zip(names, counts[i], counts[i + 1], ident[i], ident[i + 1]))
-        lines.append(f"{shape:>10} n({sizes[i + 1]})/n({sizes[i]}) (sizes x{sizes[i + 1] / sizes[i]:.1f}): {growth}")
+        pair = f"n({sizes[i + 1]})/n({sizes[i]}) (sizes x{sizes[i + 1] / sizes[i]:.1f})"
+        lines.append(f"{shape:>10} {pair}: {growth}")
     return lines
 
 
@@ -152,6 +161,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--shapes", nargs="+", choices=SHAPES, default=list(SHAPES))
     parser.add_argument("--target", choices=sorted(MIDDLEWARE), default="orocos")
     parser.add_argument("--jobs", type=int, default=2, help="counts run at once (default 2)")
+    parser.add_argument("--repeat", type=int, default=1,
+                        help="counts of each run, the least kept (SaxonC's garbage collector does not work the "
+                             "same in every run: a run's count varies by up to 6 %%; default 1)")
     parser.add_argument("--json", action="store_true", help="a last line with the counts as JSON")
     parser.add_argument("--child", nargs=6, help=argparse.SUPPRESS)  # one count's process (_child)
     args = parser.parse_args(argv)
@@ -160,13 +172,14 @@ def main(argv: list[str] | None = None) -> int:
         _child(Path(stylesheet), Path(identity), Path(source), json.loads(params), keep == "1", run == "1")
         return 0
     if shutil.which("valgrind") is None:
-        print("bench/instructions.py: valgrind is not installed (Debian: apt-get install valgrind)", file=sys.stderr)
+        print("bench/instructions.py: valgrind is not installed (Debian: apt-get install valgrind)",
+              file=sys.stderr)
         return 2
     found = []
     with tempfile.TemporaryDirectory(dir="/dev/shm" if Path("/dev/shm").is_dir() else None) as tmp:
         for shape in args.shapes:
             try:
-                measured = measure(shape, args.sizes, args.target, args.jobs, Path(tmp))
+                measured = measure(shape, args.sizes, args.target, args.jobs, Path(tmp), args.repeat)
             except RuntimeError as exc:
                 print(f"bench/instructions.py: {exc}", file=sys.stderr)
                 return 1
