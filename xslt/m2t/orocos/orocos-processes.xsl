@@ -31,6 +31,7 @@
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
     xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:map="http://www.w3.org/2005/xpath-functions/map"
     xmlns:o="urn:robomda:psm-orocos:1"
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
@@ -86,6 +87,10 @@
     </xsl:variable>
     <xsl:variable name="connections" as="element(o:connection)*" select="$view-connections/o:connection"/>
     <xsl:variable name="instances" as="element(o:instance)*" select="fp:in-process('fp:instance-in', $deployment, $p)"/>
+    <!-- their names as a set: whether a peer runs in $p is one look-up, not
+         a comparison with every instance of the process (issue 35) -->
+    <xsl:variable name="names" as="map(xs:string, xs:boolean)"
+        select="map:merge(distinct-values($instances/@name ! string(.)) ! map:entry(., true()))"/>
     <o:deployment>
       <xsl:sequence select="$deployment/@*"/>
       <xsl:attribute name="deploy-name" select="$p"/>
@@ -103,7 +108,7 @@
       </xsl:for-each>
       <xsl:for-each select="$instances">
         <xsl:copy>
-          <xsl:sequence select="@*, o:activity, o:peer[@instance = $instances/@name], o:call"/>
+          <xsl:sequence select="@*, o:activity, o:peer[map:contains($names, string(@instance))], o:call"/>
           <xsl:sequence select="fp:port-connections(@name, $view-connections)"/>
           <xsl:sequence select="o:property-value, o:start-after"/>
         </xsl:copy>
