@@ -47,34 +47,23 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 sys.path.insert(0, str(HERE.parent / "src"))
 
-from stages import _IDENTITY, MIDDLEWARE  # noqa: E402
+from stages import _IDENTITY, MIDDLEWARE, chain, stage_params  # noqa: E402
 from synth import SHAPES, write_model  # noqa: E402
 
-from robomda import pipeline  # noqa: E402
 from robomda.engine import Engine  # noqa: E402
-from robomda.resources import pipeline_path  # noqa: E402
 
 _COUNT = re.compile(r"I\s+refs:\s+([0-9,]+)")
-
-
-def _chain(target: str) -> pipeline.Pipeline:
-    return pipeline.for_context(pipeline.load(pipeline_path(target)), {}, model_may_ask=False)  # no product line
-
-
-def _params(step: pipeline.Step, model: Path) -> dict[str, str]:
-    context = {"model-file-name": model.name, "model-dir-from-output": ".", "package-name": ""}
-    return {p.name: p.value if p.value is not None else context.get(p.source or "", "") for p in step.params}
 
 
 def _inputs(model: Path, target: str, workdir: Path) -> list[tuple[str, Path, Path, dict[str, str], bool]]:
     """Each step of the chain on ``model``: its name, stylesheet, input file (the XMI, then the text of the step
     before), parameters and whether the chain keeps its result as a tree."""
     engine = Engine()
-    chain = _chain(target)
+    chain_steps = chain(target).steps
     steps, source = [], model
-    for index, step in enumerate(chain.steps):
-        keep = index < len(chain.steps) - 1
-        params = _params(step, model)
+    for index, step in enumerate(chain_steps):
+        keep = index < len(chain_steps) - 1
+        params = stage_params(step, model)
         steps.append((step.name, step.stylesheet, source, params, keep))
         if keep:
             text = engine.run(step.stylesheet, params, source, keep_tree=False)[0]

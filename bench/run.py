@@ -59,7 +59,7 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 sys.path.insert(0, str(HERE.parent / "src"))
 
-from stages import ratios, worst_doubling  # noqa: E402
+from stages import chain, ratios, worst_doubling  # noqa: E402
 from synth import SHAPES, write_model  # noqa: E402
 
 _IDENTITY = """<xsl:stylesheet version="3.0" xmlns:xsl="http://www.w3.org/1999/XSL/Transform">
@@ -142,8 +142,6 @@ def _batch(count: int, java_models: int, workdir: Path) -> tuple[list[str], dict
     """Batch throughput: robomda -j1 / -j2 against per-file Saxon-HE Java command lines (the lines to
     print, and the seconds per model of each)."""
     from robomda.batch import run_batch
-    from robomda import pipeline
-    from robomda.resources import pipeline_path
 
     from robomda.diagnostics import linked_files
 
@@ -166,8 +164,7 @@ def _batch(count: int, java_models: int, workdir: Path) -> tuple[list[str], dict
         lines.append(f"  robomda -j{jobs}: {report.seconds:.1f} s, {rate[jobs] * 1000:.0f} ms per model")
     java = shutil.which("java")
     if java and SAXON_JAR.is_file():
-        # the steps a model without a product-line configuration runs (no configure step)
-        steps = pipeline.for_context(pipeline.load(pipeline_path("orocos")), {}, model_may_ask=False).steps
+        steps = chain("orocos").steps
         started = time.perf_counter()
         for i in range(java_models):
             model = next((src / f"m{i:04d}").iterdir())
@@ -224,12 +221,11 @@ def _small(workdir: Path, runs: int) -> dict[str, float]:
     development shell with PYTHONDONTWRITEBYTECODE would compile them again on every command)."""
     import compileall
 
-    from robomda import pipeline, resources
+    from robomda import pipeline
 
     compileall.compile_dir(str(Path(pipeline.__file__).parent), quiet=1)
     # what a fresh command compiles: the chain without the configure step a model without features skips
-    chain = pipeline.for_context(pipeline.load(resources.pipeline_path("orocos")), {}, model_may_ask=False)
-    stylesheets = [str(step.stylesheet) for step in chain.steps]
+    stylesheets = [str(step.stylesheet) for step in chain("orocos").steps]
     out = workdir / "small-out"
     robomda = [sys.executable, "-m", "robomda"]
     medians = _median_seconds({

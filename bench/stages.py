@@ -61,15 +61,26 @@ _IDENTITY = """<xsl:stylesheet version="3.0" xmlns:xsl="http://www.w3.org/1999/X
 <xsl:mode on-no-match="shallow-copy"/></xsl:stylesheet>"""
 
 
+def chain(target: str) -> pipeline.Pipeline:
+    """``target``'s chain as a model without a product-line configuration runs it (no configure step)."""
+    return pipeline.for_context(pipeline.load(pipeline_path(target)), {}, model_may_ask=False)
+
+
+def stage_params(step: pipeline.Step, model: Path) -> dict[str, str]:
+    """The parameters ``step`` runs with on ``model``, as a command generating into the model's folder sets
+    them."""
+    context = {"model-file-name": model.name, "model-dir-from-output": ".", "package-name": ""}
+    return {p.name: p.value if p.value is not None else context.get(p.source or "", "") for p in step.params}
+
+
 def _time_stages(engine: Engine, chain: pipeline.Pipeline, model: Path, clock,
                  identity: Path) -> list[tuple[str, float, int, float]]:
     """Each step's name, seconds on ``clock``, output size and the seconds of the identity transform of its input
     on ``model``, as the pipeline hands trees on."""
-    context = {"model-file-name": model.name, "model-dir-from-output": ".", "package-name": ""}
     source: object = model
     row = []
     for index, step in enumerate(chain.steps):
-        params = {p.name: p.value if p.value is not None else context.get(p.source or "", "") for p in step.params}
+        params = stage_params(step, model)
         started = clock()
         engine.run(identity, {}, source, keep_tree=False)
         floor = clock() - started
@@ -93,8 +104,8 @@ def _serve(shape: str, size: int, target: str, wall: bool) -> None:
     input) as a line of JSON, until stdin ends."""
     clock = time.perf_counter if wall else time.process_time
     engine = Engine()
-    chain = pipeline.for_context(pipeline.load(pipeline_path(target)), {}, model_may_ask=False)  # no product line
-    for step in chain.steps:
+    steps = chain(target)
+    for step in steps.steps:
         engine.compile(step.stylesheet)
     with tempfile.TemporaryDirectory() as tmp:
         identity = Path(tmp) / "identity.xsl"
@@ -103,7 +114,7 @@ def _serve(shape: str, size: int, target: str, wall: bool) -> None:
         model = write_model(size, Path(tmp) / f"{shape}-{size}.xmi", shape, MIDDLEWARE[target])
         print("ready", flush=True)
         for _ in sys.stdin:
-            print(json.dumps(_time_stages(engine, chain, model, clock, identity)), flush=True)
+            print(json.dumps(_time_stages(engine, steps, model, clock, identity)), flush=True)
 
 
 def _ask(child: subprocess.Popen, err, shape: str, size: int, request: str | None) -> str:
