@@ -36,14 +36,27 @@
        hold one child per instance, and each instance asks) -->
   <xsl:key name="fp:stereotypes" match="pim:stereotype" use="generate-id(..)"/>
 
-  <!-- the robomda stereotype $name applied to $e (the first, if applied twice) -->
+  <!-- the robomda stereotype $name applied to $e (the first, if applied
+       twice), or the stereotype of a tool's own profile that stands for it
+       (@means: RobotML «Software» for «Activity», xslt/import/dialects.xml) -->
   <xsl:function name="f:stereotype" as="element(pim:stereotype)?">
     <xsl:param name="element" as="element()?"/>
     <xsl:param name="name" as="xs:string"/>
     <xsl:sequence select="(if (empty($element)) then ()
                            else if (root($element) instance of document-node())
                            then key('fp:stereotypes', generate-id($element), root($element))
-                           else $element/pim:stereotype)[@name eq $name][f:is-robomda-profile(@profile, @profile-uri)][1]"/>
+                           else $element/pim:stereotype)[(@name eq $name and f:is-robomda-profile(@profile, @profile-uri))
+                                                         or @means eq $name][1]"/>
+  </xsl:function>
+
+  <!-- tag $tag of stereotype application $stereotype: of a robomda
+       stereotype, the tag of that name; of a tool's stereotype that
+       stands for one (@means), the tag that stands for $tag -->
+  <xsl:function name="f:stereotype-tag" as="element(pim:tag)?">
+    <xsl:param name="stereotype" as="element(pim:stereotype)?"/>
+    <xsl:param name="tag" as="xs:string"/>
+    <xsl:sequence select="(if ($stereotype/@means) then $stereotype/pim:tag[@means eq $tag]
+                           else $stereotype/pim:tag[@name eq $tag])[1]"/>
   </xsl:function>
 
   <!-- a default value as written in a model, without one pair of enclosing

@@ -178,6 +178,8 @@
     <xsl:param name="root" as="element()" tunnel="yes"/>
     <pim:class id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}"
         abstract="{fp:bool(@isAbstract, false())}" active="{fp:bool(@isActive, false())}">
+      <!-- a component in its tool's own profile (dialects.xsl) -->
+      <xsl:sequence select="fp:dialect-component(.)"/>
       <xsl:call-template name="tp:classifier-body"/>
       <xsl:apply-templates select="fp:owned-packageables(.)" mode="mp:packageable"/>
     </pim:class>
@@ -186,6 +188,8 @@
   <xsl:template match="*[@x:type eq 'Interface']" mode="mp:packageable" as="element(pim:interface)">
     <xsl:param name="root" as="element()" tunnel="yes"/>
     <pim:interface id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
+      <!-- the communication pattern it binds in its tool's profile -->
+      <xsl:sequence select="fp:pattern-attributes(.)"/>
       <xsl:call-template name="tp:classifier-body"/>
       <xsl:apply-templates select="fp:owned-packageables(.)" mode="mp:packageable"/>
     </pim:interface>
@@ -312,6 +316,8 @@
     <xsl:variable name="properties" as="element()*" select="ownedAttribute[not(@x:type = 'Port')]"/>
     <xsl:variable name="parts" as="element()*"
         select="if (fp:meta(.) = ('Class', 'Component')) then $properties[fp:is-part(.)] else ()"/>
+    <!-- an interface's datum given by the pattern it binds (dialects.xsl) -->
+    <xsl:sequence select="if (fp:meta(.) eq 'Interface') then fp:pattern-datum(., $root) else ()"/>
     <xsl:apply-templates select="$properties except $parts" mode="mp:feature"/>
     <xsl:apply-templates select="(ownedAttribute | ownedPort)[@x:type eq 'Port']" mode="mp:feature"/>
     <xsl:for-each select="$parts">
@@ -374,8 +380,12 @@
     <xsl:variable name="t-meta" as="xs:string?" select="$typed[name() eq 'type-metaclass']/string()"/>
     <xsl:choose>
       <xsl:when test="empty($typed[name() = ('type', 'type-name')])">
-        <xsl:if test="$meta ne 'Port' or empty(fp:exposed($e, 'provided') | fp:exposed($e, 'required')
-                                              | key('fp:dep-by-client', fp:id($e)))">
+        <!-- not of a port of a class its tool's profile says is no
+             component (a Papyrus for Robotics activity's ports are untyped
+             by design: they stand for the component's ports they join) -->
+        <xsl:if test="($meta ne 'Port' or empty(fp:exposed($e, 'provided') | fp:exposed($e, 'required')
+                                               | key('fp:dep-by-client', fp:id($e))))
+                      and not($meta eq 'Port' and fp:dialect-says-component($e/..) = false())">
           <xsl:sequence select="f:warn('IMP101', fp:id($e), $what || ' has no type'
               || (if ($meta eq 'Port') then ': no data flows through it' else ': no target generates it')
               || ' (give it a type)')"/>
@@ -397,14 +407,26 @@
     </xsl:choose>
   </xsl:template>
 
-  <!-- a composite property typed by a class or component: a part -->
+  <!-- a property typed by a class or component is a part when it is
+       composite (UML's way), or when a connector of its owner ends on a
+       port of it (partWithPort), or when its owner and its type are both
+       components in a dialect's profile (RobotML draws a system's parts
+       with no aggregation) -->
   <xsl:function name="fp:is-part" as="xs:boolean">
     <xsl:param name="item" as="element()"/>
     <xsl:variable name="type" as="element()?" select="fp:type-element($item)"/>
     <xsl:variable name="href-type" as="element()?" select="$item/type[@href][1]"/>
-    <xsl:sequence select="$item/@aggregation = 'composite' and exists(($type, $href-type))
-        and (fp:meta(($type, $href-type)[1]) = ('Class', 'Component'))"/>
+    <xsl:sequence select="exists(($type, $href-type))
+        and (fp:meta(($type, $href-type)[1]) = ('Class', 'Component'))
+        and not(fp:dialect-says-component($item) = false() or ($type ! fp:dialect-says-component(.)) = false())
+        and ($item/@aggregation = 'composite'
+             or exists(key('fp:end-by-part', fp:id($item), root($item)))
+             or (($type ! fp:dialect-says-component(.)) and fp:dialect-says-component($item/..)))"/>
   </xsl:function>
+
+  <!-- connector ends by the part they name (partWithPort) -->
+  <xsl:key name="fp:end-by-part" match="*[@x:type eq 'Connector']/end[@partWithPort or partWithPort]"
+      use="fp:ref-ids(., 'partWithPort')"/>
 
   <!-- the interfaces an InterfaceRealization or Realization realizes -->
   <xsl:function name="fp:realized-interfaces" as="element()*">
@@ -532,11 +554,18 @@
       <xsl:attribute name="conjugated" select="fp:bool(@isConjugated, false())"/>
       <xsl:attribute name="service" select="fp:bool(@isService, true())"/>
       <xsl:attribute name="behavior" select="fp:bool(@isBehavior, false())"/>
+      <!-- the direction its tool's own profile gives it (dialects.xsl) -->
+      <xsl:sequence select="fp:dialect-port(.)"/>
       <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
+      <!-- a service port of a dialect: its type is the interface it
+           provides or requires, as the port's kind tag says -->
+      <xsl:variable name="service-kind" as="xs:string?" select="fp:dialect-service-kind(.)"/>
+      <xsl:variable name="service-type" as="element()?" select="fp:type-element(.)[@x:type eq 'Interface']"/>
       <xsl:variable name="provided" as="element()*"
           select="fp:exposed(., 'provided') ! fp:interface-of(.),
                   fp:targets(., 'provided')[@x:type eq 'Interface'],
-                  $provided-deps ! fp:realized-interfaces(.)"/>
+                  $provided-deps ! fp:realized-interfaces(.),
+                  $service-type[$service-kind eq 'provided']"/>
       <xsl:for-each select="distinct-values($provided ! fp:id(.))">
         <xsl:variable name="interface" as="xs:string" select="."/>
         <pim:provided interface="{$interface}">
@@ -549,7 +578,8 @@
       <xsl:variable name="required" as="element()*"
           select="fp:exposed(., 'required') ! fp:interface-of(.),
                   fp:targets(., 'required')[@x:type eq 'Interface'],
-                  $required-deps ! fp:used-interfaces(.)"/>
+                  $required-deps ! fp:used-interfaces(.),
+                  $service-type[$service-kind eq 'required']"/>
       <xsl:for-each select="distinct-values($required ! fp:id(.))">
         <xsl:variable name="interface" as="xs:string" select="."/>
         <pim:required interface="{$interface}">

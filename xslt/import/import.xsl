@@ -110,6 +110,7 @@
   <xsl:include href="urdf.xsl"/>
   <xsl:include href="check.xsl"/>
   <xsl:include href="stereotypes.xsl"/>
+  <xsl:include href="dialects.xsl"/>
   <xsl:include href="application.xsl"/>
   <xsl:include href="connector-ends.xsl"/>
   <xsl:include href="platform.xsl"/>

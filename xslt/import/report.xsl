@@ -190,8 +190,10 @@
   <xsl:function name="fp:template-warnings" as="empty-sequence()">
     <xsl:param name="norm" as="document-node()"/>
     <xsl:param name="pim" as="document-node()"/>
+    <!-- not of an interface whose binding its tool's profile reads (a
+         communication pattern: dialects.xsl, fp:pattern) -->
     <xsl:for-each select="$norm/descendant::*[self::ownedTemplateSignature or self::templateBinding]/..
-                          [exists(key('fp:in-pim', fp:id(.), $pim))]">
+                          [exists(key('fp:in-pim', fp:id(.), $pim))][empty(fp:pattern(.))]">
       <xsl:variable name="parameters" as="xs:string*"
           select="ownedTemplateSignature/ownedParameter
                   ! (ownedParameteredElement, fp:targets(., 'parameteredElement'))[1]

@@ -75,6 +75,10 @@
     <pim:stereotype id="{fp:id(.)}" name="{local-name()}"
         profile="{lower-case(string(prefix-from-QName(node-name(.))))}"
         profile-uri="{namespace-uri()}">
+      <!-- a dialect's stereotype that stands for a robomda one (dialects.xsl) -->
+      <xsl:for-each select="fp:dialect-means(.)">
+        <xsl:attribute name="means" select="."/>
+      </xsl:for-each>
       <xsl:variable name="app" as="element()" select="."/>
       <xsl:for-each select="@*[namespace-uri() eq ''][not(starts-with(local-name(), 'base_'))][normalize-space()]
                             [not(fp:is-default-tag($app, local-name(), string(.)))]">
@@ -87,7 +91,12 @@
             </xsl:for-each>
           </xsl:when>
           <xsl:otherwise>
-            <pim:tag name="{local-name()}" value="{.}"/>
+            <pim:tag name="{local-name()}" value="{.}">
+              <!-- the robomda tag it stands for (dialects.xsl) -->
+              <xsl:for-each select="fp:dialect-tag-means($app, $tag)">
+                <xsl:attribute name="means" select="."/>
+              </xsl:for-each>
+            </pim:tag>
           </xsl:otherwise>
         </xsl:choose>
       </xsl:for-each>

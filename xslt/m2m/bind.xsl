@@ -21,6 +21,13 @@
            and subsystems: JOB001-JOB009, JOB030). This file: the keys, the entry, the reference checks
            and fp:binding, which puts the binding together.
 
+  Classes taken as components (bind/classes.xsl, docs/profile.md,
+  "Components drawn as classes"): a class that its tool's profile makes a
+  component (pim:class/@component), or that has ports and types a part, or
+  whose parts are typed by components, is bound as a component: the model
+  is first copied with each such class written as a pim:component
+  (@drawn-as="class"), then bound as below.
+
   What it resolves (docs/profile.md: stereotypes of profile "robomda" first,
   else the unprofiled conventions of seed 000, else defaults):
   - instances: when a composite component has parts typed by components and
@@ -84,14 +91,15 @@
 
   Errors (namespace urn:robomda:error, raised with f:fail; every BND001 /
   BND002 of the model, every BND006 / BND003 of the instances, every
-  BND009 and every port problem (BND002, BND004, BND005) of the
+  BND009 and every port problem (BND002, BND005, BND030) of the
   instantiated components at once, with f:fail-all):
     BND001  dangling reference: an id attribute points to no PIM element
     BND002  a port is typed by, provides or requires a missing interface
     BND003  unknown middleware name (names the ExecutionEnvironment); a
             Middleware stereotype without kind means the profile default
             (xslt/import/profile-defaults.xml: OROCOS)
-    BND004  an interface used by a port carries no datum (no attribute)
+    BND004  (warning, bind/ports.xsl) an interface used by a port carries no
+            datum (no attribute) and no operation: the port is left out
     BND005  an interface used by a port carries several data (attributes)
     BND006  an instance is deployed to no execution environment and the model
             has several (a model with none runs every instance in a default
@@ -116,9 +124,13 @@
     BND016  (warning) a property of a composite promotes the property of no part
     BND017  a property of a composite names the properties of several parts
     BND018  a part sets a value on a property its type does not have
+    BND030  a port's direction in its tool's profile is none of in, out,
+            inout (bind/ports.xsl)
   Notes: SUB030 an «Alternative» component that no part instantiates is
   not generated (xslt/check/substitute.xsl checks it).
-  Warnings: BND028 the model draws no execution environment: its instances
+  Warnings: BND029 an inout port of a tool's profile, generated as an
+  output and an input (bind/ports.xsl).
+  BND028 the model draws no execution environment: its instances
   run in one default process per host (bind/instances.xsl), named once,
   on the first instance, with how to model the platform.
   Of the hardware platform (bind/devices.xsl): BND010 a Robot tag dof that
@@ -161,12 +173,14 @@
   <xsl:include href="bind/devices.xsl"/>
   <xsl:include href="bind/runtime.xsl"/>
   <xsl:include href="bind/jobs.xsl"/>
+  <xsl:include href="bind/classes.xsl"/>
 
   <xsl:output method="xml" indent="no" encoding="UTF-8"/>
 
   <xsl:mode on-no-match="shallow-copy"/>
   <xsl:mode name="m:bind" on-no-match="shallow-copy"/>
   <xsl:mode name="mp:bind-indented" on-no-match="fail"/>
+  <xsl:mode name="mp:bind-document" on-no-match="fail"/>
 
   <xsl:key name="fp:id" match="*[@id]" use="@id"/>
   <xsl:key name="fp:part-by-type" match="pim:part" use="@type"/>
@@ -199,6 +213,20 @@
        same bytes with no template per node. Any other input takes the
        general way. -->
   <xsl:template match="/" as="document-node()">
+    <!-- classes that are components (bind/classes.xsl) are bound as
+         components: the model is bound with them written so -->
+    <xsl:variable name="promoted" as="element(pim:class)*" select="pim:model ! fp:promoted-classes(.)"/>
+    <xsl:choose>
+      <xsl:when test="exists($promoted)">
+        <xsl:apply-templates select="fp:with-classes-as-components(., $promoted)" mode="mp:bind-document"/>
+      </xsl:when>
+      <xsl:otherwise>
+        <xsl:apply-templates select="." mode="mp:bind-document"/>
+      </xsl:otherwise>
+    </xsl:choose>
+  </xsl:template>
+
+  <xsl:template match="/" mode="mp:bind-document" as="document-node()">
     <xsl:choose>
       <xsl:when test="pim:model[empty(text()[normalize-space()])]">
         <xsl:document>

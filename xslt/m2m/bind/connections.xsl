@@ -7,6 +7,7 @@
   Params:  none.  Keys: those of bind.xsl.
   Provides: fp:policy, fp:policy-of, fp:connection-name, fp:connections-from-interfaces,
            fp:connections-from-connectors.
+  Warnings: BND031 a connector joining a port that carries nothing robomda generates, left out.
   Errors:  BND007 a connector that joins nothing, BND008 an input fed twice (raised together;
            not by writers no job runs together: bind/jobs.xsl, fp:job-mates).
 -->
@@ -33,10 +34,25 @@
 
   <xsl:function name="fp:policy" as="element(pim:policy)">
     <xsl:param name="candidates" as="element()*"/>
-    <xsl:variable name="element" as="element()?" select="$candidates[exists(f:stereotype(., 'ConnectionPolicy'))][1]"/>
-    <xsl:sequence select="if (exists($element)) then fp:policy-of($element)
+    <xsl:variable name="element" as="element()?"
+        select="$candidates[exists(f:stereotype(., 'ConnectionPolicy')) or self::pim:port[@buffer]][1]"/>
+    <xsl:sequence select="if ($element/self::pim:port[@buffer] and empty(f:stereotype($element, 'ConnectionPolicy')))
+                          then fp:dialect-buffer-policy($element)
+                          else if (exists($element)) then fp:policy-of($element)
                           else if (exists($candidates[exists(f:stereotype(., 'Constant'))])) then $fp:constant-policy
                           else $fp:default-policy"/>
+  </xsl:function>
+
+  <!-- the policy of a port whose tool's profile gives it a buffer size
+       (RobotML DataFlowPort bufferSize, pim:port/@buffer): a queue of that
+       size; 1 is the default policy's one sample -->
+  <xsl:function name="fp:dialect-buffer-policy" as="element(pim:policy)">
+    <xsl:param name="port" as="element(pim:port)"/>
+    <xsl:variable name="size" as="xs:integer"
+        select="fp:integer($port/@buffer, 'bufferSize of port ''' || $port/@name || '''', $port/@id)"/>
+    <pim:policy type="{if ($size gt 1) then 'BUFFER' else 'DATA'}" size="{max((1, $size))}"
+        lock-policy="{$fp:default-policy/@lock-policy}" init="false" pull="false" topic=""
+        source="port" source-element="{$port/@id}" holder="{$port/@id}"/>
   </xsl:function>
 
   <!-- the policy of a connection that carries a configuration constant
@@ -110,6 +126,18 @@
     <xsl:variable name="joining" as="map(xs:string, xs:boolean)"
         select="map:merge(distinct-values(($pairs, $resolved/(self::fp:unresolved | self::fp:call-pair))/@connector ! string(.))
                           ! map:entry(., true()))"/>
+    <!-- the connectors that join a port carrying nothing robomda
+         generates: left out with warning BND031, never BND007 -->
+    <xsl:variable name="left-out" as="map(xs:string, xs:string)"
+        select="map:merge($resolved/self::fp:left-out[not(map:contains($joining, string(@connector)))]
+                          ! map:entry(string(@connector), string(@port)), map { 'duplicates': 'use-first' })"/>
+    <xsl:for-each select="map:keys($left-out) ! key('fp:id', ., $root)">
+      <xsl:sort select="@id"/>
+      <xsl:variable name="port" as="element()?" select="key('fp:id', $left-out(string(current()/@id)), $root)"/>
+      <xsl:sequence select="f:warn('BND031', string(@id), 'connector ''' || @name || ''' is left out: it joins port '''
+          || $port/@name || ''' of ' || $port/../@name || ', which carries nothing robomda generates ('
+          || string-join(pim:end ! fp:end-data($root, .), ', ') || '); the warnings about that port say what to add')"/>
+    </xsl:for-each>
     <!-- every promoted port delegated to nothing, every connector that
          joins nothing and every input fed twice, at once -->
     <xsl:variable name="problems" as="map(*)*">
@@ -117,7 +145,8 @@
         <xsl:sequence select="map { 'code': 'BND014', 'id': string(@connector), 'message': string(@message) }"/>
       </xsl:for-each-group>
       <xsl:for-each select="key('fp:id', distinct-values($uses/@connector), $root)
-                            [not(map:contains($joining, string(@id)))]">
+                            [not(map:contains($joining, string(@id)))]
+                            [not(map:contains($left-out, string(@id)))]">
         <xsl:sequence select="map { 'code': 'BND007', 'id': string(@id), 'message': 'connector ''' || @name
             || ''' joins no output port to an input port of the same data type ('
             || string-join(pim:end ! fp:end-data($root, .), ', ') || ')' }"/>
@@ -188,6 +217,12 @@
       <xsl:sequence select="$targets/self::fp:unresolved"/>
       <xsl:variable name="ips" as="element(fp:ip)*"
           select="$targets/self::fp:target ! key('fp:ip-by-end', @instance || '|' || @port, $work)"/>
+      <!-- an end on a port that carries nothing robomda generates (no data
+           port, no service port: its interface has no datum, BND004, or is
+           not in the model) leaves the connector out, with a warning -->
+      <xsl:for-each select="$targets/self::fp:target[empty(key('fp:ip-by-end', @instance || '|' || @port, $work))][1]">
+        <fp:left-out connector="{$connection/@id}" port="{@port}"/>
+      </xsl:for-each>
       <xsl:sequence select="fp:call-pairs($connection, $prefix, $ips)"/>
       <xsl:for-each select="$ips[not(@kind)][@direction eq 'out']">
         <xsl:variable name="wr" as="element(fp:ip)" select="."/>

@@ -303,7 +303,7 @@
     <xsl:variable name="element" as="xs:string?"
         select="if ($conv eq 'sample') then () else fp:conv($ee, $conv)[normalize-space(.)]"/>
     <xsl:sequence select="if (exists($type)) then ($type, 'stereotype',
-                              string(($stereo-on ! f:stereotype(., 'Activity'))[pim:tag[@name eq $tag][normalize-space(@value)]][1]/@id))
+                              string(($stereo-on ! f:stereotype(., 'Activity'))[f:stereotype-tag(., $tag)[normalize-space(@value)]][1]/@id))
                           else if (exists($classifier)) then ($classifier, 'realizing-class', fp:conv-holder($realization, $conv))
                           else if (exists($element)) then ($element, 'execution-environment', fp:conv-holder($ee, $conv))
                           else ($default, 'default', '')"/>

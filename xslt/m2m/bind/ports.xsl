@@ -7,7 +7,10 @@
   Params:  none.  Keys: those of bind.xsl.
   Provides: fp:bound-component, fp:port-interfaces, fp:data-ports, fp:port-problems,
            fp:constant («Constant»: data-port/@constant).
-  Errors:  BND002, BND004, BND005 (as data for f:fail-all), BND011.
+  Errors:  BND002, BND005, BND030 (as data for f:fail-all), BND011.
+  Warnings: BND004 a port whose interface has no datum and no operation,
+           left out; BND029 an inout port of a dialect generated as an output
+           and an input.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -62,20 +65,44 @@
     <xsl:variable name="root" as="document-node()" select="root($port[1])"/>
     <xsl:variable name="type" as="element()?" select="key('fp:id', $port/@type, $root)"/>
     <xsl:variable name="conj" as="xs:boolean" select="$port/@conjugated = ('true', '1')"/>
+    <!-- the direction a dialect's port stereotype gives (RobotML
+         DataFlowPort, SysML FlowPort: xslt/import/dialects.xml); inout
+         is a writer and a reader (fp:data-ports names the two) -->
+    <xsl:variable name="given" as="xs:string*"
+        select="if ($port/@direction eq 'inout') then ('out', 'in') else $port/@direction ! string(.)"/>
     <xsl:sequence select="
-        if ($port/pim:provided or $port/pim:required) then
+        if (exists($given) and not($port/pim:provided or $port/pim:required)
+            and ($type/self::pim:interface or fp:is-data-type($type) or (empty($type) and $port/@primitive))) then
+          ($given ! (string(($type/@id, $port/@id)[1]), .))
+        else if ($port/pim:provided or $port/pim:required) then
           ($port/pim:provided ! (string(@interface), 'out'), $port/pim:required ! (string(@interface), 'in'))
         else if ($type/self::pim:interface) then
           (string($type/@id),
-           if (($component, $realization)/pim:requires/@interface = $type/@id) then 'in'
-           else if (($component, $realization)/pim:provides/@interface = $type/@id) then 'out'
+           if (($component, $realization)/pim:requires/@interface = $type/@id) then fp:flip(fp:provided-direction($type))
+           else if (($component, $realization)/pim:provides/@interface = $type/@id) then fp:provided-direction($type)
            else if ($conj) then 'in' else 'out')
         else if ($type/self::pim:class) then
-          ($type/pim:provides ! (string(@interface), if ($conj) then 'in' else 'out'),
-           $type/pim:requires ! (string(@interface), if ($conj) then 'out' else 'in'))
+          ($type/pim:provides ! (string(@interface),
+                                 let $d := fp:provided-direction(key('fp:id', @interface, $root)) return if ($conj) then fp:flip($d) else $d),
+           $type/pim:requires ! (string(@interface),
+                                 let $d := fp:flip(fp:provided-direction(key('fp:id', @interface, $root))) return if ($conj) then fp:flip($d) else $d))
         else if (fp:is-data-type($type)) then (string($type/@id), if ($conj) then 'in' else 'out')
         else if (empty($type) and $port/@primitive) then (string($port/@id), if ($conj) then 'in' else 'out')
         else ()"/>
+  </xsl:function>
+
+  <!-- the direction of the data at a port that provides interface $i:
+       out (seed 000: the provider writes), or what the communication
+       pattern it binds says (a Papyrus for Robotics Send: the provider
+       receives; pim:interface/@provided-direction) -->
+  <xsl:function name="fp:provided-direction" as="xs:string">
+    <xsl:param name="interface" as="element()?"/>
+    <xsl:sequence select="($interface/@provided-direction[. = ('in', 'out')], 'out')[1]"/>
+  </xsl:function>
+
+  <xsl:function name="fp:flip" as="xs:string">
+    <xsl:param name="direction" as="xs:string"/>
+    <xsl:sequence select="if ($direction eq 'in') then 'out' else 'in'"/>
   </xsl:function>
 
   <!-- true when port $p is typed by an interface that neither the
@@ -91,14 +118,19 @@
                           and not(($component, $realization)/(pim:requires | pim:provides)/@interface = $type/@id)"/>
   </xsl:function>
 
-  <!-- the problems of the data ports of port $p (BND002, BND004,
-       BND005), as maps for f:fail-all -->
+  <!-- the problems of the data ports of port $p (BND002, BND005,
+       BND030), as maps for f:fail-all -->
   <xsl:function name="fp:port-problems" as="map(*)*">
     <xsl:param name="port" as="element(pim:port)"/>
     <xsl:param name="component" as="element(pim:component)"/>
     <xsl:param name="realization" as="element(pim:class)?"/>
     <xsl:variable name="root" as="document-node()" select="root($port[1])"/>
     <xsl:variable name="pairs" as="xs:string*" select="fp:port-interfaces($port, $component, $realization)"/>
+    <xsl:if test="$port/@direction-literal">
+      <xsl:sequence select="map { 'code': 'BND030', 'id': string($port/@id), 'message': 'port ''' || $port/@name
+          || ''' of ' || $component/@name || ' has direction ''' || $port/@direction-literal || ''' ('
+          || $port/@dialect || '), which is none of in, out, inout: give it one of them' }"/>
+    </xsl:if>
     <xsl:for-each select="1 to count($pairs) idiv 2">
       <xsl:variable name="instance" as="element()?" select="key('fp:id', $pairs[2 * current() - 1], $root)"/>
       <xsl:variable name="data" as="element(pim:attribute)*" select="$instance/pim:attribute"/>
@@ -108,10 +140,10 @@
           <xsl:sequence select="map { 'code': 'BND002', 'id': string($port/@id), 'message': 'port ''' || $port/@name
               || ''' refers to ''' || $pairs[2 * current() - 1] || ''', which is not an interface' }"/>
         </xsl:when>
-        <xsl:when test="empty($data)">
-          <xsl:sequence select="map { 'code': 'BND004', 'id': string($instance/@id), 'message': 'interface ''' || $instance/@name
-              || ''' (port ''' || $port/@name || ''') carries no datum: give it one attribute' }"/>
-        </xsl:when>
+        <!-- an interface with no datum and no operation: the port is
+             left out of the bound component, with warning BND004
+             (fp:data-ports), not refused -->
+        <xsl:when test="empty($data)"/>
         <xsl:when test="count($data) gt 1">
           <xsl:sequence select="map { 'code': 'BND005', 'id': string($instance/@id), 'message': 'interface ''' || $instance/@name
               || ''' (port ''' || $port/@name || ''') carries ' || count($data)
@@ -150,6 +182,19 @@
     <xsl:sequence select="f:cpp-identifier(if ($count eq 1) then $port/@name else $port/@name || '_' || $interface/@name)"/>
   </xsl:function>
 
+  <!-- the name of data port $n of the $count of $port going $direction:
+       an inout port of a dialect is a writer and a reader, named
+       <port>_out and <port>_in -->
+  <xsl:function name="fp:data-port-name" as="xs:string">
+    <xsl:param name="port" as="element(pim:port)"/>
+    <xsl:param name="interface" as="element()?"/>
+    <xsl:param name="count" as="xs:integer"/>
+    <xsl:param name="direction" as="xs:string"/>
+    <xsl:sequence select="if ($port/@direction eq 'inout' and not($port/pim:provided or $port/pim:required))
+                          then f:cpp-identifier($port/@name || '_' || $direction)
+                          else fp:sub-port-name($port, $interface, $count)"/>
+  </xsl:function>
+
   <xsl:function name="fp:data-ports" as="element(pim:data-port)*">
     <xsl:param name="port" as="element(pim:port)"/>
     <xsl:param name="component" as="element(pim:component)"/>
@@ -157,6 +202,12 @@
     <xsl:variable name="root" as="document-node()" select="root($port[1])"/>
     <xsl:sequence select="f:fail-all(fp:port-problems($port, $component, $realization))"/>
     <xsl:variable name="pairs" as="xs:string*" select="fp:port-interfaces($port, $component, $realization)"/>
+    <xsl:if test="$port/@direction eq 'inout' and not($port/pim:provided or $port/pim:required) and exists($pairs)">
+      <xsl:sequence select="f:warn('BND029', string($port/@id), 'port ''' || $port/@name || ''' of '
+          || $component/@name || ' is inout (' || $port/@dialect || '): no target has a port that both writes and reads,'
+          || ' so it is generated as an output ''' || $port/@name || '_out'' and an input ''' || $port/@name
+          || '_in'', each connected where the connector joins a port that reads or writes the same data')"/>
+    </xsl:if>
     <xsl:variable name="name" as="xs:integer" select="count($pairs) idiv 2"/>
     <xsl:for-each select="1 to $name">
       <xsl:variable name="instance" as="element()?" select="key('fp:id', $pairs[2 * current() - 1], $root)"/>
@@ -165,17 +216,28 @@
         <xsl:when test="fp:is-data-type($instance)">
           <!-- a port typed by a data type carries that data itself: the
                type stands for the interface, the port for the datum -->
-          <pim:data-port port="{$port/@id}" name="{f:cpp-identifier($port/@name)}"
+          <pim:data-port port="{$port/@id}" name="{fp:data-port-name($port, $instance, 1, $pairs[2 * current()])}"
                          port-name="{$port/@name}" direction="{$pairs[2 * current()]}"
                          interface="{$instance/@id}" interface-name="{($instance/self::pim:port/@type-name, $instance/@name)[1]}"
                          datum="{$port/@id}" datum-name="{$port/@name}">
             <xsl:sequence select="$port/(@primitive, @type, @type-name, @lower, @upper), fp:constant($port, ())"/>
           </pim:data-port>
         </xsl:when>
+        <xsl:when test="$instance/self::pim:interface and empty($instance/pim:attribute)">
+          <xsl:sequence select="f:warn('BND004', string($port/@id), 'port ''' || $port/@name || ''' of '
+              || $component/@name || ' carries interface ''' || $instance/@name
+              || (if ($instance/@pattern)
+                  then ''', a ' || $instance/@pattern || ' of ' || $instance/@dialect
+                       || ' (request / response, action or event), which no target generates yet (Push and Send are data ports)'
+                       || ': the port is left out of the generated component and of its connections'
+                  else ''', which has no attribute (its datum) and no operation: the port is left out of the generated '
+                       || 'component and of its connections; give ''' || $instance/@name || ''' one attribute, the data it carries'
+                       || ' (or operations, for calls)'))"/>
+        </xsl:when>
         <xsl:otherwise>
           <xsl:variable name="data" as="element(pim:attribute)*" select="$instance/pim:attribute"/>
           <pim:data-port port="{$port/@id}"
-                         name="{fp:sub-port-name($port, $instance, $name)}"
+                         name="{fp:data-port-name($port, $instance, $name, $pairs[2 * current()])}"
                          port-name="{$port/@name}" direction="{$pairs[2 * current()]}"
                          interface="{$instance/@id}" interface-name="{$instance/@name}"
                          datum="{$data/@id}" datum-name="{$data/@name}">

@@ -215,13 +215,17 @@
     <!-- the default processes of a model that draws no execution
          environment, one per host (BND028): no middleware, each target
          deploys them on its own; named after the model (with the host's
-         name when there are several) -->
+         name when there are several); managed when every component in it
+         is one its tool runs as a managed node (pim:component/@managed:
+         Papyrus for Robotics) -->
     <xsl:variable name="undrawn" as="element(pim:instance)*" select="$instances[empty(@middleware)]"/>
     <xsl:variable name="several" as="xs:boolean" select="count(distinct-values($undrawn/@host)) gt 1"/>
     <xsl:for-each-group select="$undrawn" group-by="string(@host)">
       <pim:process xmi-id="{current-grouping-key()}"
                    name="{f:cpp-identifier(string-join(($model/@name, key('fp:id', current-grouping-key(), $root)[self::pim:node]/@name[$several]), '_'))}"
-                   host="{current-grouping-key()}" managed="false" default="true"/>
+                   host="{current-grouping-key()}"
+                   managed="{every $i in current-group() satisfies key('fp:id', $i/@component, $root)/@managed = 'true'}"
+                   default="true"/>
     </xsl:for-each-group>
   </xsl:function>
 

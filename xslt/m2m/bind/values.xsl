@@ -34,7 +34,7 @@
     <xsl:param name="element" as="element()?"/>
     <xsl:param name="stereo" as="xs:string"/>
     <xsl:param name="tag" as="xs:string"/>
-    <xsl:variable name="type" as="element()?" select="f:stereotype($element, $stereo)/pim:tag[@name eq $tag][1]"/>
+    <xsl:variable name="type" as="element()?" select="f:stereotype-tag(f:stereotype($element, $stereo), $tag)"/>
     <xsl:sequence select="if (empty($type)) then ()
         else if ($type/@ref = ('true', '1')) then string(key('fp:id', $type/@value, root($type))/@name)
         else string($type/@value)"/>

@@ -21,6 +21,7 @@
     fp:on-target($instance, $middleware)  whether the target takes the instance
     fp:check-targets($model, $instances, $middleware, $package, $codes)  nothing to generate,
                                  instances taken though deployed elsewhere, each one left out
+    fp:classes-with-ports-note($model)  what "nothing to generate" says of the classes with ports
     fp:kept-connection($connection, $binding, $targets)  a connection with an end in the package
     fp:psm-host-resources($host)  real-time, cores, memory and buses of a host
     fp:check-class-names($components, $code)
@@ -110,7 +111,8 @@
     <xsl:param name="codes" as="xs:string+"/>
     <xsl:if test="empty($instances)">
       <xsl:sequence select="f:fail($codes[1], $model/@id, 'nothing to generate: model ''' || $model/@name
-          || ''' has no component instance (a component with ports or a realizing class)')"/>
+          || ''' has no component instance (a component with ports or a realizing class)'
+          || fp:classes-with-ports-note($model))"/>
     </xsl:if>
     <xsl:variable name="other" as="element(pim:instance)*" select="$instances[@middleware ne $middleware]"/>
     <xsl:if test="exists($other)">
@@ -124,6 +126,26 @@
           || @middleware || ', not ' || $middleware || ': it is not part of the ' || $package
           || ' package (the ' || @middleware || ' target generates it)')"/>
     </xsl:for-each>
+  </xsl:function>
+
+  <!-- what ORO005 / ROS008 / RTM005 add about the classes with ports the
+       model has, which bind did not take as components
+       (xslt/m2m/bind/classes.xsl): each named with what it lacks -->
+  <xsl:function name="fp:classes-with-ports-note" as="xs:string">
+    <xsl:param name="model" as="element(pim:model)"/>
+    <xsl:variable name="classes" as="element(pim:class)*" select="$model/pim:application//pim:class[pim:port]"/>
+    <xsl:sequence select="if (empty($classes)) then ''
+        else '; of its ' || count($classes) || ' class' || (if (count($classes) gt 1) then 'es' else '')
+             || ' with ports, none is a component: '
+             || string-join(for $c in $classes[position() le 5]
+                            return '''' || $c/@name || ''' ('
+                                   || (if (every $p in $c/pim:port satisfies empty($p/(@type, @type-name, @primitive, @direction,
+                                                                                     pim:provided, pim:required)))
+                                       then 'its ports have no type and no direction, and it is'
+                                       else 'it is') || ' the type of no part and in no known profile)', ', ')
+             || (if (count($classes) gt 5) then ' and ' || count($classes) - 5 || ' more' else '')
+             || '; a class is a component when it is the type of a part (a property of a composite class), '
+             || 'or stereotyped as a component in its tool''s profile (docs/profile.md, section Components drawn as classes)'"/>
   </xsl:function>
 
   <!-- a connection of $binding that a PSM keeps: one of its ends is an

@@ -1,0 +1,407 @@
+"""Components drawn as classes with ports, in the modelling tools' own profiles (issue 51).
+
+The robotics modelling tools draw a component as a class with ports, stereotyped by their own
+profile. robomda reads such a class as a component when its tool's profile says so (the table
+xslt/import/dialects.xml, recognised by the profile's namespace URI), when it has ports and types a
+part, or when its parts are typed by components; the rule is bind's (xslt/m2m/bind/classes.xsl,
+docs/profile.md "Components drawn as classes"). The dialect fixtures (fixtures/cases/robotml, written
+by its make.py from the profile's public definition) have goldens on every target with every other
+case (tests/test_golden.py); this file checks what each dialect means, on the fixture and on small
+models written here in each dialect's shape.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+from pathlib import Path
+
+import pytest
+from lxml import etree
+
+from robomda.api import check, generate, import_model
+from robomda.diagnostics import Diagnostic, RobomdaError
+
+ROOT = Path(__file__).resolve().parent.parent
+ROBOTML = ROOT / "fixtures" / "cases" / "robotml"
+NS = {"p": "urn:robomda:pim:1"}
+PRIM = "pathmap://UML_LIBRARIES/UMLPrimitiveTypes.library.uml#"
+
+
+def _load_make(folder: Path):
+    spec = importlib.util.spec_from_file_location(f"make_{folder.name}", folder / "make.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_robotml_fixture_is_what_its_make_py_writes() -> None:
+    for path, text in _load_make(ROBOTML).texts().items():
+        assert path.read_text(encoding="utf-8") == text, f"{path}: run {ROBOTML / 'make.py'}"
+
+
+def _pim(model: Path, warnings: list[Diagnostic] | None = None) -> etree._Element:
+    return etree.fromstring(import_model(model, warnings=warnings if warnings is not None else []).encode("utf-8"))
+
+
+def test_robotml_classes_are_components_with_the_directions_robotml_means() -> None:
+    pim = _pim(ROBOTML / "model.xmi")
+    # the import marks the classes RobotML makes components, and the directions of their ports
+    marked = {c.get("name"): c.get("dialect") for c in pim.xpath("//p:application//p:*[@dialect][p:port or p:part]",
+                                                                    namespaces=NS)}
+    assert marked == {"Odometry": "RobotML::SensorSystem", "Planner": "RobotML::Software",
+                      "Base": "RobotML::ActuatorSystem", "Rover": "RobotML::RoboticSystem"}
+    ports = {(p.getparent().get("name"), p.get("name")): (p.get("direction"), p.get("buffer"))
+             for p in pim.xpath("//p:port", namespaces=NS)}
+    # a DataFlowPort with no direction tag is in (the enumeration's first literal): never out
+    assert ports == {("Odometry", "pose"): ("out", None), ("Planner", "pose"): ("in", "4"),
+                     ("Planner", "cmd"): ("out", None), ("Base", "cmd"): ("in", None)}
+    # bind takes them as components (drawn as classes), with the Rover's attributes as its parts
+    components = {c.get("name"): c.get("drawn-as") for c in pim.xpath("//p:application//p:component", namespaces=NS)}
+    assert components == {"Odometry": "class", "Planner": "class", "Base": "class", "Rover": "class"}
+    assert [p.get("name") for p in pim.xpath("//p:component[@name='Rover']/p:part", namespaces=NS)] == \
+        ["odometry", "planner", "base"]
+    data = {(d.getparent().get("name"), d.get("name")): d.get("direction")
+            for d in pim.xpath("//p:binding/p:bound-component/p:data-port", namespaces=NS)}
+    assert data == {("Odometry", "pose"): "out", ("Planner", "pose"): "in", ("Planner", "cmd"): "out",
+                    ("Base", "cmd"): "in"}
+    # data flows writer -> reader as RobotML means; bufferSize makes a queue of that size
+    flows = {c.get("name"): ([w.get("instance") + "." + w.get("data-port") for w in c.xpath("p:writer", namespaces=NS)],
+                             [r.get("instance") + "." + r.get("data-port") for r in c.xpath("p:reader", namespaces=NS)],
+                             c.find("p:policy", NS).get("type"), c.find("p:policy", NS).get("size"))
+             for c in pim.xpath("//p:binding/p:connection", namespaces=NS)}
+    assert flows == {"poseConn": (["odometry.pose"], ["planner.pose"], "BUFFER", "4"),
+                     "cmdConn": (["planner.cmd"], ["base.cmd"], "DATA", "1")}
+
+
+@pytest.mark.parametrize("target", ["orocos", "ros1", "ros2", "openrtm"])
+def test_robotml_fixture_generates_on_every_target(target: str, tmp_path: Path) -> None:
+    done = generate(ROBOTML / "model.xmi", tmp_path / "out", target, write=False)
+    assert not [d for d in done.warnings if d.severity == "error"]
+    files = {f.get("path"): f.text or "" for f in etree.fromstring(done.stages["text"].encode()).iter(
+        "{urn:robomda:fileset:1}file")}
+    text = "\n".join(files.values())
+    for name in ("odometry", "planner", "base"):
+        assert name in text, (target, name)
+
+
+# ------------------------------------------------------------- small models of each shape
+def _xmi(body: str, stereotypes: str = "", extra_ns: str = "") -> str:
+    return ('<?xml version="1.0" encoding="UTF-8"?>\n'
+            '<xmi:XMI xmi:version="20131001" xmlns:xmi="http://www.omg.org/spec/XMI/20131001" '
+            'xmlns:uml="http://www.eclipse.org/uml2/5.0.0/UML"' + extra_ns + '>\n'
+            '  <uml:Model xmi:id="m" name="shapes">\n' + body + '  </uml:Model>\n' + stereotypes + '</xmi:XMI>\n')
+
+
+def _class(ident: str, name: str, ports: list[tuple[str, str]], parts: list[tuple[str, str]] = (),
+           connectors: str = "") -> str:
+    owned = "".join(f'      <ownedAttribute xmi:type="uml:Port" xmi:id="{ident}_{p}" name="{p}" type="{t}" '
+                    f'aggregation="composite"/>\n' for p, t in ports)
+    owned += "".join(f'      <ownedAttribute xmi:type="uml:Property" xmi:id="{ident}_{p}" name="{p}" type="{t}"/>\n'
+                     for p, t in parts)
+    return f'    <packagedElement xmi:type="uml:Class" xmi:id="{ident}" name="{name}">\n{owned}{connectors}    </packagedElement>\n'
+
+
+def _connector(ident: str, a: tuple[str, str], b: tuple[str, str]) -> str:
+    return (f'      <ownedConnector xmi:type="uml:Connector" xmi:id="{ident}" name="{ident}">\n'
+            f'        <end xmi:type="uml:ConnectorEnd" xmi:id="{ident}a" partWithPort="{a[0]}" role="{a[1]}"/>\n'
+            f'        <end xmi:type="uml:ConnectorEnd" xmi:id="{ident}b" partWithPort="{b[0]}" role="{b[1]}"/>\n'
+            f'      </ownedConnector>\n')
+
+
+DATA = ('    <packagedElement xmi:type="uml:DataType" xmi:id="d" name="Reading">\n'
+        f'      <ownedAttribute xmi:type="uml:Property" xmi:id="d_v" name="value"><type xmi:type="uml:PrimitiveType" '
+        f'href="{PRIM}Real"/></ownedAttribute>\n    </packagedElement>\n')
+
+
+def test_plain_uml_classes_with_ports_that_type_parts_are_components(tmp_path: Path) -> None:
+    """No profile at all: a class with ports used as a part is a component, and so is the class whose
+    parts they are; the data ports' directions come from UML (a port typed by its datum writes it, a
+    conjugated one reads it)."""
+    model = tmp_path / "plain.uml"
+    model.write_text(_xmi(
+        DATA + _class("s", "Sensor", [("out", "d")])
+        + _class("f", "Filter", [("in", "d")]).replace('name="in" type="d"', 'name="in" type="d" isConjugated="true"')
+        + _class("sys", "Robot", [], [("sensor", "s"), ("filter", "f")],
+                 _connector("c1", ("sys_sensor", "s_out"), ("sys_filter", "f_in")))), encoding="utf-8")
+    pim = _pim(model)
+    assert sorted(c.get("name") for c in pim.xpath("//p:application//p:component[@drawn-as='class']",
+                                                   namespaces=NS)) == ["Filter", "Robot", "Sensor"]
+    [connection] = pim.xpath("//p:binding/p:connection", namespaces=NS)
+    assert connection.find("p:writer", NS).get("instance") == "sensor"
+    assert connection.find("p:reader", NS).get("instance") == "filter"
+    assert check(model).exit_code == 0
+
+
+def test_a_realizing_class_stays_the_atomic_code_of_its_component(tmp_path: Path) -> None:
+    """A class that realizes a component is the component's code (seed 000), never a component of its
+    own, even with ports and parts."""
+    body = (DATA + _class("code", "FilterCode", [("p", "d")])
+            + '    <packagedElement xmi:type="uml:Component" xmi:id="comp" name="Filter">\n'
+              '      <ownedAttribute xmi:type="uml:Port" xmi:id="comp_p" name="p" type="d" aggregation="composite"/>\n'
+              '      <realization xmi:type="uml:ComponentRealization" xmi:id="r" realizingClassifier="code" '
+              'abstraction="comp"/>\n    </packagedElement>\n')
+    model = tmp_path / "realized.uml"
+    model.write_text(_xmi(body), encoding="utf-8")
+    pim = _pim(model)
+    assert [c.get("name") for c in pim.xpath("//p:application//p:class", namespaces=NS)] == ["FilterCode"]
+    assert [c.get("name") for c in pim.xpath("//p:application//p:component", namespaces=NS)] == ["Filter"]
+
+
+def test_a_class_with_untyped_ports_in_no_profile_gets_oro005_naming_it(tmp_path: Path) -> None:
+    model = tmp_path / "lonely.uml"
+    model.write_text(_xmi('    <packagedElement xmi:type="uml:Class" xmi:id="c1" name="Camera">\n'
+                          '      <ownedAttribute xmi:type="uml:Port" xmi:id="p1" name="image" aggregation="composite"/>\n'
+                          '    </packagedElement>\n'), encoding="utf-8")
+    result = check(model)
+    [oro] = [d for d in result.diagnostics if d.code == "ORO005"]
+    assert result.exit_code == 1 and oro.severity == "error"
+    assert "'Camera' (its ports have no type and no direction" in oro.message
+    assert "the type of no part and in no known profile" in oro.message and "docs/profile.md" in oro.message
+
+
+ROBOTML_NS = ' xmlns:RobotML="http://Papyrus/RobotML/1"'
+
+
+def test_a_robotml_inout_port_is_a_writer_and_a_reader_with_a_warning(tmp_path: Path) -> None:
+    body = (DATA + _class("a", "Arm", [("state", "d")]) + _class("b", "Brain", [("state", "d")])
+            + _class("sys", "Robot", [], [("arm", "a"), ("brain", "b")],
+                     _connector("c1", ("sys_arm", "a_state"), ("sys_brain", "b_state"))))
+    apps = ('  <RobotML:Software xmi:id="s1" base_Class="a"/>\n  <RobotML:Software xmi:id="s2" base_Class="b"/>\n'
+            '  <RobotML:DataFlowPort xmi:id="s3" base_Port="a_state" direction="inout"/>\n'
+            '  <RobotML:DataFlowPort xmi:id="s4" base_Port="b_state" direction="out"/>\n')
+    model = tmp_path / "inout.uml"
+    model.write_text(_xmi(body, apps, ROBOTML_NS), encoding="utf-8")
+    found: list[Diagnostic] = []
+    pim = _pim(model, found)
+    [warning] = [d for d in found if d.code == "BND029"]
+    assert warning.severity == "warning" and warning.xmi_id == "a_state"
+    assert "'state_out'" in warning.message and "'state_in'" in warning.message
+    data = sorted((d.getparent().get("name"), d.get("name"), d.get("direction"))
+                  for d in pim.xpath("//p:binding/p:bound-component/p:data-port", namespaces=NS))
+    assert data == [("Arm", "state_in", "in"), ("Arm", "state_out", "out"), ("Brain", "state", "out")]
+    # the brain writes, the arm's reading half reads: the direction the model says, not inverted
+    [connection] = pim.xpath("//p:binding/p:connection", namespaces=NS)
+    assert [(w.get("instance"), w.get("data-port")) for w in connection.findall("p:writer", NS)] == [("brain", "state")]
+    assert [(r.get("instance"), r.get("data-port")) for r in connection.findall("p:reader", NS)] == [("arm", "state_in")]
+
+
+def test_an_unknown_robotml_direction_is_a_located_error(tmp_path: Path) -> None:
+    body = DATA + _class("a", "Arm", [("state", "d")])
+    apps = ('  <RobotML:Software xmi:id="s1" base_Class="a"/>\n'
+            '  <RobotML:DataFlowPort xmi:id="s3" base_Port="a_state" direction="sideways"/>\n')
+    model = tmp_path / "sideways.uml"
+    model.write_text(_xmi(body, apps, ROBOTML_NS), encoding="utf-8")
+    with pytest.raises(RobomdaError) as caught:
+        import_model(model, warnings=[])
+    [error] = [d for d in caught.value.diagnostics if d.code == "BND030"]
+    assert error.xmi_id == "a_state" and error.line and "'sideways'" in error.message
+    assert "RobotML::DataFlowPort" in error.message
+
+
+def test_a_robotml_service_port_provides_or_requires_its_interface_by_kind(tmp_path: Path) -> None:
+    iface = ('    <packagedElement xmi:type="uml:Interface" xmi:id="i" name="Reset">\n'
+             '      <ownedOperation xmi:type="uml:Operation" xmi:id="i_op" name="reset"/>\n    </packagedElement>\n')
+    body = (iface + '    <packagedElement xmi:type="uml:Class" xmi:id="a" name="Arm">\n'
+            '      <ownedAttribute xmi:type="uml:Port" xmi:id="a_srv" name="srv" type="i" aggregation="composite"/>\n'
+            '      <ownedOperation xmi:type="uml:Operation" xmi:id="a_op" name="reset"/>\n    </packagedElement>\n'
+            + _class("b", "Brain", [("cli", "i")])
+            + _class("sys", "Robot", [], [("arm", "a"), ("brain", "b")],
+                     _connector("c1", ("sys_brain", "b_cli"), ("sys_arm", "a_srv"))))
+    apps = ('  <RobotML:Software xmi:id="s1" base_Class="a"/>\n  <RobotML:Software xmi:id="s2" base_Class="b"/>\n'
+            '  <RobotML:ServicePort xmi:id="s3" base_Port="a_srv"/>\n'
+            '  <RobotML:ServicePort xmi:id="s4" base_Port="b_cli" kind="required"/>\n')
+    model = tmp_path / "service.uml"
+    model.write_text(_xmi(body, apps, ROBOTML_NS), encoding="utf-8")
+    pim = _pim(model)
+    # kind absent means provided (the enumeration's first literal)
+    assert pim.xpath("//p:port[@id='a_srv']/p:provided/@interface", namespaces=NS) == ["i"]
+    assert pim.xpath("//p:port[@id='b_cli']/p:required/@interface", namespaces=NS) == ["i"]
+    roles = {(s.getparent().get("name"), s.get("role"))
+             for s in pim.xpath("//p:binding/p:bound-component/p:service-port", namespaces=NS)}
+    assert roles == {("Arm", "provided"), ("Brain", "required")}
+    [call] = pim.xpath("//p:binding/p:call", namespaces=NS)
+    assert (call.find("p:caller", NS).get("instance"), call.find("p:provider", NS).get("instance")) == ("brain", "arm")
+
+
+def test_robotml_software_is_the_activity_when_periodic(tmp_path: Path) -> None:
+    """«Software» stands for «Activity»: its period when isPeriodic is true (the tag's default is false),
+    and its priority; a period without isPeriodic is kept in the model and named by IMP120."""
+    pim = _pim(ROBOTML / "model.xmi")
+    [activity] = pim.xpath("//p:binding/p:instance[@name='planner']/p:activity", namespaces=NS)
+    assert (activity.get("period"), activity.get("period-source"), activity.get("period-holder")) == \
+        ("0.1", "stereotype", "_rml_s_plan")
+    assert (activity.get("priority"), activity.get("priority-holder")) == ("2", "_rml_s_plan")
+    body = DATA + _class("a", "Arm", [("state", "d")])
+    apps = ('  <RobotML:Software xmi:id="s1" base_Class="a" period="5.0"/>\n'
+            '  <RobotML:DataFlowPort xmi:id="s3" base_Port="a_state" direction="out"/>\n')
+    model = tmp_path / "aperiodic.uml"
+    model.write_text(_xmi(body, apps, ROBOTML_NS), encoding="utf-8")
+    found: list[Diagnostic] = []
+    pim = _pim(model, found)
+    [warning] = [d for d in found if d.code == "IMP120"]
+    assert warning.xmi_id == "s1" and warning.line and "period 5.0" in warning.message
+    assert "isPeriodic" in warning.message and "Class 'Arm'" in warning.message
+    # the value stays in the PIM (nothing lost), and means no period
+    assert pim.xpath("//p:stereotype[@id='s1']/p:tag[@name='period']/@value", namespaces=NS) == ["5.0"]
+    assert pim.xpath("//p:binding/p:instance/p:activity/@period", namespaces=NS) == ["0"]
+
+
+# ------------------------------------------------------------- random models of each dialect's shape
+hypothesis = pytest.importorskip("hypothesis", reason="hypothesis not installed (pip install -e '.[test]')")
+from hypothesis import HealthCheck, given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+import os  # noqa: E402
+
+EXAMPLES = int(os.environ.get("ROBOMDA_HYPOTHESIS_EXAMPLES", "100")) // 4 or 1
+RANDOM = os.environ.get("ROBOMDA_HYPOTHESIS_RANDOM", "") not in ("", "0")
+SYSTEMS = ["Software", "RoboticSystem", "SensorSystem", "ActuatorSystem", "CameraSystem", "System", "Hardware"]
+
+
+@st.composite
+def robotml_systems(draw) -> tuple[str, dict[str, str]]:
+    """A RobotML system: components of the «System» family with DataFlowPorts of every direction (the tag
+    absent or written), parts with or without aggregation, connectors between parts' ports of one type.
+    Returns the file and the direction each port was drawn with ('' = no tag)."""
+    n = draw(st.integers(min_value=1, max_value=4))
+    types = ["d", "e"]
+    body = DATA + DATA.replace('"d"', '"e"').replace('"d_v"', '"e_v"').replace("Reading", "Level")
+    apps, drawn, ports_of = [], {}, {}
+    for c in range(n):
+        ports = []
+        for k in range(draw(st.integers(min_value=1, max_value=3))):
+            pid, typ = f"c{c}_p{k}", draw(st.sampled_from(types))
+            direction = draw(st.sampled_from(["", "in", "out", "inout"]))
+            ports.append((pid, typ))
+            drawn[pid] = direction
+            tags = f' direction="{direction}"' if direction else ""
+            if draw(st.booleans()):
+                tags += f' bufferSize="{draw(st.integers(min_value=0, max_value=5))}"'
+            apps.append(f'  <RobotML:DataFlowPort xmi:id="a_{pid}" base_Port="{pid}"{tags}/>\n')
+        ports_of[f"c{c}"] = ports
+        body += (f'    <packagedElement xmi:type="uml:Class" xmi:id="c{c}" name="Comp{c}">\n'
+                 + "".join(f'      <ownedAttribute xmi:type="uml:Port" xmi:id="{p}" name="p{p.split("_p")[1]}" '
+                           f'type="{t}" aggregation="composite"/>\n' for p, t in ports)
+                 + '    </packagedElement>\n')
+        stereo = draw(st.sampled_from(SYSTEMS))
+        extra = ""
+        if stereo == "Software" and draw(st.booleans()):
+            extra = f' isPeriodic="{draw(st.sampled_from(["true", "false"]))}" period="0.5"'
+        apps.append(f'  <RobotML:{stereo} xmi:id="a_c{c}" base_Class="c{c}"{extra}/>\n')
+    parts = [(f"sys_q{c}", f"c{c}", draw(st.booleans())) for c in range(n)]
+    connectors = ""
+    for k in range(draw(st.integers(min_value=0, max_value=3))):
+        a, b = draw(st.sampled_from(range(n))), draw(st.sampled_from(range(n)))
+        pa, pb = draw(st.sampled_from(ports_of[f"c{a}"])), draw(st.sampled_from(ports_of[f"c{b}"]))
+        if pa[1] == pb[1] and pa[0] != pb[0]:
+            connectors += _connector(f"k{k}", (f"sys_q{a}", pa[0]), (f"sys_q{b}", pb[0]))
+    body += ('    <packagedElement xmi:type="uml:Class" xmi:id="sys" name="Robot">\n'
+             + "".join(f'      <ownedAttribute xmi:type="uml:Property" xmi:id="{p}" name="{p[4:]}" type="{t}"'
+                       + (' aggregation="composite"' if comp else "") + '/>\n' for p, t, comp in parts)
+             + connectors + '    </packagedElement>\n')
+    apps.append('  <RobotML:RoboticSystem xmi:id="a_sys" base_Class="sys"/>\n')
+    return _xmi(body, "".join(apps), ROBOTML_NS), drawn
+
+
+@settings(max_examples=EXAMPLES, derandomize=not RANDOM, deadline=None, database=None,
+          suppress_health_check=[HealthCheck.too_slow])
+@given(robotml_systems())
+def test_random_robotml_systems_keep_every_direction(system: tuple[str, dict[str, str]]) -> None:
+    """Whatever RobotML system is drawn: robomda never ends INTERNAL; when it binds, every part is an
+    instance and every port has the data ports its direction means (no tag: in), never inverted, and
+    every connection's writers write and its readers read."""
+    text, drawn = system
+    import tempfile
+    with tempfile.TemporaryDirectory() as tmp:
+        model = Path(tmp) / "random.uml"
+        model.write_text(text, encoding="utf-8")
+        result = check(model)
+        assert result.exit_code in (0, 1), [d.format() for d in result.diagnostics]
+        assert not [d for d in result.diagnostics if d.code == "INTERNAL"]
+        try:
+            pim = _pim(model)
+        except RobomdaError as caught:
+            # a connector that joins two writers or two readers is the model's error, located
+            assert {d.code for d in caught.diagnostics if d.severity == "error"} <= {"BND007", "BND008"}, \
+                [d.format() for d in caught.diagnostics]
+            return
+    want = {"": ["in"], "in": ["in"], "out": ["out"], "inout": ["in", "out"]}
+    got: dict[str, list[str]] = {}
+    for d in pim.xpath("//p:binding/p:bound-component/p:data-port", namespaces=NS):
+        got.setdefault(d.get("port"), []).append(d.get("direction"))
+    assert {p: sorted(v) for p, v in got.items()} == {p: want[v] for p, v in drawn.items()}
+    assert len(pim.xpath("//p:binding/p:instance", namespaces=NS)) == len(
+        pim.xpath("//p:component[@name='Robot']/p:part", namespaces=NS))
+    for connection in pim.xpath("//p:binding/p:connection", namespaces=NS):
+        for w in connection.findall("p:writer", NS):
+            assert drawn[w.get("port")] in ("out", "inout")
+        for r in connection.findall("p:reader", NS):
+            assert drawn[r.get("port")] in ("", "in", "inout")
+
+
+# ------------------------------------------------------------- Papyrus for Robotics
+P4R = ROOT / "fixtures" / "cases" / "p4r"
+
+
+def test_p4r_fixture_is_what_its_make_py_writes() -> None:
+    for path, text in _load_make(P4R).texts().items():
+        assert path.read_text(encoding="utf-8") == text, f"{path}: run {P4R / 'make.py'}"
+
+
+def test_p4r_components_services_and_patterns_mean_what_papyrus_for_robotics_means() -> None:
+    found: list[Diagnostic] = []
+    pim = _pim(P4R / "model.xmi", found)
+    # no warning about what the dialect reads: the activities' untyped ports, the services' bindings
+    assert not [d for d in found if d.code in ("IMP101", "IMP118", "BND004", "BND007")], [d.format() for d in found]
+    # component definitions are components; activities, services and parameter blocks never
+    components = sorted(c.get("name") for c in pim.xpath("//p:application//p:component", namespaces=NS))
+    assert components == ["Camera", "Detector", "Logger", "System"]
+    # the services carry the pattern's argument as their datum
+    patterns = {i.get("name"): (i.get("pattern"), i.get("provided-direction"),
+                                [a.get("type-name") for a in i.findall("p:attribute", NS)])
+                for i in pim.xpath("//p:interface", namespaces=NS)}
+    assert patterns == {"P_Image": ("Push", "out", ["Image"]), "S_Boxes": ("Send", "in", ["Boxes"])}
+    # Push provided publishes, required subscribes; Send required sends, provided receives
+    data = {(d.getparent().get("name"), d.get("name")): d.get("direction")
+            for d in pim.xpath("//p:binding/p:bound-component/p:data-port", namespaces=NS)}
+    assert data == {("Camera", "image"): "out", ("Detector", "image"): "in", ("Detector", "boxes"): "out",
+                    ("Logger", "boxes"): "in"}
+    flows = {c.get("name"): (c.find("p:writer", NS).get("instance"), c.find("p:reader", NS).get("instance"))
+             for c in pim.xpath("//p:binding/p:connection", namespaces=NS)}
+    assert flows == {"Connects1": ("camera", "detector"), "Connects2": ("detector", "logger")}
+    # the parameter blocks' attributes are the components' properties; the activity instance is none
+    camera = pim.xpath("//p:component[@name='Camera']", namespaces=NS)[0]
+    assert [a.get("name") for a in camera.findall("p:attribute", NS)] == ["rate"]
+    assert [a.get("name") for a in pim.xpath("//p:component[@name='Detector']/p:attribute", namespaces=NS)] == \
+        ["threshold"]
+    # its users run managed (lifecycle) nodes: the default process is managed
+    [process] = pim.xpath("//p:binding/p:process", namespaces=NS)
+    assert process.get("managed") == "true"
+
+
+@pytest.mark.parametrize("target", ["orocos", "ros1", "ros2", "openrtm"])
+def test_p4r_fixture_generates_on_every_target(target: str, tmp_path: Path) -> None:
+    done = generate(P4R / "model.xmi", tmp_path / "out", target, write=False)
+    files = {f.get("path"): f.text or "" for f in etree.fromstring(done.stages["text"].encode()).iter(
+        "{urn:robomda:fileset:1}file")}
+    text = "\n".join(files.values())
+    for name in ("camera", "detector", "logger", "threshold"):
+        assert name in text, (target, name)
+    if target == "ros2":
+        # managed: the components are lifecycle nodes
+        assert "rclcpp_lifecycle" in text
+
+
+def test_a_p4r_query_service_is_left_out_with_a_warning_naming_its_pattern(tmp_path: Path) -> None:
+    text = (P4R / "model.xmi").read_text(encoding="utf-8")
+    # the Send becomes a Query: request / response, which no target generates yet
+    text = text.replace("_6uKNsCanEeiurq-kTHMlgA", "_5u2FwCanEeiurq-kTHMlgA").replace('name="S_Boxes"', 'name="Q_Boxes"')
+    model = tmp_path / "query.uml"
+    model.write_text(text, encoding="utf-8")
+    found: list[Diagnostic] = []
+    pim = _pim(model, found)
+    warnings = [d for d in found if d.code == "BND004"]
+    assert {d.xmi_id for d in warnings} == {"_p4r_det_boxes", "_p4r_log_boxes"}
+    assert all("a Query of Papyrus for Robotics::ServiceDefinition" in d.message for d in warnings)
+    assert [d.code for d in found if d.code == "BND031"] == ["BND031"]
+    assert [c.get("name") for c in pim.xpath("//p:binding/p:connection", namespaces=NS)] == ["Connects1"]

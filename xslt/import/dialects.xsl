@@ -1,0 +1,227 @@
+<?xml version="1.0" encoding="UTF-8"?>
+<!--
+  xslt/import/dialects.xsl - components drawn as classes with ports in a
+  modelling tool's own profile (RobotML ...), read in that profile's terms.
+
+  Reads:   the normalised XMI's stereotype applications (key
+           fp:stereotype-by-base, xmi-common.xsl) and the table
+           dialects.xml beside this file (which profile, by namespace URI,
+           says what).
+  Writes:  attributes and children of the PIM elements application.xsl
+           makes (schemas/pim/1/pim.xsd):
+           - pim:class/@component="true" and @dialect, when a stereotype
+             of a known dialect marks the class as a component (bind
+             takes such a class as a component: xslt/m2m/bind.xsl,
+             "Classes taken as components");
+           - pim:port/@direction (in, out, inout) and @dialect, from the
+             dialect's data-port stereotype and its direction tag (its
+             default when the tag is absent); pim:port/@buffer from its
+             buffer-size tag;
+           - pim:provided / pim:required of a port stereotyped by the
+             dialect's service port, for the interface typing the port,
+             by its kind tag (its default when absent).
+  Params:  none.
+  Errors:  none raised; a direction or kind literal the table does not
+           know is written as it is (@direction-literal) and the bind
+           stage reports it (BND030).
+-->
+<xsl:stylesheet version="3.0"
+    xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
+    xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:f="urn:robomda:xslt:function"
+    xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:d="urn:robomda:dialects"
+    xmlns:pim="urn:robomda:pim:1"
+    xmlns:x="urn:robomda:import:xmi"
+    exclude-result-prefixes="#all">
+
+  <xsl:variable name="fp:dialects" as="element(d:dialect)*" select="doc('dialects.xml')/d:dialects/d:dialect"/>
+
+  <!-- the dialect whose namespace URI pattern matches stereotype
+       application $app -->
+  <xsl:function name="fp:dialect" as="element(d:dialect)?">
+    <xsl:param name="app" as="element()"/>
+    <xsl:variable name="uri" as="xs:string" select="namespace-uri($app)"/>
+    <xsl:sequence select="if ($uri = ('', 'urn:robomda:import:xmi')) then ()
+                          else $fp:dialects[matches($uri, @uri)][1]"/>
+  </xsl:function>
+
+  <!-- the stereotype applications on $e that a dialect knows, each with
+       its dialect: (application, dialect) pairs flattened -->
+  <xsl:function name="fp:dialect-apps" as="element()*">
+    <xsl:param name="e" as="element()"/>
+    <xsl:for-each select="key('fp:stereotype-by-base', fp:id($e), root($e))">
+      <xsl:variable name="dialect" as="element(d:dialect)?" select="fp:dialect(.)"/>
+      <xsl:if test="exists($dialect)">
+        <xsl:sequence select="., $dialect"/>
+      </xsl:if>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- @component and @dialect of the pim:class made from class $e: true
+       when a stereotype of a dialect's component list is applied to it,
+       false when one of its not-component list is (none: bind's rule
+       decides) -->
+  <xsl:function name="fp:dialect-component" as="attribute()*">
+    <xsl:param name="e" as="element()"/>
+    <xsl:variable name="pairs" as="element()*" select="fp:dialect-apps($e)"/>
+    <xsl:variable name="hit" as="xs:integer?"
+        select="(for $i in 1 to count($pairs) idiv 2
+                 return $i[local-name($pairs[2 * $i - 1])
+                           = tokenize(string-join($pairs[2 * $i]/(d:component | d:not-component)/@stereotypes, ' '))])[1]"/>
+    <xsl:if test="exists($hit)">
+      <xsl:variable name="dialect" as="element(d:dialect)" select="$pairs[2 * $hit]"/>
+      <xsl:variable name="stereotype" as="xs:string" select="local-name($pairs[2 * $hit - 1])"/>
+      <xsl:variable name="component" as="xs:boolean" select="$stereotype = tokenize($dialect/d:component/@stereotypes)"/>
+      <xsl:attribute name="component" select="$component"/>
+      <xsl:attribute name="dialect" select="$dialect/@name || '::' || $stereotype"/>
+      <xsl:if test="$component and exists($dialect/d:managed)">
+        <xsl:attribute name="managed" select="'true'"/>
+      </xsl:if>
+      <xsl:if test="$stereotype = tokenize($dialect/d:parameters/@stereotypes)">
+        <xsl:attribute name="parameters" select="'true'"/>
+      </xsl:if>
+    </xsl:if>
+  </xsl:function>
+
+  <!-- true when $e (a class or a property) is a component (a class) in
+       its dialect, false when it is never one nor a part, () when no
+       dialect says -->
+  <xsl:function name="fp:dialect-says-component" as="xs:boolean?">
+    <xsl:param name="e" as="element()"/>
+    <xsl:sequence select="fp:dialect-component($e)[local-name() eq 'component'] ! xs:boolean(.)"/>
+  </xsl:function>
+
+  <!-- the attributes of the pim:port made from port $e that its dialect's
+       data-port stereotype gives: @direction (or @direction-literal for a
+       literal the table does not know), @buffer, @dialect -->
+  <xsl:function name="fp:dialect-port" as="attribute()*">
+    <xsl:param name="e" as="element()"/>
+    <xsl:variable name="pairs" as="element()*" select="fp:dialect-apps($e)"/>
+    <xsl:variable name="i" as="xs:integer?"
+        select="(for $i in 1 to count($pairs) idiv 2
+                 return $i[exists($pairs[2 * $i]/d:data-port[@stereotype eq local-name($pairs[2 * $i - 1])])])[1]"/>
+    <xsl:if test="exists($i)">
+      <xsl:variable name="app" as="element()" select="$pairs[2 * $i - 1]"/>
+      <xsl:variable name="dialect" as="element(d:dialect)" select="$pairs[2 * $i]"/>
+      <xsl:variable name="rule" as="element(d:data-port)" select="$dialect/d:data-port[@stereotype eq local-name($app)][1]"/>
+      <xsl:variable name="literal" as="xs:string" select="(fp:tag-literal($app, $rule/@tag), string($rule/@default))[1]"/>
+      <xsl:variable name="direction" as="xs:string?"
+          select="$rule/d:literal[lower-case(@name) eq lower-case($literal)][1]/@direction"/>
+      <xsl:attribute name="{if (exists($direction)) then 'direction' else 'direction-literal'}"
+          select="($direction, $literal)[1]"/>
+      <xsl:attribute name="dialect" select="$dialect/@name || '::' || local-name($app)"/>
+      <xsl:for-each select="$dialect/d:policy[@stereotype eq local-name($app)][1] ! fp:tag-literal($app, @tag)">
+        <xsl:attribute name="buffer" select="."/>
+      </xsl:for-each>
+    </xsl:if>
+  </xsl:function>
+
+  <!-- the robomda stereotype application $app stands for in its dialect
+       (a means element of dialects.xml: RobotML «Software» is an
+       «Activity», its period and priority tags the same) -->
+  <xsl:function name="fp:dialect-means" as="xs:string?">
+    <xsl:param name="app" as="element()"/>
+    <xsl:sequence select="fp:dialect($app)/d:means[@stereotype eq local-name($app)][1]/@robomda ! string(.)"/>
+  </xsl:function>
+
+  <!-- the robomda tag that tag $tag of application $app stands for (a
+       tag element of its dialect's means element), when its condition
+       (@when: a boolean tag of the same application, false when absent)
+       holds; IMP120 when the tag is written and the condition does not
+       hold: it is kept in the PIM and means nothing -->
+  <xsl:function name="fp:dialect-tag-means" as="xs:string?">
+    <xsl:param name="app" as="element()"/>
+    <xsl:param name="tag" as="xs:string"/>
+    <xsl:variable name="rule" as="element(d:tag)?"
+        select="fp:dialect($app)/d:means[@stereotype eq local-name($app)][1]/d:tag[@name eq $tag][1]"/>
+    <xsl:choose>
+      <xsl:when test="empty($rule)"/>
+      <xsl:when test="empty($rule/@when) or lower-case(string(fp:tag-literal($app, $rule/@when))) = ('true', '1')">
+        <xsl:sequence select="string($rule/@means)"/>
+      </xsl:when>
+      <xsl:otherwise>
+        <xsl:sequence select="f:warn('IMP120', fp:id($app), local-name($app) || ' of ' || string-join((fp:base-ids($app) ! fp:element($app, .))[1] ! fp:label(.), '')
+            || ' gives ' || $tag || ' ' || fp:tag-literal($app, $tag) || ' but ' || $rule/@when
+            || ' is not true: ' || $rule/../../@name || ' does not use the ' || $tag || ', so robomda does not either'
+            || ' (set ' || $rule/@when || ' to true to use it)')"/>
+      </xsl:otherwise>
+    </xsl:choose>
+  </xsl:function>
+
+  <!-- the communication pattern interface $e binds, when its dialect's
+       service-definition stereotype is applied to it: by the id its
+       template binding's signature names (an href into the tool's
+       library, or an id of the model), else by its name's prefix -->
+  <xsl:function name="fp:pattern" as="element(d:pattern)?">
+    <xsl:param name="e" as="element()"/>
+    <xsl:variable name="pairs" as="element()*" select="fp:dialect-apps($e)"/>
+    <xsl:variable name="rules" as="element(d:service-definition)*"
+        select="for $i in 1 to count($pairs) idiv 2
+                return $pairs[2 * $i]/d:service-definition[@stereotype eq local-name($pairs[2 * $i - 1])]"/>
+    <xsl:variable name="signature" as="xs:string*"
+        select="$e/templateBinding/signature/@href ! replace(., '^.*#', ''), $e/templateBinding ! fp:ref-ids(., 'signature')"/>
+    <xsl:sequence select="($rules/d:pattern[@signature = $signature],
+                           $rules/d:pattern[starts-with($e/@name, @prefix)])[1]"/>
+  </xsl:function>
+
+  <!-- @pattern, @provided-direction and @dialect of the pim:interface made
+       from interface $e (fp:pattern) -->
+  <xsl:function name="fp:pattern-attributes" as="attribute()*">
+    <xsl:param name="e" as="element()"/>
+    <xsl:for-each select="fp:pattern($e)">
+      <xsl:attribute name="pattern" select="@name"/>
+      <xsl:if test="@provided">
+        <xsl:attribute name="provided-direction" select="@provided"/>
+      </xsl:if>
+      <xsl:attribute name="dialect" select="../../@name || '::' || ../@stereotype"/>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- the datum of interface $e that binds a pattern carrying one (Push,
+       Send): a pim:attribute for the first argument of its template
+       binding (its parameterSubstitution's id; named and typed by the
+       actual, a data type of the model) -->
+  <xsl:function name="fp:pattern-datum" as="element(pim:attribute)?">
+    <xsl:param name="e" as="element()"/>
+    <xsl:param name="root" as="element()"/>
+    <xsl:if test="exists(fp:pattern($e)/@provided)">
+      <xsl:variable name="substitution" as="element()?" select="($e/templateBinding/parameterSubstitution)[1]"/>
+      <xsl:variable name="actual" as="element()?" select="$substitution ! fp:targets(., 'actual')[1]"/>
+      <xsl:if test="exists($actual)">
+        <pim:attribute id="{fp:id($substitution)}" name="{$actual/@name}"
+            qualified-name="{fp:qname($e, $root)}::{$actual/@name}" type="{fp:id($actual)}"
+            type-name="{$actual/@name}" type-library="local" visibility="public">
+          <xsl:if test="fp:is-primitive-like($actual)">
+            <xsl:for-each select="fp:primitive-kind('local', $actual/@name)">
+              <xsl:attribute name="primitive" select="."/>
+            </xsl:for-each>
+          </xsl:if>
+        </pim:attribute>
+      </xsl:if>
+    </xsl:if>
+  </xsl:function>
+
+  <!-- 'provided' or 'required' when port $e carries its dialect's
+       service-port stereotype: the interface typing it is so -->
+  <xsl:function name="fp:dialect-service-kind" as="xs:string?">
+    <xsl:param name="e" as="element()"/>
+    <xsl:variable name="pairs" as="element()*" select="fp:dialect-apps($e)"/>
+    <xsl:sequence select="(for $i in 1 to count($pairs) idiv 2
+                           return $pairs[2 * $i]/d:service-port[@stereotype eq local-name($pairs[2 * $i - 1])]
+                                  ! (let $literal := (fp:tag-literal($pairs[2 * $i - 1], @tag), string(@default))[1]
+                                     return (d:literal[lower-case(@name) eq lower-case($literal)]/@kind, string(@default))[1]))[1]"/>
+  </xsl:function>
+
+  <!-- the value of tag $tag of application $app as written: an attribute,
+       else a child's text; an enumeration literal given by reference
+       (an id of the model, or an href ending in #Name) is its name -->
+  <xsl:function name="fp:tag-literal" as="xs:string?">
+    <xsl:param name="app" as="element()"/>
+    <xsl:param name="tag" as="xs:string"/>
+    <xsl:variable name="value" as="xs:string?"
+        select="($app/@*[local-name() eq $tag][namespace-uri() eq ''], $app/*[local-name() eq $tag])[1]
+                ! normalize-space(if (@href) then replace(@href, '^.*#', '') else string(.))"/>
+    <xsl:sequence select="$value[. ne '']"/>
+  </xsl:function>
+</xsl:stylesheet>
