@@ -405,3 +405,135 @@ def test_a_p4r_query_service_is_left_out_with_a_warning_naming_its_pattern(tmp_p
     assert all("a Query of Papyrus for Robotics::ServiceDefinition" in d.message for d in warnings)
     assert [d.code for d in found if d.code == "BND031"] == ["BND031"]
     assert [c.get("name") for c in pim.xpath("//p:binding/p:connection", namespaces=NS)] == ["Connects1"]
+
+
+# ------------------------------------------------------------- false refusals of real files (issue 51 item 5)
+def test_components_of_one_name_in_different_packages_are_qualified(tmp_path: Path) -> None:
+    """Legal UML: two components named Camera in packages front and rear. Their instances, classes and
+    nodes are named by the qualified names (front_Camera, FrontCamera), not refused as BND009 / ORO004."""
+    body = DATA
+    for pkg in ("front", "rear"):
+        body += (f'    <packagedElement xmi:type="uml:Package" xmi:id="{pkg}" name="{pkg}">\n'
+                 f'      <packagedElement xmi:type="uml:Component" xmi:id="{pkg}_cam" name="Camera">\n'
+                 f'        <ownedAttribute xmi:type="uml:Port" xmi:id="{pkg}_p" name="image" type="d" aggregation="composite"/>\n'
+                 f'      </packagedElement>\n    </packagedElement>\n')
+    model = tmp_path / "twins.uml"
+    model.write_text(_xmi(body), encoding="utf-8")
+    pim = _pim(model)
+    assert [i.get("name") for i in pim.xpath("//p:binding/p:instance", namespaces=NS)] == ["front_Camera", "rear_Camera"]
+    for target, word in (("orocos", "class FrontCamera"), ("ros1", "class FrontCamera"), ("ros2", "class FrontCamera"),
+                         ("openrtm", "class FrontCamera")):
+        done = generate(model, tmp_path / target, target, write=False)
+        text = "\n".join(f.text or "" for f in etree.fromstring(done.stages["text"].encode()).iter(
+            "{urn:robomda:fileset:1}file"))
+        assert word in text and word.replace("Front", "Rear") in text, target
+
+
+def test_components_with_lollipops_and_sockets_and_no_system_are_generated(tmp_path: Path) -> None:
+    """Issue 51 item 4: a component diagram with components that provide and require interfaces directly
+    (no port, no composite): each gets a port per interface and one instance, wired by interface, with one
+    located warning that says so and how to draw the system."""
+    body = ('    <packagedElement xmi:type="uml:Interface" xmi:id="i" name="Scan">\n'
+            f'      <ownedAttribute xmi:type="uml:Property" xmi:id="i_v" name="range"><type xmi:type="uml:PrimitiveType" '
+            f'href="{PRIM}Real"/></ownedAttribute>\n    </packagedElement>\n'
+            '    <packagedElement xmi:type="uml:Component" xmi:id="laser" name="Laser">\n'
+            '      <interfaceRealization xmi:type="uml:InterfaceRealization" xmi:id="laser_r" client="laser" supplier="i" '
+            'contract="i"/>\n    </packagedElement>\n'
+            '    <packagedElement xmi:type="uml:Component" xmi:id="nav" name="Navigator"/>\n'
+            '    <packagedElement xmi:type="uml:Usage" xmi:id="nav_u" client="nav" supplier="i"/>\n')
+    model = tmp_path / "lollipops.uml"
+    model.write_text(_xmi(body), encoding="utf-8")
+    found: list[Diagnostic] = []
+    pim = _pim(model, found)
+    [warning] = [d for d in found if d.code == "BND032"]
+    assert warning.xmi_id == "laser" and warning.line and "'Laser', 'Navigator'" in warning.message
+    assert "draw a class or component whose parts" in warning.message
+    ports = {(p.getparent().get("name"), p.get("name"), p.get("implicit")) for p in pim.xpath("//p:port", namespaces=NS)}
+    assert ports == {("Laser", "Scan", "true"), ("Navigator", "Scan", "true")}
+    [connection] = pim.xpath("//p:binding/p:connection", namespaces=NS)
+    assert (connection.find("p:writer", NS).get("instance"), connection.find("p:reader", NS).get("instance")) == \
+        ("Laser", "Navigator")
+    assert check(model).exit_code == 0
+
+
+# ------------------------------------------------------------- UML-RT
+UMLRT = ROOT / "fixtures" / "cases" / "umlrt"
+
+
+def test_umlrt_fixture_is_what_its_make_py_writes() -> None:
+    for path, text in _load_make(UMLRT).texts().items():
+        assert path.read_text(encoding="utf-8") == text, f"{path}: run {UMLRT / 'make.py'}"
+
+
+def _message_flows(pim: etree._Element) -> dict[str, tuple[str, str, str, str]]:
+    return {c.find("p:writer", NS).get("data-port"): (c.find("p:writer", NS).get("instance"),
+                                                       c.find("p:reader", NS).get("instance"),
+                                                       c.find("p:reader", NS).get("data-port"),
+                                                       c.find("p:policy", NS).get("type"))
+            for c in pim.xpath("//p:binding/p:connection", namespaces=NS)}
+
+
+def test_umlrt_messages_received_are_inputs_sent_are_outputs_swapped_when_conjugated() -> None:
+    found: list[Diagnostic] = []
+    pim = _pim(UMLRT / "model.xmi", found)
+    # capsules are components; the top capsule the model names is the system, Spare is left beside it
+    assert [i.get("name") for i in pim.xpath("//p:binding/p:instance", namespaces=NS)] == ["sensor", "controller"]
+    data = {(d.getparent().get("name"), d.get("name")): (d.get("direction"), d.get("primitive"))
+            for d in pim.xpath("//p:binding/p:bound-component/p:data-port", namespaces=NS)}
+    # the controller's port is not conjugated: it receives the in-set (reading) and sends request;
+    # the sensor's is conjugated: the other way round
+    assert data == {("Controller", "sensor_reading"): ("in", "float64"), ("Controller", "sensor_request"): ("out", "boolean"),
+                    ("Sensor", "data_reading"): ("out", "float64"), ("Sensor", "data_request"): ("in", "boolean")}
+    # one connection per message, queued (a message must not be dropped)
+    assert _message_flows(pim) == {"data_reading": ("sensor", "controller", "sensor_reading", "BUFFER"),
+                                   "sensor_request": ("controller", "sensor", "data_request", "BUFFER")}
+    # a message with no payload is a boolean signal, said once; the runtime's ports are noted, not ports
+    [signal] = [d for d in found if d.code == "IMP121"]
+    assert signal.xmi_id == "_rt_request" and "boolean signal" in signal.message
+    assert sorted(d.xmi_id for d in found if d.code == "BND033") == ["_rt_sensor_log", "_rt_sensor_timer"]
+    assert not [d for d in found if d.code in ("IMP115", "BND020", "BND005")], [d.format() for d in found]
+
+
+@pytest.mark.parametrize("target", ["orocos", "ros1", "ros2", "openrtm"])
+def test_umlrt_fixture_generates_on_every_target(target: str, tmp_path: Path) -> None:
+    done = generate(UMLRT / "model.xmi", tmp_path / "out", target, write=False)
+    text = "\n".join(f.text or "" for f in etree.fromstring(done.stages["text"].encode()).iter(
+        "{urn:robomda:fileset:1}file"))
+    for name in ("sensor_reading", "data_request", "controller"):
+        assert name in text, (target, name)
+
+
+RSA_NS = ' xmlns:UMLRealTime="http:///schemas/UMLRealTime/_3TUzoHq6Ed2hSeAAWZznoA/119"'
+
+
+def test_rsa_rte_conjugates_by_its_rtport_tag_and_reads_sets_by_the_protocol(tmp_path: Path) -> None:
+    """RSA-RTE / RTist: no RTMessageSet, no UML isConjugated; the protocol's realized interface holds the
+    messages received, the used one those sent, and «RTPort» isConjugate swaps them."""
+    body = ('    <packagedElement xmi:type="uml:Collaboration" xmi:id="pp" name="PingPong">\n'
+            '      <interfaceRealization xmi:id="pp_r" client="pp" supplier="in" contract="in"/>\n'
+            '    </packagedElement>\n'
+            '    <packagedElement xmi:type="uml:Interface" xmi:id="in" name="PingPong">\n'
+            '      <ownedOperation xmi:id="pong" name="pong"><ownedParameter xmi:id="pong_n" name="n">'
+            f'<type xmi:type="uml:PrimitiveType" href="{PRIM}Integer"/></ownedParameter></ownedOperation>\n'
+            '    </packagedElement>\n'
+            '    <packagedElement xmi:type="uml:Interface" xmi:id="out" name="PingPong~">\n'
+            '      <ownedOperation xmi:id="ping" name="ping"><ownedParameter xmi:id="ping_n" name="n">'
+            f'<type xmi:type="uml:PrimitiveType" href="{PRIM}Integer"/></ownedParameter></ownedOperation>\n'
+            '    </packagedElement>\n'
+            '    <packagedElement xmi:type="uml:Usage" xmi:id="pp_u" client="pp" supplier="out"/>\n'
+            + _class("pinger", "Pinger", [("p", "pp")]) + _class("ponger", "Ponger", [("p", "pp")])
+            + '    <packagedElement xmi:type="uml:Class" xmi:id="top" name="Top">\n'
+              '      <ownedAttribute xmi:type="uml:Property" xmi:id="top_a" name="pinger" type="pinger" aggregation="composite"/>\n'
+              '      <ownedAttribute xmi:type="uml:Property" xmi:id="top_b" name="ponger" type="ponger" aggregation="composite"/>\n'
+            + _connector("c", ("top_a", "pinger_p"), ("top_b", "ponger_p")) + '    </packagedElement>\n')
+    apps = ('  <UMLRealTime:Protocol xmi:id="s1" base_Collaboration="pp"/>\n'
+            '  <UMLRealTime:Capsule xmi:id="s2" base_Class="pinger"/>\n  <UMLRealTime:Capsule xmi:id="s3" base_Class="ponger"/>\n'
+            '  <UMLRealTime:Capsule xmi:id="s4" base_Class="top"/>\n'
+            '  <UMLRealTime:RTPort xmi:id="s5" isConjugate="true" base_Port="ponger_p"/>\n')
+    model = tmp_path / "pingpong.emx"
+    model.write_text(_xmi(body, apps, RSA_NS), encoding="utf-8")
+    pim = _pim(model)
+    # the pinger (not conjugated) receives pong and sends ping; the conjugated ponger the other way round
+    assert _message_flows(pim) == {"p_ping": ("pinger", "ponger", "p_ping", "BUFFER"),
+                                   "p_pong": ("ponger", "pinger", "p_pong", "BUFFER")}
+    assert pim.xpath("//p:port[@id='ponger_p']/@conjugated", namespaces=NS) == ["true"]

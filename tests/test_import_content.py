@@ -310,8 +310,9 @@ def test_several_clients_in_the_ea_dialect(tmp_path: Path) -> None:
 def _nested_model(x: Xmi, *, nested: str, second: bool = False, pwp: bool = True) -> tuple[str, str]:
     """System = a: Sub (+ a2: Sub) + b: Sink; Sub = s: Sensor. Connector c1 of System joins a.s.out to b.in.
 
-    ``nested``: 'sysml' (a NestedConnectorEnd with propertyPath "a s"), 'broken' (propertyPath "b s"),
-    'uml' (partWithPort s only, a part of a part).
+    ``nested``: 'sysml' (a NestedConnectorEnd with propertyPath "a s"), 'role' (propertyPath "a s sOut": some
+    exporters end the path in the role itself), 'broken' (propertyPath "b s"), 'uml' (partWithPort s only, a
+    part of a part).
     """
     end1 = x.end("e1", "sOut", "s" if pwp else None)
     body = (x.interface("ifI", "Img")
@@ -323,8 +324,8 @@ def _nested_model(x: Xmi, *, nested: str, second: bool = False, pwp: bool = True
                           + f'<ownedConnector {x.t("Connector")} xmi:id="c1" name="c1">{end1}'
                           + x.end("e2", "kIn", "b") + "</ownedConnector>"))
     apps = ""
-    if nested in ("sysml", "broken"):
-        path = "a s" if nested == "sysml" else "b s"
+    if nested in ("sysml", "broken", "role"):
+        path = {"sysml": "a s", "broken": "b s", "role": "a s sOut"}[nested]
         if x.d == "magicdraw":  # MagicDraw: child elements, the last step also partWithPort
             steps = "".join(f'<propertyPath xmi:idref="{p}"/>' for p in path.split())
             apps = f'<sysml:NestedConnectorEnd xmi:id="nce" base_ConnectorEnd="e1">{steps}</sysml:NestedConnectorEnd>'
@@ -354,6 +355,19 @@ def test_a_nested_connector_end_joins_the_nested_instance(dialect: str, pwp: boo
     assert "a2_s.out" not in deploy
     # the stereotype was read: no IMP115 for it
     assert not [d for d in found if d.code == "IMP115"]
+
+
+@pytest.mark.parametrize("dialect", ["eclipse", "magicdraw"])
+def test_a_nested_end_whose_path_ends_in_its_role_is_followed_once(dialect: str, tmp_path: Path) -> None:
+    """Issue 51 item 5: a propertyPath that ends in the role itself is the path to the role's part, not a
+    path broken at its partWithPort (the last step followed twice)."""
+    text, _ = _nested_model(Xmi(dialect), nested="role", second=True)
+    path = _write(tmp_path, dialect, text)
+    doc, found = _import(path)
+    end = doc.xpath("//p:connector[@id='c1']/p:end[@id='e1']", namespaces=NS)[0]
+    assert (end.get("part"), end.get("path"), end.get("role")) == ("s", "a s", "sOut")
+    assert _connections(doc) == [("a_s", "b")]
+    assert not [d for d in found if d.code == "IMP110"]
 
 
 @pytest.mark.parametrize("dialect", ["eclipse", "xsi", "ea"])

@@ -188,8 +188,9 @@
   <xsl:template match="*[@x:type eq 'Interface']" mode="mp:packageable" as="element(pim:interface)">
     <xsl:param name="root" as="element()" tunnel="yes"/>
     <pim:interface id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
-      <!-- the communication pattern it binds in its tool's profile -->
-      <xsl:sequence select="fp:pattern-attributes(.)"/>
+      <!-- the communication pattern it binds in its tool's profile, or the
+           message set of a UML-RT protocol it is -->
+      <xsl:sequence select="fp:pattern-attributes(.), fp:message-attributes(.)"/>
       <xsl:call-template name="tp:classifier-body"/>
       <xsl:apply-templates select="fp:owned-packageables(.)" mode="mp:packageable"/>
     </pim:interface>
@@ -316,8 +317,11 @@
     <xsl:variable name="properties" as="element()*" select="ownedAttribute[not(@x:type = 'Port')]"/>
     <xsl:variable name="parts" as="element()*"
         select="if (fp:meta(.) = ('Class', 'Component')) then $properties[fp:is-part(.)] else ()"/>
-    <!-- an interface's datum given by the pattern it binds (dialects.xsl) -->
+    <!-- an interface's datum given by the pattern it binds, or its
+         messages when it is a message set (dialects.xsl) -->
+    <xsl:variable name="messages" as="xs:boolean" select="fp:meta(.) eq 'Interface' and exists(fp:message-dialect(.))"/>
     <xsl:sequence select="if (fp:meta(.) eq 'Interface') then fp:pattern-datum(., $root) else ()"/>
+    <xsl:sequence select="if ($messages) then fp:message-data(., $root, $href-types) else ()"/>
     <xsl:apply-templates select="$properties except $parts" mode="mp:feature"/>
     <xsl:apply-templates select="(ownedAttribute | ownedPort)[@x:type eq 'Port']" mode="mp:feature"/>
     <xsl:for-each select="$parts">
@@ -327,7 +331,7 @@
         <xsl:sequence select="fp:part-values(.)"/>
       </pim:part>
     </xsl:for-each>
-    <xsl:apply-templates select="ownedOperation" mode="mp:feature"/>
+    <xsl:apply-templates select="ownedOperation[not($messages)]" mode="mp:feature"/>
     <xsl:apply-templates select="ownedConnector[not(end/role/@href or end/partWithPort/@href)]"
         mode="mp:feature"/>
     <xsl:apply-templates select="key('fp:stray-connector', $id)[not(end/role/@href or end/partWithPort/@href)]"
@@ -534,7 +538,9 @@
          interfaces the protocol realizes are provided, those it uses are
          required; the other way round when the port is conjugated -->
     <xsl:variable name="protocol" as="element()?" select="fp:type-element(.)[@x:type eq 'Collaboration']"/>
-    <xsl:variable name="conjugated" as="xs:boolean" select="fp:bool(@isConjugated, false()) eq 'true'"/>
+    <!-- conjugated in UML, or by its tool's profile (RSA-RTE: «RTPort» isConjugate) -->
+    <xsl:variable name="conjugated" as="xs:boolean"
+        select="fp:bool(@isConjugated, false()) eq 'true' or fp:dialect-conjugated(.)"/>
     <xsl:variable name="protocol-realized" as="element()*"
         select="$protocol ! (interfaceRealization[empty(fp:ref-ids(., 'client'))]
                              | key('fp:dep-by-client', fp:id(.))[@x:type = ('InterfaceRealization', 'Realization')])"/>
@@ -551,11 +557,15 @@
     <pim:port id="{$id}" name="{@name}" qualified-name="{fp:qname(., $root)}">
       <xsl:sequence select="$typed"/>
       <xsl:attribute name="visibility" select="fp:visibility(.)"/>
-      <xsl:attribute name="conjugated" select="fp:bool(@isConjugated, false())"/>
+      <xsl:attribute name="conjugated" select="$conjugated"/>
       <xsl:attribute name="service" select="fp:bool(@isService, true())"/>
       <xsl:attribute name="behavior" select="fp:bool(@isBehavior, false())"/>
-      <!-- the direction its tool's own profile gives it (dialects.xsl) -->
+      <!-- the direction its tool's own profile gives it, or that it is the
+           runtime's service (dialects.xsl) -->
       <xsl:sequence select="fp:dialect-port(.)"/>
+      <xsl:for-each select="fp:runtime-port(.)">
+        <xsl:attribute name="runtime" select="."/>
+      </xsl:for-each>
       <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
       <!-- a service port of a dialect: its type is the interface it
            provides or requires, as the port's kind tag says -->

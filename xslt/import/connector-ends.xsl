@@ -22,7 +22,9 @@
     elements with xmi:idref), from a part of the connector's classifier to
     the part typed by the role's owner, which MagicDraw also writes as
     partWithPort (a partWithPort that is not the path's last step is added
-    to it). A tool without SysML may write only partWithPort, a part of a
+    to it); a path whose last step is the end's role itself (some
+    exporters write the port too) is the path to the role's part. A tool
+    without SysML may write only partWithPort, a part of a
     part: the path is then the one chain of parts from the connector's
     classifier down to it; none (a part a general owns, say) leaves the
     end as written, several is ambiguous.
@@ -65,7 +67,13 @@
     <xsl:variable name="pwp" as="element()?" select="fp:targets($end, 'partWithPort')[1]"/>
     <xsl:choose>
       <xsl:when test="exists($nested)">
-        <xsl:variable name="ids" as="xs:string*" select="fp:ref-ids($nested, 'propertyPath')"/>
+        <xsl:variable name="written" as="xs:string*" select="fp:ref-ids($nested, 'propertyPath')"/>
+        <!-- a path that ends in the role itself (some exporters write the
+             port as its last step) is the path to the role's part: the
+             role is not followed again -->
+        <xsl:variable name="ids" as="xs:string*"
+            select="if (count($written) gt 1 and $written[last()] = fp:ref-ids($end, 'role')) then $written[position() lt last()]
+                    else $written"/>
         <xsl:variable name="steps" as="element()*" select="$ids ! fp:element($end, .)"/>
         <xsl:sequence select="
             if (exists($nested/propertyPath/@href))

@@ -202,6 +202,112 @@
     </xsl:if>
   </xsl:function>
 
+  <!-- the dialect in which interface $e is a message set: a collaboration
+       stereotyped as its protocol (d:messages/@protocol) realizes or uses
+       it -->
+  <xsl:function name="fp:message-dialect" as="element(d:dialect)?">
+    <xsl:param name="e" as="element()"/>
+    <xsl:sequence select="(key('fp:dep-by-supplier', fp:id($e), root($e))
+                           ! fp:targets(., 'client')[@x:type eq 'Collaboration']
+                           ! (let $pairs := fp:dialect-apps(.)
+                              return for $i in 1 to count($pairs) idiv 2
+                                     return $pairs[2 * $i][d:messages/@protocol = local-name($pairs[2 * $i - 1])]))[1]"/>
+  </xsl:function>
+
+  <!-- @pattern, @provided-direction and @dialect of the pim:interface made
+       from message set $e: a port that provides it (its protocol realizes
+       it) receives its messages -->
+  <xsl:function name="fp:message-attributes" as="attribute()*">
+    <xsl:param name="e" as="element()"/>
+    <xsl:for-each select="fp:message-dialect($e)">
+      <xsl:attribute name="pattern" select="'Messages'"/>
+      <xsl:attribute name="provided-direction" select="'in'"/>
+      <xsl:attribute name="dialect" select="@name || '::' || d:messages/@protocol"/>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- the messages of message set $e, each a pim:attribute (its datum):
+       the operation's id and name, typed by its first parameter that is
+       no return (its payload); a message with no payload is a boolean
+       signal (IMP121), one with several keeps the first (IMP122) -->
+  <xsl:function name="fp:message-data" as="element(pim:attribute)*">
+    <xsl:param name="e" as="element()"/>
+    <xsl:param name="root" as="element()"/>
+    <xsl:param name="href-types" as="map(*)"/>
+    <xsl:for-each select="$e/ownedOperation">
+      <xsl:variable name="payload" as="element()*" select="ownedParameter[not(@direction = 'return')]"/>
+      <xsl:variable name="typed" as="attribute()*" select="$payload[1] ! fp:typed(., $href-types)"/>
+      <xsl:if test="empty($typed[name() = ('type', 'type-name')])">
+        <xsl:sequence select="f:warn('IMP121', fp:id(.), 'message ''' || @name || ''' of ' || fp:label($e)
+            || (if (exists($payload)) then ' has a payload of no type robomda reads' else ' has no payload')
+            || ': it is generated as a boolean signal (true on each message), a data port of its own')"/>
+      </xsl:if>
+      <xsl:if test="count($payload) gt 1">
+        <xsl:sequence select="f:warn('IMP122', fp:id(.), 'message ''' || @name || ''' of ' || fp:label($e) || ' has '
+            || count($payload) || ' parameters (' || string-join($payload/@name, ', ') || '): its payload is the first, '''
+            || $payload[1]/@name || '''; give it one parameter of a data type holding them all')"/>
+      </xsl:if>
+      <pim:attribute id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}">
+        <xsl:choose>
+          <xsl:when test="exists($typed[name() = ('type', 'type-name')])">
+            <xsl:sequence select="$typed"/>
+          </xsl:when>
+          <xsl:otherwise>
+            <xsl:attribute name="type-name" select="'Boolean'"/>
+            <xsl:attribute name="type-library" select="'uml'"/>
+            <xsl:attribute name="primitive" select="'boolean'"/>
+          </xsl:otherwise>
+        </xsl:choose>
+        <xsl:attribute name="visibility" select="'public'"/>
+      </pim:attribute>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- true when port $e is conjugated by its dialect's conjugation tag
+       (RSA-RTE's «RTPort» isConjugate) -->
+  <xsl:function name="fp:dialect-conjugated" as="xs:boolean">
+    <xsl:param name="e" as="element()"/>
+    <xsl:variable name="pairs" as="element()*" select="fp:dialect-apps($e)"/>
+    <xsl:sequence select="some $i in 1 to count($pairs) idiv 2
+                          satisfies $pairs[2 * $i]/d:conjugation[@stereotype eq local-name($pairs[2 * $i - 1])]
+                                    ! (lower-case(string(fp:tag-literal($pairs[2 * $i - 1], @tag))) = ('true', '1'))"/>
+  </xsl:function>
+
+  <!-- 'unwired' when port $e is unwired by its dialect's tag (UML-RT: an
+       SAP or SPP), 'library' when it is typed by a protocol of its
+       dialect's runtime library (Log, Timing ...): the runtime's service,
+       no port of the generated system -->
+  <xsl:function name="fp:runtime-port" as="xs:string?">
+    <xsl:param name="e" as="element()"/>
+    <xsl:variable name="pairs" as="element()*" select="fp:dialect-apps($e)"/>
+    <xsl:variable name="unwired" as="xs:boolean"
+        select="some $i in 1 to count($pairs) idiv 2
+                satisfies $pairs[2 * $i]/d:unwired[@stereotype eq local-name($pairs[2 * $i - 1])]
+                          ! (lower-case(string(fp:tag-literal($pairs[2 * $i - 1], @tag))) = ('false', '0'))"/>
+    <xsl:sequence select="if ($unwired) then 'unwired'
+        else if (some $h in $e/type/@href satisfies (some $p in $fp:dialects/d:runtime-library/@href satisfies matches($h, $p)))
+        then 'library' else ()"/>
+  </xsl:function>
+
+  <!-- true when stereotype application $app is one its dialect reads on an
+       element the PIM holds no element for (a UML-RT «Protocol» on the
+       collaboration whose message sets it gives) -->
+  <xsl:function name="fp:read-by-dialect" as="xs:boolean">
+    <xsl:param name="app" as="element()"/>
+    <xsl:sequence select="local-name($app) = (fp:dialect($app)/d:messages/@protocol)"/>
+  </xsl:function>
+
+  <!-- the name of the top of the system model $root names (a dialect's
+       top annotation: Papyrus-RT's UMLRT_Default_top / top_name); $root is
+       the model element as written (the normalised copy drops the
+       eAnnotations of tools) -->
+  <xsl:function name="fp:top-name" as="xs:string?">
+    <xsl:param name="root" as="element()"/>
+    <xsl:sequence select="($fp:dialects/d:top ! (let $rule := . return
+                           $root/*:eAnnotations[@source eq $rule/@annotation]/*:details[@key eq $rule/@key]/@value))[1]
+                          ! string(.)"/>
+  </xsl:function>
+
   <!-- 'provided' or 'required' when port $e carries its dialect's
        service-port stereotype: the interface typing it is so -->
   <xsl:function name="fp:dialect-service-kind" as="xs:string?">

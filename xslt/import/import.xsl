@@ -183,6 +183,11 @@
               <xsl:with-param name="e" select="$root"/>
             </xsl:call-template>
             <pim:application>
+              <!-- the system the model names as its top (a Papyrus-RT model's
+                   top capsule: dialects.xsl) -->
+              <xsl:for-each select="$src-model ! fp:top-name(.)">
+                <xsl:attribute name="top" select="."/>
+              </xsl:for-each>
               <xsl:apply-templates select="fp:owned-packageables($root)" mode="mp:packageable">
                 <xsl:with-param name="href-types" as="map(*)" select="$href-types" tunnel="yes"/>
                 <xsl:with-param name="root" as="element()" select="$root" tunnel="yes"/>

@@ -184,6 +184,7 @@
 
   <xsl:key name="fp:id" match="*[@id]" use="@id"/>
   <xsl:key name="fp:part-by-type" match="pim:part" use="@type"/>
+  <xsl:key name="fp:component-of-name" match="pim:component" use="string(@name)"/>
   <!-- a connector by the port of its own composite it ends on (an end without part) -->
   <xsl:key name="fp:connector-by-own-port" match="pim:connector" use="pim:end[not(@part)]/@role"/>
   <xsl:key name="fp:deployment-by-deployed" match="pim:deployment" use="tokenize(@deployed)"/>
@@ -216,9 +217,10 @@
     <!-- classes that are components (bind/classes.xsl) are bound as
          components: the model is bound with them written so -->
     <xsl:variable name="promoted" as="element(pim:class)*" select="pim:model ! fp:promoted-classes(.)"/>
+    <xsl:variable name="portless" as="element()*" select="pim:model ! fp:portless-components(., $promoted)"/>
     <xsl:choose>
-      <xsl:when test="exists($promoted)">
-        <xsl:apply-templates select="fp:with-classes-as-components(., $promoted)" mode="mp:bind-document"/>
+      <xsl:when test="exists($promoted) or exists($portless)">
+        <xsl:apply-templates select="fp:with-classes-as-components(., $promoted, $portless)" mode="mp:bind-document"/>
       </xsl:when>
       <xsl:otherwise>
         <xsl:apply-templates select="." mode="mp:bind-document"/>
@@ -344,8 +346,12 @@
     <xsl:context-item as="element(pim:model)" use="required"/>
     <xsl:variable name="root" as="document-node()" select="root(.)"/>
     <xsl:variable name="components" as="element(pim:component)*" select="pim:application//pim:component"/>
-    <xsl:variable name="tops" as="element(pim:component)*"
+    <xsl:variable name="all-tops" as="element(pim:component)*"
         select="$components[fp:is-composite(.)][empty(key('fp:part-by-type', @id, $root))]"/>
+    <!-- the top the model names (a UML-RT top capsule), when it is one -->
+    <xsl:variable name="tops" as="element(pim:component)*"
+        select="if ($all-tops[@name = current()/pim:application/@top]) then $all-tops[@name = current()/pim:application/@top]
+                else $all-tops"/>
     <!-- the processes: threads (bind/runtime.xsl) are parts of them -->
     <xsl:variable name="ees" as="element(pim:node)*" select="fp:execution-environments($root)[not(fp:is-thread(.))]"/>
     <xsl:variable name="hosts" as="element(pim:node)*" select="fp:hosts($root)"/>
@@ -509,15 +515,17 @@
           </xsl:for-each>
           <xsl:for-each select="$expansion/fp:unit">
             <xsl:try>
-              <xsl:sequence select="fp:instance(key('fp:id', @part, $root), key('fp:id', @component, $root), ., $ees, $hosts)"/>
+              <xsl:sequence select="fp:instance(key('fp:id', @part, $root), key('fp:id', @component, $root), ., $ees, $hosts, ())"/>
               <xsl:catch><xsl:sequence select="fp:caught($err:code, $err:description, $err:value)"/></xsl:catch>
             </xsl:try>
           </xsl:for-each>
         </xsl:when>
         <xsl:otherwise>
-          <xsl:for-each select="$components[not(@abstract = ('true', '1'))][pim:port or pim:realization][empty(f:stereotype(., 'Alternative'))]">
+          <xsl:variable name="instantiated" as="element(pim:component)*"
+              select="$components[not(@abstract = ('true', '1'))][pim:port or pim:realization][empty(f:stereotype(., 'Alternative'))]"/>
+          <xsl:for-each select="$instantiated">
             <xsl:try>
-              <xsl:sequence select="fp:instance((), ., (), $ees, $hosts)"/>
+              <xsl:sequence select="fp:instance((), ., (), $ees, $hosts, fp:component-name(.)[. ne current()/@name])"/>
               <xsl:catch><xsl:sequence select="fp:caught($err:code, $err:description, $err:value)"/></xsl:catch>
             </xsl:try>
           </xsl:for-each>
@@ -552,7 +560,12 @@
           <xsl:for-each select="key('fp:bc', $inst/@component, $bound-tree)/pim:data-port">
             <fp:ip instance="{$inst/@name}" port="{@port}" data-port="{@name}"
                    direction="{@direction}" interface="{@interface}"
-                   type-key="{(@primitive, @type)[1]}{fp:multiplicity-label(.)}"/>
+                   type-key="{(@primitive, @type)[1]}{fp:multiplicity-label(.)}">
+              <!-- a message of a UML-RT message set: matched by the message -->
+              <xsl:if test="fp:is-message-set(key('fp:id', @interface, root($inst)))">
+                <xsl:attribute name="message" select="@datum"/>
+              </xsl:if>
+            </fp:ip>
           </xsl:for-each>
           <!-- a service port: out where provided, in where required -->
           <xsl:for-each select="key('fp:bc', $inst/@component, $bound-tree)/pim:service-port">

@@ -31,6 +31,7 @@
     xmlns:xs="http://www.w3.org/2001/XMLSchema"
     xmlns:map="http://www.w3.org/2005/xpath-functions/map"
     xmlns:pim="urn:robomda:pim:1"
+    xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
     xmlns:mp="urn:robomda:xslt:mode:private"
     exclude-result-prefixes="#all">
@@ -66,23 +67,114 @@
                               $found | $new)"/>
   </xsl:function>
 
-  <!-- the PIM with the classes $promoted written as components -->
+  <!-- the components (and classes taken as components, $promoted) of
+       $model that provide or require interfaces directly (a lollipop and
+       a socket on the component), with no port, in a model that draws no
+       system (no part is typed by a component): each gets a port per such
+       interface (fp:implicit-ports) -->
+  <xsl:function name="fp:portless-components" as="element()*">
+    <xsl:param name="model" as="element(pim:model)"/>
+    <xsl:param name="promoted" as="element(pim:class)*"/>
+    <xsl:variable name="all" as="element()*" select="$model/pim:application//pim:component | $promoted"/>
+    <xsl:sequence select="if (some $c in $all satisfies exists(key('fp:part-by-type', $c/@id, root($model)))) then ()
+                          else $all[not(@abstract = ('true', '1'))][empty(pim:port)][pim:provides or pim:requires]"/>
+  </xsl:function>
+
+  <!-- the PIM with the classes $promoted written as components, and the
+       components $portless given their implicit ports -->
   <xsl:function name="fp:with-classes-as-components" as="document-node()">
     <xsl:param name="doc" as="document-node()"/>
     <xsl:param name="promoted" as="element(pim:class)*"/>
+    <xsl:param name="portless" as="element()*"/>
+    <xsl:if test="exists($portless)">
+      <xsl:sequence select="f:warn('BND032', string($portless[1]/@id), 'the model draws components that provide or require'
+          || ' interfaces with no port and no system using them (''' || string-join($portless/@name, ''', ''')
+          || '''): each gets a port per interface and one instance, and the instances are wired by interface (one'
+          || ' provider to its users); to say which instance talks to which, draw a class or component whose parts are'
+          || ' typed by these components and connectors between their ports (docs/profile.md, Components drawn as classes)')"/>
+    </xsl:if>
     <xsl:document>
       <xsl:apply-templates select="$doc/node()" mode="mp:promote">
         <xsl:with-param name="ids" tunnel="yes"
             select="map:merge($promoted ! map:entry(generate-id(.), true()))"/>
+        <xsl:with-param name="portless" tunnel="yes"
+            select="map:merge($portless ! map:entry(generate-id(.), true()))"/>
       </xsl:apply-templates>
     </xsl:document>
+  </xsl:function>
+
+  <!-- a component with no port that provides or requires interfaces: its
+       implicit ports, one per interface (named after it; with _in and _out
+       when it both provides and requires it), after its attributes -->
+  <xsl:template match="pim:component" mode="mp:promote" priority="1" as="element(pim:component)">
+    <xsl:param name="portless" as="map(xs:string, xs:boolean)" tunnel="yes"/>
+    <xsl:copy>
+      <xsl:copy-of select="@*"/>
+      <xsl:choose>
+        <xsl:when test="map:contains($portless, generate-id(.))">
+          <xsl:variable name="after" as="element()?"
+              select="(pim:part | pim:operation | pim:connector | pim:attribute[last()]/following-sibling::*)[1]"/>
+          <xsl:for-each select="node()">
+            <xsl:if test=". is $after">
+              <xsl:sequence select="fp:implicit-ports(..)"/>
+            </xsl:if>
+            <xsl:apply-templates select="." mode="mp:promote"/>
+          </xsl:for-each>
+          <xsl:if test="empty($after)">
+            <xsl:sequence select="fp:implicit-ports(.)"/>
+          </xsl:if>
+        </xsl:when>
+        <xsl:otherwise>
+          <xsl:apply-templates mode="mp:promote"/>
+        </xsl:otherwise>
+      </xsl:choose>
+    </xsl:copy>
+  </xsl:template>
+
+  <xsl:function name="fp:implicit-ports" as="element(pim:port)*">
+    <xsl:param name="component" as="element()"/>
+    <xsl:variable name="root" as="document-node()" select="root($component)"/>
+    <xsl:variable name="both" as="xs:string*" select="$component/pim:provides/@interface[. = ../../pim:requires/@interface]"/>
+    <xsl:for-each select="$component/(pim:provides | pim:requires)">
+      <xsl:variable name="interface" as="element()?" select="key('fp:id', @interface, $root)"/>
+      <xsl:variable name="kind" as="xs:string" select="if (self::pim:provides) then 'provided' else 'required'"/>
+      <pim:port id="robomda.port.{@id}"
+          name="{$interface/@name}{if (@interface = $both) then (if ($kind eq 'provided') then '_out' else '_in') else ''}"
+          qualified-name="{$component/@qualified-name}::{$interface/@name}" type="{@interface}"
+          type-name="{$interface/@name}" type-library="local" visibility="public" conjugated="false"
+          service="true" behavior="false" implicit="true">
+        <xsl:element name="pim:{$kind}" namespace="urn:robomda:pim:1">
+          <xsl:attribute name="interface" select="@interface"/>
+          <xsl:attribute name="via" select="@id"/>
+        </xsl:element>
+      </pim:port>
+    </xsl:for-each>
   </xsl:function>
 
   <xsl:mode name="mp:promote" on-no-match="shallow-copy"/>
 
   <xsl:template match="pim:class" mode="mp:promote" priority="1" as="element()">
     <xsl:param name="ids" as="map(xs:string, xs:boolean)" tunnel="yes"/>
+    <xsl:param name="portless" as="map(xs:string, xs:boolean)" tunnel="yes"/>
     <xsl:choose>
+      <xsl:when test="map:contains($ids, generate-id(.)) and map:contains($portless, generate-id(.))">
+        <!-- a class with no port taken as a component (its profile says so)
+             that provides or requires interfaces: a component first, then
+             given its implicit ports by the rule for components -->
+        <xsl:variable name="component" as="document-node()">
+          <xsl:document>
+            <pim:component>
+              <xsl:copy-of select="@* except (@active, @component, @parameters)"/>
+              <xsl:attribute name="drawn-as" select="'class'"/>
+              <xsl:copy-of select="node()"/>
+            </pim:component>
+          </xsl:document>
+        </xsl:variable>
+        <xsl:apply-templates select="$component/pim:component" mode="mp:promote">
+          <xsl:with-param name="ids" tunnel="yes" select="map { }"/>
+          <xsl:with-param name="portless" tunnel="yes" select="map { generate-id($component/pim:component): true() }"/>
+        </xsl:apply-templates>
+      </xsl:when>
       <xsl:when test="map:contains($ids, generate-id(.))">
         <pim:component>
           <xsl:copy-of select="@* except (@active, @component, @parameters)"/>
@@ -145,8 +237,8 @@
                                  /self::pim:class[@component = ('false', '0')][not(@parameters = ('true', '1'))])"/>
   </xsl:function>
 
-  <!-- below a class nothing else changes but nested classes -->
-  <xsl:template match="*[not(descendant::pim:class)]" mode="mp:promote" as="element()">
+  <!-- nothing else changes but classes and components -->
+  <xsl:template match="*[not(descendant::pim:class or descendant::pim:component)]" mode="mp:promote" as="element()">
     <xsl:copy-of select="."/>
   </xsl:template>
 </xsl:stylesheet>

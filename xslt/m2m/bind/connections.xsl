@@ -40,8 +40,20 @@
                           then fp:dialect-buffer-policy($element)
                           else if (exists($element)) then fp:policy-of($element)
                           else if (exists($candidates[exists(f:stereotype(., 'Constant'))])) then $fp:constant-policy
+                          else if (exists($candidates[fp:is-message-set(.)])) then fp:message-policy($candidates[fp:is-message-set(.)][1])
                           else $fp:default-policy"/>
   </xsl:function>
+
+  <!-- the policy of a connection of UML-RT messages that no
+       ConnectionPolicy configures: a queue, since a message must not be
+       dropped (its size: the dialect's, xslt/import/dialects.xml) -->
+  <xsl:function name="fp:message-policy" as="element(pim:policy)">
+    <xsl:param name="interface" as="element(pim:interface)"/>
+    <pim:policy type="BUFFER" size="{$fp:message-queue}" lock-policy="LOCK_FREE" init="false" pull="false" topic=""
+        source="interface" source-element="{$interface/@id}" holder="{$interface/@id}"/>
+  </xsl:function>
+  <xsl:variable name="fp:message-queue" as="xs:integer"
+      select="xs:integer((doc('../../import/dialects.xml')//*:messages/@size)[1])"/>
 
   <!-- the policy of a port whose tool's profile gives it a buffer size
        (RobotML DataFlowPort bufferSize, pim:port/@buffer): a queue of that
@@ -99,16 +111,22 @@
     <xsl:param name="work" as="document-node()"/>
     <xsl:variable name="root" as="document-node()" select="root($model[1])"/>
     <xsl:for-each select="$model/pim:application//pim:interface">
-      <xsl:variable name="ips" as="element(fp:ip)*" select="key('fp:ip-by-interface', @id, $work)"/>
-      <xsl:variable name="writer" as="element(fp:ip)*" select="$ips[@direction eq 'out']"/>
-      <xsl:variable name="realization" as="element(fp:ip)*" select="$ips[@direction eq 'in']"/>
-      <xsl:if test="exists($writer) and exists($realization)">
-        <pim:connection name="{fp:connection-name((), .)}" xmi-id="{@id}" interface="{@id}">
-          <xsl:sequence select="fp:policy((key('fp:id', ($writer, $realization)/@port, $root), .))"/>
-          <xsl:for-each select="$writer"><pim:writer instance="{@instance}" port="{@port}" data-port="{@data-port}"/></xsl:for-each>
-          <xsl:for-each select="$realization"><pim:reader instance="{@instance}" port="{@port}" data-port="{@data-port}"/></xsl:for-each>
-        </pim:connection>
-      </xsl:if>
+      <xsl:variable name="interface" as="element(pim:interface)" select="."/>
+      <!-- a UML-RT message set: one connection point per message -->
+      <xsl:for-each-group select="key('fp:ip-by-interface', @id, $work)" group-by="string(@message)">
+        <xsl:variable name="writer" as="element(fp:ip)*" select="current-group()[@direction eq 'out']"/>
+        <xsl:variable name="realization" as="element(fp:ip)*" select="current-group()[@direction eq 'in']"/>
+        <xsl:if test="exists($writer) and exists($realization)">
+          <xsl:variable name="message" as="element()?" select="key('fp:id', current-grouping-key(), $root)"/>
+          <pim:connection name="{if ($message) then f:cpp-identifier($interface/@name || '_' || $message/@name)
+                                 else fp:connection-name((), $interface)}"
+              xmi-id="{($message/@id, $interface/@id)[1]}" interface="{$interface/@id}">
+            <xsl:sequence select="fp:policy((key('fp:id', ($writer, $realization)/@port, $root), $interface))"/>
+            <xsl:for-each select="$writer"><pim:writer instance="{@instance}" port="{@port}" data-port="{@data-port}"/></xsl:for-each>
+            <xsl:for-each select="$realization"><pim:reader instance="{@instance}" port="{@port}" data-port="{@data-port}"/></xsl:for-each>
+          </pim:connection>
+        </xsl:if>
+      </xsl:for-each-group>
     </xsl:for-each>
   </xsl:function>
 
@@ -227,7 +245,8 @@
       <xsl:for-each select="$ips[not(@kind)][@direction eq 'out']">
         <xsl:variable name="wr" as="element(fp:ip)" select="."/>
         <xsl:for-each select="$ips[not(@kind)][@direction eq 'in'][@instance ne $wr/@instance or @port ne $wr/@port]
-                                  [@interface eq $wr/@interface or @type-key eq $wr/@type-key]">
+                                  [if (@message or $wr/@message) then @message eq $wr/@message
+                                   else (@interface eq $wr/@interface or @type-key eq $wr/@type-key)]">
           <fp:pair connector="{$connection/@id}" prefix="{$prefix}" interface="{$wr/@interface}"
                    w-instance="{$wr/@instance}" w-port="{$wr/@port}" w-dp="{$wr/@data-port}"
                    r-instance="{@instance}" r-port="{@port}" r-dp="{@data-port}"/>

@@ -118,6 +118,9 @@
     <xsl:param name="unit" as="element(fp:unit)?"/>
     <xsl:param name="ees" as="element(pim:node)*"/>
     <xsl:param name="hosts" as="element(pim:node)*"/>
+    <!-- the name, when the component's own would be shared (components of
+         one name in different packages: their qualified names) -->
+    <xsl:param name="qualified" as="xs:string?"/>
     <xsl:variable name="root" as="document-node()" select="root($component)"/>
     <xsl:variable name="realization-item" as="element(pim:class)?" select="fp:realizing-class($component)"/>
     <xsl:variable name="around" as="xs:string*" select="tokenize($unit/@around)"/>
@@ -145,7 +148,7 @@
                  if (count($hosts) eq 1) then $hosts else ())[1]"/>
     <!-- the default process's id: its host's (a Node, else the model) -->
     <xsl:variable name="host-id" as="xs:string?" select="($host/@id, $root/pim:model/@id[$undrawn])[1]"/>
-    <pim:instance name="{($unit/@name, f:cpp-identifier(($part/@name[normalize-space(.)], $component/@name)[1]))[1]}"
+    <pim:instance name="{($unit/@name, $qualified, f:cpp-identifier(($part/@name[normalize-space(.)], $component/@name)[1]))[1]}"
                   xmi-id="{$inst-id}" component="{$component/@id}">
       <xsl:if test="$unit"><xsl:attribute name="composite" select="$unit/@top"/></xsl:if>
       <!-- inside a composite part: where in the hierarchy -->

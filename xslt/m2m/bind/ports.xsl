@@ -5,7 +5,7 @@
   Reads:   the PIM (urn:robomda:pim:1) and the working trees of fp:binding.
   Writes:  parts of pim:binding (schemas/pim/1/binding.xsd), or values.
   Params:  none.  Keys: those of bind.xsl.
-  Provides: fp:bound-component, fp:port-interfaces, fp:data-ports, fp:port-problems,
+  Provides: fp:bound-component, fp:component-name, fp:port-interfaces, fp:data-ports, fp:port-problems,
            fp:constant («Constant»: data-port/@constant).
   Errors:  BND002, BND005, BND030 (as data for f:fail-all), BND011.
   Warnings: BND004 a port whose interface has no datum and no operation,
@@ -38,7 +38,7 @@
           || $component/@name || ''' has no usable C++ name (''' || string($cpp)
           || '''): name the class, or give its AtomicCode stereotype a cppName')"/>
     </xsl:if>
-    <pim:bound-component component="{$component/@id}" name="{$component/@name}">
+    <pim:bound-component component="{$component/@id}" name="{fp:component-name($component)}">
       <xsl:if test="$realization-item">
         <xsl:attribute name="realization" select="$realization-item/@id"/>
         <xsl:attribute name="realization-name" select="$realization-item/@name"/>
@@ -47,14 +47,34 @@
         <xsl:attribute name="cpp-name" select="($name, $realization-item/@name)[1]"/>
         <xsl:attribute name="cpp-name-source" select="if (exists($name)) then 'stereotype' else 'name'"/>
       </xsl:if>
-      <xsl:for-each select="$component/pim:port">
+      <!-- a port that is the runtime's service in its tool's profile (a
+           UML-RT SAP or SPP, a Log or Timing port) is no port of the
+           generated system: a note says so -->
+      <xsl:for-each select="$component/pim:port[@runtime]">
+        <xsl:message select="'BND033: port ''' || @name || ''' of ' || $component/@name || ' is '
+            || (if (@runtime eq 'unwired') then 'unwired (a UML-RT service access or provision point, which the runtime connects by name)'
+                else 'typed by the protocol ''' || @type-name || ''' of its runtime library (its timers, log or frame service)')
+            || ': no port of the generated component; the target''s own services stand for it [xmi:id=' || @id || ']'"/>
+      </xsl:for-each>
+      <xsl:for-each select="$component/pim:port[not(@runtime)]">
         <xsl:sequence select="fp:data-ports(., $component, $realization-item)"/>
       </xsl:for-each>
       <!-- operations provided and called (bind/services.xsl) -->
-      <xsl:for-each select="$component/pim:port">
+      <xsl:for-each select="$component/pim:port[not(@runtime)]">
         <xsl:sequence select="fp:service-ports(., $component, $realization-item)"/>
       </xsl:for-each>
     </pim:bound-component>
+  </xsl:function>
+
+  <!-- the name a component is bound by: its own, or, when components of
+       one name are in different packages (legal UML), its qualified name
+       below the model as an identifier (front::Camera: front_Camera), so
+       that their classes and instances differ on every target -->
+  <xsl:function name="fp:component-name" as="xs:string">
+    <xsl:param name="component" as="element(pim:component)"/>
+    <xsl:sequence select="if (count(key('fp:component-of-name', string($component/@name), root($component))) gt 1)
+                          then f:cpp-identifier(replace(replace($component/@qualified-name, '^[^:]*::', ''), '::', '_'))
+                          else string($component/@name)"/>
   </xsl:function>
 
   <!-- (interface id, direction) pairs of a port, flattened: id, dir, id, dir ... -->
@@ -75,7 +95,8 @@
             and ($type/self::pim:interface or fp:is-data-type($type) or (empty($type) and $port/@primitive))) then
           ($given ! (string(($type/@id, $port/@id)[1]), .))
         else if ($port/pim:provided or $port/pim:required) then
-          ($port/pim:provided ! (string(@interface), 'out'), $port/pim:required ! (string(@interface), 'in'))
+          ($port/pim:provided ! (string(@interface), fp:provided-direction(key('fp:id', @interface, $root))),
+           $port/pim:required ! (string(@interface), fp:flip(fp:provided-direction(key('fp:id', @interface, $root)))))
         else if ($type/self::pim:interface) then
           (string($type/@id),
            if (($component, $realization)/pim:requires/@interface = $type/@id) then fp:flip(fp:provided-direction($type))
@@ -144,7 +165,7 @@
              left out of the bound component, with warning BND004
              (fp:data-ports), not refused -->
         <xsl:when test="empty($data)"/>
-        <xsl:when test="count($data) gt 1">
+        <xsl:when test="count($data) gt 1 and not(fp:is-message-set($instance))">
           <xsl:sequence select="map { 'code': 'BND005', 'id': string($instance/@id), 'message': 'interface ''' || $instance/@name
               || ''' (port ''' || $port/@name || ''') carries ' || count($data)
               || ' attributes (' || string-join($data/@name, ', ') || '): an interface carries exactly one datum' }"/>
@@ -162,6 +183,13 @@
     <xsl:if test="exists(($port, $interface[self::pim:interface]) ! f:stereotype(., 'Constant'))">
       <xsl:attribute name="constant" select="'true'"/>
     </xsl:if>
+  </xsl:function>
+
+  <!-- a UML-RT message set: an interface each of whose attributes is a
+       message, a datum of its own (xslt/import/dialects.xsl) -->
+  <xsl:function name="fp:is-message-set" as="xs:boolean">
+    <xsl:param name="interface" as="element()?"/>
+    <xsl:sequence select="exists($interface/self::pim:interface[@pattern eq 'Messages'])"/>
   </xsl:function>
 
   <!-- a port's own type that is its data (a data type, primitive or
@@ -233,6 +261,19 @@
                   else ''', which has no attribute (its datum) and no operation: the port is left out of the generated '
                        || 'component and of its connections; give ''' || $instance/@name || ''' one attribute, the data it carries'
                        || ' (or operations, for calls)'))"/>
+        </xsl:when>
+        <xsl:when test="fp:is-message-set($instance)">
+          <!-- a UML-RT message set: a data port per message, named after
+               the port and the message -->
+          <xsl:variable name="direction" as="xs:string" select="$pairs[2 * current()]"/>
+          <xsl:for-each select="$instance/pim:attribute">
+            <pim:data-port port="{$port/@id}" name="{f:cpp-identifier($port/@name || '_' || @name)}"
+                           port-name="{$port/@name}" direction="{$direction}"
+                           interface="{$instance/@id}" interface-name="{$instance/@name}"
+                           datum="{@id}" datum-name="{@name}">
+              <xsl:sequence select="(@primitive, @type, @type-name, @lower, @upper), fp:constant($port, $instance)"/>
+            </pim:data-port>
+          </xsl:for-each>
         </xsl:when>
         <xsl:otherwise>
           <xsl:variable name="data" as="element(pim:attribute)*" select="$instance/pim:attribute"/>

@@ -209,8 +209,9 @@
     <xsl:param name="package" as="xs:string"/>
     <xsl:variable name="component" as="element()" select="key('fp:id', $bc/@component, root($bc))"/>
     <xsl:variable name="wrapper" as="xs:boolean" select="exists(fp:realization($bc))"/>
-    <xsl:variable name="class" as="xs:string" select="f:upper-camel($component/@name)"/>
-    <r:component xmi-id="{$component/@id}" name="{$component/@name}" class="{$class}" type-name="{$class}"
+    <!-- named as bound: components of one name in different packages by their qualified names -->
+    <xsl:variable name="class" as="xs:string" select="f:upper-camel($bc/@name)"/>
+    <r:component xmi-id="{$component/@id}" name="{$bc/@name}" class="{$class}" type-name="{$class}"
                  category="{$package}" kind="{if ($wrapper) then 'wrapper' else 'base'}"
                  generated-class="{if ($wrapper) then $class else $class || 'Base'}">
       <xsl:sequence select="fp:psm-doc($component)"/>

@@ -258,8 +258,9 @@
     <xsl:param name="package" as="xs:string"/>
     <xsl:variable name="component" as="element(pim:component)" select="key('fp:id', $bc/@component, root($bc))"/>
     <xsl:variable name="wrapper" as="xs:boolean" select="exists(fp:realization($bc))"/>
-    <xsl:variable name="class" as="xs:string" select="f:upper-camel($component/@name)"/>
-    <o:task-context xmi-id="{$component/@id}" name="{$component/@name}" class="{$class}" namespace="{$package}"
+    <!-- named as bound: components of one name in different packages by their qualified names -->
+    <xsl:variable name="class" as="xs:string" select="f:upper-camel($bc/@name)"/>
+    <o:task-context xmi-id="{$component/@id}" name="{$bc/@name}" class="{$class}" namespace="{$package}"
                     type-name="{$package}::{$class}" kind="{if ($wrapper) then 'wrapper' else 'base'}"
                     generated-class="{if ($wrapper) then $class else $class || 'Base'}">
       <xsl:sequence select="fp:psm-doc($component)"/>

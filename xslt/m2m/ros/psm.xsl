@@ -479,12 +479,13 @@
     <xsl:param name="managed" as="xs:boolean"/>
     <xsl:variable name="component" as="element(pim:component)" select="key('fp:id', $bc/@component, root($bc))"/>
     <xsl:variable name="wrapper" as="xs:boolean" select="exists(fp:realization($bc))"/>
-    <xsl:variable name="class" as="xs:string" select="f:upper-camel($component/@name)"/>
+    <!-- named as bound: components of one name in different packages by their qualified names -->
+    <xsl:variable name="class" as="xs:string" select="f:upper-camel($bc/@name)"/>
     <xsl:variable name="instances" as="element(pim:instance)*" select="key('fp:instance-of', $bc/@component, root($bc))"/>
-    <r:node xmi-id="{$component/@id}" name="{$component/@name}" class="{$class}" namespace="{$package}"
+    <r:node xmi-id="{$component/@id}" name="{$bc/@name}" class="{$class}" namespace="{$package}"
             type-name="{$package}::{$class}" kind="{if ($wrapper) then 'wrapper' else 'base'}"
             generated-class="{if ($wrapper) then $class else $class || 'Base'}"
-            executable="{f:snake-case($component/@name)}_node" default-name="{f:snake-case($component/@name)}"
+            executable="{f:snake-case($bc/@name)}_node" default-name="{f:snake-case($bc/@name)}"
             period="{($instances/pim:activity/@period)[1]}">
       <xsl:if test="$managed">
         <xsl:attribute name="lifecycle-type-name" select="$package || '::lifecycle::' || $class"/>

