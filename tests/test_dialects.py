@@ -537,3 +537,73 @@ def test_rsa_rte_conjugates_by_its_rtport_tag_and_reads_sets_by_the_protocol(tmp
     assert _message_flows(pim) == {"p_ping": ("pinger", "ponger", "p_ping", "BUFFER"),
                                    "p_pong": ("ponger", "pinger", "p_pong", "BUFFER")}
     assert pim.xpath("//p:port[@id='ponger_p']/@conjugated", namespaces=NS) == ["true"]
+
+
+# ------------------------------------------------------------- SysML
+SYSML = ROOT / "fixtures" / "cases" / "sysml"
+
+
+def test_sysml_fixture_is_what_its_make_py_writes() -> None:
+    for path, text in _load_make(SYSML).texts().items():
+        assert path.read_text(encoding="utf-8") == text, f"{path}: run {SYSML / 'make.py'}"
+
+
+def test_sysml_flow_properties_and_flow_ports_keep_their_directions() -> None:
+    found: list[Diagnostic] = []
+    pim = _pim(SYSML / "model.xmi", found)
+    # blocks are components, the interface block never; the plant is the system
+    assert sorted(c.get("name") for c in pim.xpath("//p:application//p:component", namespaces=NS)) == \
+        ["Controller", "Plant", "Pump", "Sensor"]
+    data = {(d.getparent().get("name"), d.get("name")): d.get("direction")
+            for d in pim.xpath("//p:binding/p:bound-component/p:data-port", namespaces=NS)}
+    # a proxy port carries each flow property of its interface block, swapped when conjugated
+    assert data == {("Pump", "fluid_pressure"): "out", ("Pump", "fluid_command"): "in",
+                    ("Sensor", "level"): "out",
+                    ("Controller", "pump_pressure"): "in", ("Controller", "pump_command"): "out",
+                    ("Controller", "level"): "in"}
+    flows = {c.find("p:writer", NS).get("instance") + "." + c.find("p:writer", NS).get("data-port"):
+             c.find("p:reader", NS).get("instance") + "." + c.find("p:reader", NS).get("data-port")
+             for c in pim.xpath("//p:binding/p:connection", namespaces=NS)}
+    assert flows == {"pump.fluid_pressure": "controller.pump_pressure", "controller.pump_command": "pump.fluid_command",
+                     "sensor.level": "controller.level"}
+    # the value property is a property of the pump
+    assert pim.xpath("//p:component[@name='Pump']/p:attribute/@name", namespaces=NS) == ["maxPressure"]
+    assert not [d for d in found if d.severity == "error"]
+
+
+@pytest.mark.parametrize("target", ["orocos", "ros1", "ros2", "openrtm"])
+def test_sysml_fixture_generates_on_every_target(target: str, tmp_path: Path) -> None:
+    done = generate(SYSML / "model.xmi", tmp_path / "out", target, write=False)
+    text = "\n".join(f.text or "" for f in etree.fromstring(done.stages["text"].encode()).iter(
+        "{urn:robomda:fileset:1}file"))
+    for name in ("fluid_pressure", "pump_command", "maxPressure"):
+        assert name in text, (target, name)
+
+
+SYSML11_NS = (' xmlns:Blocks="http://www.eclipse.org/papyrus/0.7.0/SysML/Blocks"'
+              ' xmlns:PortAndFlows="http://www.eclipse.org/papyrus/0.7.0/SysML/PortAndFlows"')
+
+
+def test_a_sysml_flow_port_without_direction_is_inout_and_its_own_conjugation_swaps_it(tmp_path: Path) -> None:
+    """SysML 1.1 (Papyrus 0.7.0): FlowPort direction absent = inout (a writer and a reader, BND029); the
+    stereotype's isConjugated tag swaps an in port to out."""
+    body = (DATA + _class("a", "Tank", [("q", "d")]) + _class("b", "Valve", [("q", "d")])
+            + '    <packagedElement xmi:type="uml:Class" xmi:id="sys" name="Plant">\n'
+              '      <ownedAttribute xmi:type="uml:Property" xmi:id="sys_a" name="tank" type="a" aggregation="composite"/>\n'
+              '      <ownedAttribute xmi:type="uml:Property" xmi:id="sys_b" name="valve" type="b" aggregation="composite"/>\n'
+            + _connector("k", ("sys_a", "a_q"), ("sys_b", "b_q")) + '    </packagedElement>\n')
+    apps = ('  <Blocks:Block xmi:id="s1" base_Class="a"/>\n  <Blocks:Block xmi:id="s2" base_Class="b"/>\n'
+            '  <Blocks:Block xmi:id="s3" base_Class="sys"/>\n'
+            '  <PortAndFlows:FlowPort xmi:id="s4" base_Port="a_q"/>\n'
+            '  <PortAndFlows:FlowPort xmi:id="s5" base_Port="b_q" direction="in" isConjugated="true"/>\n')
+    model = tmp_path / "tanks.uml"
+    model.write_text(_xmi(body, apps, SYSML11_NS), encoding="utf-8")
+    found: list[Diagnostic] = []
+    pim = _pim(model, found)
+    data = sorted((d.getparent().get("name"), d.get("name"), d.get("direction"))
+                  for d in pim.xpath("//p:binding/p:bound-component/p:data-port", namespaces=NS))
+    assert data == [("Tank", "q_in", "in"), ("Tank", "q_out", "out"), ("Valve", "q", "out")]
+    assert [d.xmi_id for d in found if d.code == "BND029"] == ["a_q"]
+    [connection] = pim.xpath("//p:binding/p:connection", namespaces=NS)
+    assert (connection.find("p:writer", NS).get("instance"), connection.find("p:reader", NS).get("data-port")) == \
+        ("valve", "q_in")

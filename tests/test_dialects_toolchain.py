@@ -131,7 +131,8 @@ def test_orocos_components_run_and_data_flows_as_the_dialect_means(fixture: str,
 
     built = bash(f"oro_build_pkg {out}")
     assert built.returncode == 0, built.stdout[-3000:] + built.stderr[-3000:]
-    warnings = [line for line in (built.stdout + built.stderr).splitlines() if "warning:" in line]
+    # warnings that point into the generated package (RTT's own headers warn under GCC 12)
+    warnings = [line for line in (built.stdout + built.stderr).splitlines() if "warning:" in line and str(out) in line]
     assert not warnings, warnings[:10]
     instances, readers, writers = PROBES[fixture]
     probe = tmp_path / "probe.lua"

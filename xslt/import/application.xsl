@@ -521,6 +521,8 @@
       <xsl:for-each select="fp:default(.)">
         <xsl:attribute name="default" select="."/>
       </xsl:for-each>
+      <!-- a flow property's direction in its tool's profile (dialects.xsl) -->
+      <xsl:sequence select="fp:dialect-port(.)[local-name() = ('direction', 'direction-literal', 'dialect')]"/>
       <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
     </pim:attribute>
   </xsl:template>

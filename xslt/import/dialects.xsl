@@ -93,18 +93,20 @@
   </xsl:function>
 
   <!-- the attributes of the pim:port made from port $e that its dialect's
-       data-port stereotype gives: @direction (or @direction-literal for a
-       literal the table does not know), @buffer, @dialect -->
+       data-port stereotype gives, or of the pim:attribute made from
+       property $e that its flow-property stereotype gives (SysML): @direction
+       (or @direction-literal for a literal the table does not know),
+       @buffer, @dialect -->
   <xsl:function name="fp:dialect-port" as="attribute()*">
     <xsl:param name="e" as="element()"/>
     <xsl:variable name="pairs" as="element()*" select="fp:dialect-apps($e)"/>
     <xsl:variable name="i" as="xs:integer?"
         select="(for $i in 1 to count($pairs) idiv 2
-                 return $i[exists($pairs[2 * $i]/d:data-port[@stereotype eq local-name($pairs[2 * $i - 1])])])[1]"/>
+                 return $i[exists($pairs[2 * $i]/(d:data-port | d:flow-property)[@stereotype eq local-name($pairs[2 * $i - 1])])])[1]"/>
     <xsl:if test="exists($i)">
       <xsl:variable name="app" as="element()" select="$pairs[2 * $i - 1]"/>
       <xsl:variable name="dialect" as="element(d:dialect)" select="$pairs[2 * $i]"/>
-      <xsl:variable name="rule" as="element(d:data-port)" select="$dialect/d:data-port[@stereotype eq local-name($app)][1]"/>
+      <xsl:variable name="rule" as="element()" select="$dialect/(d:data-port | d:flow-property)[@stereotype eq local-name($app)][1]"/>
       <xsl:variable name="literal" as="xs:string" select="(fp:tag-literal($app, $rule/@tag), string($rule/@default))[1]"/>
       <xsl:variable name="direction" as="xs:string?"
           select="$rule/d:literal[lower-case(@name) eq lower-case($literal)][1]/@direction"/>

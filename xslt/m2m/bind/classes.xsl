@@ -22,7 +22,8 @@
   3. or one of its parts is typed by a component (by 1, 2, 3, or a
      uml:Component): a composite of components is a component;
   and it is not the realizing class of a component (that class is the
-  component's atomic code, seed 000). A class with ports that none of
+  component's atomic code, seed 000), nor a class its profile says is no
+  component, nor a part of itself (a recursive pattern). A class with ports that none of
   these makes a component stays a class: ORO005 names it when nothing is
   left to generate (xslt/m2m/common/psm-kit.xsl).
 -->
@@ -42,9 +43,11 @@
   <xsl:function name="fp:promoted-classes" as="element(pim:class)*">
     <xsl:param name="model" as="element(pim:model)"/>
     <xsl:variable name="root" as="document-node()" select="root($model)"/>
+    <!-- (not a class that is a part of itself: a recursive pattern, such as
+         SysML's roll-up patterns, which no system can instantiate) -->
     <xsl:variable name="classes" as="element(pim:class)*"
         select="$model/pim:application//pim:class[empty(key('fp:realized-by', @id, $root))]
-                                                  [not(@component = ('false', '0'))]"/>
+                                                  [not(@component = ('false', '0'))][not(pim:part/@type = @id)]"/>
     <xsl:variable name="seeds" as="element(pim:class)*"
         select="$classes[@component = ('true', '1') or (pim:port and exists(key('fp:part-by-type', @id, $root)))]"/>
     <xsl:variable name="components" as="map(xs:string, xs:boolean)"

@@ -91,9 +91,14 @@
     <xsl:variable name="given" as="xs:string*"
         select="if ($port/@direction eq 'inout') then ('out', 'in') else $port/@direction ! string(.)"/>
     <xsl:sequence select="
-        if (exists($given) and not($port/pim:provided or $port/pim:required)
+        if (not($port/pim:provided or $port/pim:required) and exists($type/pim:attribute[@direction])) then
+          (: a port typed by a SysML interface block or flow specification:
+             each flow property in its direction, swapped when conjugated :)
+          ($type/pim:attribute[@direction] ! (let $id := string(@id) return
+              (if (@direction eq 'inout') then ('out', 'in') else string(@direction)) ! ($id, if ($conj) then fp:flip(.) else .)))
+        else if (exists($given) and not($port/pim:provided or $port/pim:required)
             and ($type/self::pim:interface or fp:is-data-type($type) or (empty($type) and $port/@primitive))) then
-          ($given ! (string(($type/@id, $port/@id)[1]), .))
+          ($given ! (string(($type/@id, $port/@id)[1]), if ($conj) then fp:flip(.) else .))
         else if ($port/pim:provided or $port/pim:required) then
           ($port/pim:provided ! (string(@interface), fp:provided-direction(key('fp:id', @interface, $root))),
            $port/pim:required ! (string(@interface), fp:flip(fp:provided-direction(key('fp:id', @interface, $root)))))
@@ -157,6 +162,7 @@
       <xsl:variable name="data" as="element(pim:attribute)*" select="$instance/pim:attribute"/>
       <xsl:choose>
         <xsl:when test="fp:is-data-type($instance) or fp:is-service-interface($instance)"/>
+        <xsl:when test="$instance/self::pim:attribute[@direction]"/>
         <xsl:when test="not($instance/self::pim:interface)">
           <xsl:sequence select="map { 'code': 'BND002', 'id': string($port/@id), 'message': 'port ''' || $port/@name
               || ''' refers to ''' || $pairs[2 * current() - 1] || ''', which is not an interface' }"/>
@@ -230,6 +236,15 @@
     <xsl:variable name="root" as="document-node()" select="root($port[1])"/>
     <xsl:sequence select="f:fail-all(fp:port-problems($port, $component, $realization))"/>
     <xsl:variable name="pairs" as="xs:string*" select="fp:port-interfaces($port, $component, $realization)"/>
+    <xsl:variable name="inout-flows" as="element(pim:attribute)*"
+        select="key('fp:id', $port/@type, $root)/pim:attribute[@direction eq 'inout']"/>
+    <xsl:if test="exists($inout-flows) and not($port/pim:provided or $port/pim:required)">
+      <xsl:sequence select="f:warn('BND029', string($port/@id), 'port ''' || $port/@name || ''' of '
+          || $component/@name || ' carries the inout flow propert' || (if (count($inout-flows) gt 1) then 'ies ''' else 'y ''')
+          || string-join($inout-flows/@name, ''', ''') || ''': no target has a port that both writes and reads, so each is'
+          || ' generated as an output and an input (' || string-join($inout-flows ! ($port/@name || '_' || @name || '_out'), ', ')
+          || ' and the _in ones), each connected where the connector joins a port that reads or writes it')"/>
+    </xsl:if>
     <xsl:if test="$port/@direction eq 'inout' and not($port/pim:provided or $port/pim:required) and exists($pairs)">
       <xsl:sequence select="f:warn('BND029', string($port/@id), 'port ''' || $port/@name || ''' of '
           || $component/@name || ' is inout (' || $port/@dialect || '): no target has a port that both writes and reads,'
@@ -261,6 +276,19 @@
                   else ''', which has no attribute (its datum) and no operation: the port is left out of the generated '
                        || 'component and of its connections; give ''' || $instance/@name || ''' one attribute, the data it carries'
                        || ' (or operations, for calls)'))"/>
+        </xsl:when>
+        <xsl:when test="$instance/self::pim:attribute[@direction]">
+          <!-- a SysML flow property of the port's type: a data port of its
+               own, the property both its interface and its datum (two ports
+               typed alike match by it) -->
+          <pim:data-port port="{$port/@id}"
+                         name="{f:cpp-identifier($port/@name || '_' || $instance/@name
+                                                 || (if ($instance/@direction eq 'inout') then '_' || $pairs[2 * current()] else ''))}"
+                         port-name="{$port/@name}" direction="{$pairs[2 * current()]}"
+                         interface="{$instance/@id}" interface-name="{$instance/@name}"
+                         datum="{$instance/@id}" datum-name="{$instance/@name}">
+            <xsl:sequence select="$instance/(@primitive, @type, @type-name, @lower, @upper), fp:constant($port, ())"/>
+          </pim:data-port>
         </xsl:when>
         <xsl:when test="fp:is-message-set($instance)">
           <!-- a UML-RT message set: a data port per message, named after
