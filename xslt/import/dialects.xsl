@@ -222,9 +222,16 @@
   <xsl:function name="fp:message-attributes" as="attribute()*">
     <xsl:param name="e" as="element()"/>
     <xsl:for-each select="fp:message-dialect($e)">
+      <xsl:variable name="protocol" as="xs:string" select="d:messages/@protocol"/>
       <xsl:attribute name="pattern" select="'Messages'"/>
       <xsl:attribute name="provided-direction" select="'in'"/>
-      <xsl:attribute name="dialect" select="@name || '::' || d:messages/@protocol"/>
+      <xsl:attribute name="dialect" select="@name || '::' || $protocol"/>
+      <!-- the «Protocol» applications that make it a message set -->
+      <xsl:attribute name="via"
+          select="distinct-values(key('fp:dep-by-supplier', fp:id($e), root($e))
+                                  ! fp:targets(., 'client')[@x:type eq 'Collaboration']
+                                  ! key('fp:stereotype-by-base', fp:id(.), root(.))[local-name() eq $protocol]
+                                  ! fp:id(.))"/>
     </xsl:for-each>
   </xsl:function>
 
@@ -289,14 +296,6 @@
     <xsl:sequence select="if ($unwired) then 'unwired'
         else if (some $h in $e/type/@href satisfies (some $p in $fp:dialects/d:runtime-library/@href satisfies matches($h, $p)))
         then 'library' else ()"/>
-  </xsl:function>
-
-  <!-- true when stereotype application $app is one its dialect reads on an
-       element the PIM holds no element for (a UML-RT «Protocol» on the
-       collaboration whose message sets it gives) -->
-  <xsl:function name="fp:read-by-dialect" as="xs:boolean">
-    <xsl:param name="app" as="element()"/>
-    <xsl:sequence select="local-name($app) = (fp:dialect($app)/d:messages/@protocol)"/>
   </xsl:function>
 
   <!-- the name of the top of the system model $root names (a dialect's

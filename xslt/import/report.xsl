@@ -115,11 +115,8 @@
     <xsl:variable name="applications" as="element()*"
         select="$norm/x:XMI/*[not(namespace-uri() = ($U, $X))][@x:id]
                   [@*[starts-with(local-name(), 'base_')]]"/>
-    <!-- (a stereotype a dialect reads on an element the PIM holds no element
-         for, a UML-RT «Protocol» on its collaboration, is not left out:
-         dialects.xsl, fp:read-by-dialect) -->
     <xsl:variable name="left-out" as="element()*"
-        select="($understood, $applications)[empty(key('fp:in-pim', fp:id(.), $pim))][not(fp:read-by-dialect(.))]"/>
+        select="($understood, $applications)[empty(key('fp:in-pim', fp:id(.), $pim))]"/>
     <!-- stereotype applications on no element of the model (tools apply
          their own to diagrams kept in xmi:Extension): one warning per
          stereotype, naming every application -->

@@ -380,7 +380,7 @@
         <xsl:if test="count(current-group()) gt 1">
           <xsl:sequence select="map { 'code': 'BND009', 'id': string(current-group()[2]/@xmi-id),
               'message': 'two instances are named ''' || current-grouping-key() || ''''
-              || fp:paths-text(current-group()) }"/>
+              || fp:paths-text(current-group(), $root) }"/>
         </xsl:if>
       </xsl:for-each-group>
     </xsl:variable>
@@ -465,7 +465,13 @@
   <!-- " (parts a.b and a_b) ...": the paths of same-named nested instances -->
   <xsl:function name="fp:paths-text" as="xs:string">
     <xsl:param name="instances" as="element(pim:instance)+"/>
-    <xsl:sequence select="if (empty($instances/@path)) then ''
+    <xsl:param name="root" as="document-node()"/>
+    <xsl:variable name="tops" as="xs:string*" select="distinct-values($instances/@composite)"/>
+    <xsl:sequence select="if (count($tops) gt 1)
+        then ' (parts of ' || string-join($tops ! ('''' || key('fp:id', ., $root)/@name || ''''), ' and ')
+             || ': the model draws several systems, composites no part uses, and robomda generates their parts as one'
+             || ' system: draw one composite whose parts they are, or keep one system in the model)'
+        else if (empty($instances/@path)) then ''
         else ' (parts ' || string-join($instances ! string((@path, @name)[1]), ' and ')
              || '): rename a part so that the names differ with the dots made underscores'"/>
   </xsl:function>

@@ -72,7 +72,11 @@
        that their classes and instances differ on every target -->
   <xsl:function name="fp:component-name" as="xs:string">
     <xsl:param name="component" as="element(pim:component)"/>
-    <xsl:sequence select="if (count(key('fp:component-of-name', string($component/@name), root($component))) gt 1)
+    <!-- (two of one qualified name, in one package, keep their name: that
+         is no legal UML, and BND009 / APP020 say so) -->
+    <xsl:variable name="same" as="element(pim:component)*"
+        select="key('fp:component-of-name', string($component/@name), root($component))"/>
+    <xsl:sequence select="if (count($same) gt 1 and count($same[@qualified-name eq $component/@qualified-name]) eq 1)
                           then f:cpp-identifier(replace(replace($component/@qualified-name, '^[^:]*::', ''), '::', '_'))
                           else string($component/@name)"/>
   </xsl:function>
