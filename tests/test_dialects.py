@@ -607,3 +607,53 @@ def test_a_sysml_flow_port_without_direction_is_inout_and_its_own_conjugation_sw
     [connection] = pim.xpath("//p:binding/p:connection", namespaces=NS)
     assert (connection.find("p:writer", NS).get("instance"), connection.find("p:reader", NS).get("data-port")) == \
         ("valve", "q_in")
+
+
+def test_a_class_drawn_as_a_component_implements_the_operations_its_ports_provide(tmp_path: Path) -> None:
+    """RobotML: a «ServicePort» provides its interface, and the class declares none of its operations (its
+    code implements them): they are the component's own, for its user class; no BND020."""
+    iface = ('    <packagedElement xmi:type="uml:Interface" xmi:id="i" name="Reset">\n'
+             '      <ownedOperation xmi:type="uml:Operation" xmi:id="i_op" name="reset"/>\n    </packagedElement>\n')
+    body = (iface + _class("a", "Arm", [("srv", "i")]) + _class("b", "Brain", [("cli", "i")])
+            + _class("sys", "Robot", [], [("arm", "a"), ("brain", "b")],
+                     _connector("c1", ("sys_brain", "b_cli"), ("sys_arm", "a_srv"))))
+    apps = ('  <RobotML:Software xmi:id="s1" base_Class="a"/>\n  <RobotML:Software xmi:id="s2" base_Class="b"/>\n'
+            '  <RobotML:ServicePort xmi:id="s3" base_Port="a_srv"/>\n'
+            '  <RobotML:ServicePort xmi:id="s4" base_Port="b_cli" kind="required"/>\n')
+    model = tmp_path / "service.uml"
+    model.write_text(_xmi(body, apps, ROBOTML_NS), encoding="utf-8")
+    found: list[Diagnostic] = []
+    pim = _pim(model, found)
+    assert pim.xpath("//p:component[@name='Arm']/p:operation/@name", namespaces=NS) == ["reset"]
+    assert pim.xpath("//p:component[@name='Brain']/p:operation", namespaces=NS) == []
+    assert len(pim.xpath("//p:binding/p:call", namespaces=NS)) == 1
+    for target in ("orocos", "ros2"):
+        done = generate(model, tmp_path / target, target, write=False)
+        assert "reset" in done.stages["text"], target
+
+
+def test_ports_typed_by_a_library_robomda_does_not_have_are_said_once(tmp_path: Path) -> None:
+    lib = "pathmap://Robotml_LIBRARIES/RobotMLPlatformLibraries.uml#"
+    body = (DATA + '    <packagedElement xmi:type="uml:Class" xmi:id="a" name="Camera">\n'
+            f'      <ownedAttribute xmi:type="uml:Port" xmi:id="a_img" name="image" aggregation="composite">'
+            f'<type xmi:type="uml:DataType" href="{lib}_img"/></ownedAttribute>\n'
+            '      <ownedAttribute xmi:type="uml:Port" xmi:id="a_v" name="value" type="d" aggregation="composite"/>\n'
+            '    </packagedElement>\n'
+            '    <packagedElement xmi:type="uml:Class" xmi:id="b" name="Viewer">\n'
+            f'      <ownedAttribute xmi:type="uml:Port" xmi:id="b_img" name="image" aggregation="composite">'
+            f'<type xmi:type="uml:DataType" href="{lib}_img"/></ownedAttribute>\n'
+            '    </packagedElement>\n'
+            + _class("sys", "Robot", [], [("camera", "a"), ("viewer", "b")],
+                     _connector("c1", ("sys_camera", "a_img"), ("sys_viewer", "b_img"))))
+    apps = ('  <RobotML:CameraSystem xmi:id="s1" base_Class="a"/>\n  <RobotML:Software xmi:id="s2" base_Class="b"/>\n'
+            '  <RobotML:DataFlowPort xmi:id="s3" base_Port="a_img" direction="out"/>\n'
+            '  <RobotML:DataFlowPort xmi:id="s4" base_Port="a_v" direction="out"/>\n'
+            '  <RobotML:DataFlowPort xmi:id="s5" base_Port="b_img"/>\n')
+    model = tmp_path / "library.uml"
+    model.write_text(_xmi(body, apps, ROBOTML_NS), encoding="utf-8")
+    found: list[Diagnostic] = []
+    _pim(model, found)
+    [once] = [d for d in found if d.code == "BND034"]
+    assert once.xmi_id == "a_img" and once.line and "2 ports are typed" in once.message
+    assert [d.xmi_id for d in found if d.code == "BND031"] == ["c1"]
+    assert check(model).exit_code == 0

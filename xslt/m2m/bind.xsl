@@ -390,6 +390,19 @@
                           ! (let $c := ., $r := fp:realizing-class(.) return $c/pim:port ! fp:port-problems(., $c, $r)))"/>
     <xsl:sequence select="f:fail-all(fp:composite-problems($tops | key('fp:id', $expansion/fp:composite/@component, $root)))"/>
     <xsl:variable name="bound-tree" as="document-node()" select="fp:bound-tree($components, $instance-tree)"/>
+    <!-- ports typed by a type of a library robomda does not have (RobotML's
+         platform library, a tool's pathmap:// library): left out, said once -->
+    <xsl:variable name="unknown-typed" as="element(pim:port)*"
+        select="$components[exists(key('fp:instance-by-component', @id, $instance-tree))]/pim:port
+                [not(@runtime)][@type-library eq 'external'][empty(@type)][empty(@primitive)][not(pim:provided or pim:required)]"/>
+    <xsl:if test="exists($unknown-typed)">
+      <xsl:sequence select="f:warn('BND034', string($unknown-typed[1]/@id), count($unknown-typed) || ' port'
+          || (if (count($unknown-typed) gt 1) then 's are' else ' is') || ' typed by a data type of a library outside the model,'
+          || ' which robomda does not have (' || string-join(($unknown-typed ! ('''' || @name || ''' of ' || ../@name || ': '
+          || @type-name))[position() le 5], ', ') || (if (count($unknown-typed) gt 5) then ' ...' else '')
+          || '): they carry no data robomda can generate and are left out, with their connectors; give them data types'
+          || ' of the model (or copy the library''s types into it)')"/>
+    </xsl:if>
     <xsl:sequence select="f:fail-all($bound-tree/fp:error ! f:error-map(@description))"/>
     <xsl:variable name="bound" as="element(pim:bound-component)*" select="$bound-tree/pim:bound-component"/>
     <xsl:sequence select="f:fail-all(fp:conformance-problems($root, $bound))"/>

@@ -1,17 +1,30 @@
 <?xml version="1.0" encoding="UTF-8"?>
 <!--
   xslt/m2m/bind/classes.xsl - bind (xslt/m2m/bind.xsl): classes taken as
-  components.
+  components, and the implicit parts of components drawn in a tool's own
+  profile.
 
   Reads:   a PIM (urn:robomda:pim:1), as import.xsl wrote it.
-  Writes:  the same PIM with each class that is a component by the rule
-           below written as a pim:component (same id, name, decoration,
-           ports, parts, attributes, operations, connectors and nested
-           classifiers; @drawn-as="class", @dialect kept), for the rest of
-           bind to bind as any component (fp:promoted-classes,
-           fp:with-classes-as-components).
-  Params:  none.  Keys: fp:part-by-type (bind.xsl), fp:realized-by.
-  Errors:  none.
+  Writes:  the same PIM, for the rest of bind to bind as it binds any
+           model (fp:promoted-classes, fp:portless-components,
+           fp:with-classes-as-components):
+           - each class that is a component by the rule below written as a
+             pim:component (same id, name, decoration, ports, parts,
+             attributes, operations, connectors and nested classifiers;
+             @drawn-as="class", @dialect kept); the attributes of its
+             parameter blocks (pim:class/@parameters, a Papyrus for Robotics
+             «Parameter») moved into it; its attributes typed by a class its
+             profile says is no component (a Papyrus for Robotics
+             «ActivityInstance»: the component's activity) and the
+             connectors joining them left out; the operations of the
+             interfaces it provides and does not declare copied as its own
+             (ids robomda.op.<class>.<operation>: fp:provided-operations);
+           - in a model that draws no system, each component that provides
+             or requires interfaces with no port given a port per interface
+             (pim:port/@implicit, id robomda.port.<the dependency's id>).
+  Params:  none.  Keys: fp:part-by-type, fp:id (bind.xsl), fp:realized-by.
+  Errors:  none. Warning BND032 (once, on the first such component):
+           components with no port given ports and instances.
 
   The rule (docs/profile.md, "Components drawn as classes"): the robotics
   modelling tools draw components as classes with ports, in their own
@@ -23,9 +36,9 @@
      uml:Component): a composite of components is a component;
   and it is not the realizing class of a component (that class is the
   component's atomic code, seed 000), nor a class its profile says is no
-  component, nor a part of itself (a recursive pattern). A class with ports that none of
-  these makes a component stays a class: ORO005 names it when nothing is
-  left to generate (xslt/m2m/common/psm-kit.xsl).
+  component, nor a part of itself (a recursive pattern). A class with
+  ports that none of these makes a component stays a class: ORO005 names
+  it when nothing is left to generate (xslt/m2m/common/psm-kit.xsl).
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -187,9 +200,18 @@
           <xsl:variable name="moved" as="element(pim:attribute)*" select="pim:class[@parameters = ('true', '1')]/pim:attribute"/>
           <xsl:variable name="after" as="element()?"
               select="(pim:port | pim:part | pim:operation | pim:connector | pim:attribute[last()]/following-sibling::*)[1]"/>
+          <!-- the operations of the interfaces it provides that it does not
+               declare: its own, for its user class to implement -->
+          <xsl:variable name="provided" as="element(pim:operation)*" select="fp:provided-operations(.)"/>
+          <xsl:variable name="ops-before" as="element()?"
+              select="(pim:connector | pim:operation[last()]/following-sibling::* | pim:part[last()]/following-sibling::*
+                       | pim:port[last()]/following-sibling::*)[not(self::pim:operation or self::pim:part or self::pim:port)][1]"/>
           <xsl:for-each select="node()">
             <xsl:if test=". is $after">
               <xsl:copy-of select="$moved"/>
+            </xsl:if>
+            <xsl:if test=". is $ops-before">
+              <xsl:sequence select="$provided"/>
             </xsl:if>
             <xsl:apply-templates select="." mode="mp:promote">
               <xsl:with-param name="moved" tunnel="yes" select="$moved"/>
@@ -197,6 +219,9 @@
           </xsl:for-each>
           <xsl:if test="empty($after)">
             <xsl:copy-of select="$moved"/>
+          </xsl:if>
+          <xsl:if test="empty($ops-before)">
+            <xsl:sequence select="$provided"/>
           </xsl:if>
         </pim:component>
       </xsl:when>
@@ -208,6 +233,33 @@
       </xsl:otherwise>
     </xsl:choose>
   </xsl:template>
+
+  <!-- the operations of the service interfaces (operations, no datum)
+       class $c provides (its pim:provides, its ports' explicit
+       pim:provided: a RobotML service port) that it declares under no name
+       of its own, copied as its own: a class drawn as a component declares
+       no operation of the interfaces its ports provide; its user class
+       implements them (ids robomda.op.<class>.<operation>, and likewise
+       for their parameters) -->
+  <xsl:function name="fp:provided-operations" as="element(pim:operation)*">
+    <xsl:param name="c" as="element(pim:class)"/>
+    <xsl:variable name="root" as="document-node()" select="root($c)"/>
+    <xsl:variable name="interfaces" as="element(pim:interface)*"
+        select="key('fp:id', distinct-values(($c/pim:provides, $c/pim:port/pim:provided)/@interface), $root)
+                /self::pim:interface[pim:operation][empty(pim:attribute)]"/>
+    <xsl:variable name="own" as="xs:string*" select="$c/pim:operation/@name ! string(.)"/>
+    <xsl:for-each select="$interfaces/pim:operation[not(@name = $own)]">
+      <xsl:variable name="prefix" as="xs:string" select="'robomda.op.' || $c/@id || '.'"/>
+      <pim:operation id="{$prefix}{@id}">
+        <xsl:copy-of select="@* except @id"/>
+        <xsl:for-each select="pim:parameter">
+          <pim:parameter id="{$prefix}{@id}">
+            <xsl:copy-of select="@* except @id"/>
+          </pim:parameter>
+        </xsl:for-each>
+      </pim:operation>
+    </xsl:for-each>
+  </xsl:function>
 
   <!-- a parameter block's attributes moved to its component ($moved) -->
   <xsl:template match="pim:class/pim:attribute" mode="mp:promote" priority="2" as="element()?">
