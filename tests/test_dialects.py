@@ -657,3 +657,45 @@ def test_ports_typed_by_a_library_robomda_does_not_have_are_said_once(tmp_path: 
     assert once.xmi_id == "a_img" and once.line and "2 ports are typed" in once.message
     assert [d.xmi_id for d in found if d.code == "BND031"] == ["c1"]
     assert check(model).exit_code == 0
+
+
+def test_a_robotml_deployment_plan_allocates_instances_to_their_middleware(tmp_path: Path) -> None:
+    """«Allocate» from a deployment plan's instance to an instance of a «RoboticMiddleware» class with kind
+    OROCOS deploys the part there; to a simulator, a located warning (IMP123), not silence."""
+    body = (DATA + _class("a", "Arm", [("state", "d")]) + _class("b", "Brain", [("state", "d")])
+            + _class("sys", "Robot", [], [("arm", "a"), ("brain", "b")],
+                     _connector("c1", ("sys_arm", "a_state"), ("sys_brain", "b_state")))
+            + '    <packagedElement xmi:type="uml:Class" xmi:id="oro" name="Orocos"/>\n'
+              '    <packagedElement xmi:type="uml:Class" xmi:id="sim" name="Morse"/>\n'
+              '    <packagedElement xmi:type="uml:Package" xmi:id="plan" name="plan">\n'
+              '      <packagedElement xmi:type="uml:InstanceSpecification" xmi:id="i_oro" name="orocos" classifier="oro"/>\n'
+              '      <packagedElement xmi:type="uml:InstanceSpecification" xmi:id="i_sim" name="morse" classifier="sim"/>\n'
+              '      <packagedElement xmi:type="uml:InstanceSpecification" xmi:id="i_main" name="mainInstance" classifier="sys">\n'
+              '        <slot xmi:id="sl1" definingFeature="sys_arm"><value xmi:type="uml:InstanceValue" xmi:id="v1" instance="i_arm"/></slot>\n'
+              '        <slot xmi:id="sl2" definingFeature="sys_brain"><value xmi:type="uml:InstanceValue" xmi:id="v2" instance="i_brain"/></slot>\n'
+              '      </packagedElement>\n'
+              '      <packagedElement xmi:type="uml:InstanceSpecification" xmi:id="i_arm" name="mainInstance.arm" classifier="a"/>\n'
+              '      <packagedElement xmi:type="uml:InstanceSpecification" xmi:id="i_brain" name="mainInstance.brain" classifier="b"/>\n'
+              '      <packagedElement xmi:type="uml:Abstraction" xmi:id="al1" name="allocate to orocos" client="i_brain" supplier="i_oro"/>\n'
+              '      <packagedElement xmi:type="uml:Abstraction" xmi:id="al2" name="allocate to morse" client="i_arm" supplier="i_sim"/>\n'
+              '    </packagedElement>\n')
+    apps = ('  <RobotML:Software xmi:id="s1" base_Class="a"/>\n  <RobotML:Software xmi:id="s2" base_Class="b"/>\n'
+            '  <RobotML:DataFlowPort xmi:id="s3" base_Port="a_state" direction="out"/>\n'
+            '  <RobotML:DataFlowPort xmi:id="s4" base_Port="b_state"/>\n'
+            '  <RobotML:RoboticMiddleware xmi:id="s5" base_Class="oro" kind="OROCOS"/>\n'
+            '  <RobotML:BlenderMorse xmi:id="s6" base_Class="sim"/>\n'
+            '  <RobotML:DeploymentPlan xmi:id="s7" base_Package="plan" mainInstance="i_main"/>\n'
+            '  <RobotML:Allocate xmi:id="s8" base_Abstraction="al1"/>\n  <RobotML:Allocate xmi:id="s9" base_Abstraction="al2"/>\n')
+    model = tmp_path / "plan.uml"
+    model.write_text(_xmi(body, apps, ROBOTML_NS), encoding="utf-8")
+    found: list[Diagnostic] = []
+    pim = _pim(model, found)
+    [ee] = pim.xpath("//p:platform/p:node[@kind='execution-environment']", namespaces=NS)
+    assert (ee.get("name"), ee.get("middleware")) == ("orocos", "OROCOS")
+    assert [d.get("deployed") for d in ee.findall("p:deployment", NS)] == ["sys_brain"]
+    [sim] = [d for d in found if d.code == "IMP123"]
+    assert sim.xmi_id == "al2" and sim.line and "simulator 'morse' (BlenderMorse)" in sim.message
+    assert not [d for d in found if d.code in ("IMP111", "IMP115")], [d.format() for d in found]
+    # the brain runs on Orocos; the simulated arm with it, as the only process
+    assert {i.get("name"): i.get("middleware") for i in pim.xpath("//p:binding/p:instance", namespaces=NS)} == \
+        {"arm": "OROCOS", "brain": "OROCOS"}

@@ -30,6 +30,7 @@
     xmlns:xs="http://www.w3.org/2001/XMLSchema"
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:tp="urn:robomda:xslt:template:private"
     xmlns:d="urn:robomda:dialects"
     xmlns:pim="urn:robomda:pim:1"
     xmlns:x="urn:robomda:import:xmi"
@@ -296,6 +297,82 @@
     <xsl:sequence select="if ($unwired) then 'unwired'
         else if (some $h in $e/type/@href satisfies (some $p in $fp:dialects/d:runtime-library/@href satisfies matches($h, $p)))
         then 'library' else ()"/>
+  </xsl:function>
+
+  <!-- the allocation rule of the dialect of an «Allocate» on Abstraction $e -->
+  <xsl:function name="fp:allocation-rule" as="element(d:allocation)?">
+    <xsl:param name="e" as="element()"/>
+    <xsl:variable name="pairs" as="element()*" select="fp:dialect-apps($e)"/>
+    <xsl:sequence select="(for $i in 1 to count($pairs) idiv 2
+                           return $pairs[2 * $i]/d:allocation[@stereotype eq local-name($pairs[2 * $i - 1])])[1]"/>
+  </xsl:function>
+
+  <!-- true when $e is an Abstraction its dialect reads as an allocation -->
+  <xsl:function name="fp:is-allocation" as="xs:boolean">
+    <xsl:param name="e" as="element()?"/>
+    <xsl:sequence select="exists($e[@x:type eq 'Abstraction']) and exists(fp:allocation-rule($e))"/>
+  </xsl:function>
+
+  <!-- slots by the instance their InstanceValue names -->
+  <xsl:key name="fp:slot-by-value" match="slot" use="value ! fp:ref-ids(., 'instance')"/>
+
+  <!-- the execution environments of a model's deployment plans (its
+       dialect's allocation rule, xslt/import/dialects.xml): one pim:node
+       per instance of a middleware robomda generates for that an
+       «Allocate» targets, its deployments the allocated parts; IMP123 for
+       each instance allocated to a simulator or another middleware -->
+  <xsl:function name="fp:allocation-nodes" as="element(pim:node)*">
+    <xsl:param name="root" as="element()"/>
+    <xsl:variable name="allocations" as="element()*"
+        select="$root/descendant::*[@x:type eq 'Abstraction'][exists(fp:allocation-rule(.))]"/>
+    <xsl:for-each-group select="$allocations" group-by="string(fp:ref-ids(., 'supplier')[1])">
+      <xsl:variable name="rule" as="element(d:allocation)" select="fp:allocation-rule(current-group()[1])"/>
+      <xsl:variable name="target" as="element()?" select="fp:element(current-group()[1], current-grouping-key())"/>
+      <xsl:variable name="apps" as="element()*"
+          select="$target ! fp:targets(., 'classifier') ! key('fp:stereotype-by-base', fp:id(.), root(.))"/>
+      <xsl:variable name="platform" as="element()?" select="$apps[local-name() eq $rule/@middleware][1]"/>
+      <xsl:variable name="literal" as="xs:string?"
+          select="$platform ! (fp:tag-literal(., $rule/@tag), string($rule/@default))[1]"/>
+      <xsl:variable name="middleware" as="xs:string?"
+          select="$rule/d:literal[upper-case(@name) eq upper-case(string($literal))][1]/@middleware"/>
+      <xsl:variable name="allocated" as="element()*" select="current-group()"/>
+      <xsl:choose>
+        <xsl:when test="exists($middleware)">
+          <pim:node id="{fp:id($target)}" name="{$target/@name}" qualified-name="{fp:qname($target, $root)}"
+              kind="execution-environment" middleware="{$middleware}"
+              dialect="{$rule/../@name}::{$rule/@middleware}">
+            <xsl:for-each select="$allocated">
+              <pim:deployment id="{fp:id(.)}" name="{@name}"
+                  deployed="{fp:targets(., 'client') ! fp:allocated-element(.) ! fp:id(.)}">
+                <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
+              </pim:deployment>
+            </xsl:for-each>
+          </pim:node>
+        </xsl:when>
+        <xsl:otherwise>
+          <xsl:variable name="what" as="xs:string"
+              select="if (exists($apps[local-name() = tokenize($rule/@simulator)]))
+                      then 'the simulator ''' || $target/@name || ''' (' || local-name($apps[local-name() = tokenize($rule/@simulator)][1]) || ')'
+                      else if (exists($platform)) then 'the middleware ''' || $target/@name || ''' (' || $literal || ')'
+                      else '''' || $target/@name || ''', which is no middleware'"/>
+          <xsl:for-each select="$allocated">
+            <xsl:sequence select="f:warn('IMP123', fp:id(.), fp:label(.) || ' allocates '
+                || string-join(fp:targets(., 'client') ! ('''' || @name || ''''), ', ') || ' to ' || $what
+                || ', for which robomda generates nothing: it is generated with the instances the model deploys on no'
+                || ' middleware (a simulated sensor is generated as a component of its own, for its user class to fill in)')"/>
+          </xsl:for-each>
+        </xsl:otherwise>
+      </xsl:choose>
+    </xsl:for-each-group>
+  </xsl:function>
+
+  <!-- what an allocated InstanceSpecification $spec stands for: the part
+       whose slot holds it (a deployment plan's instance of a part), else
+       its classifier (the plan's main instance: the whole system) -->
+  <xsl:function name="fp:allocated-element" as="element()?">
+    <xsl:param name="spec" as="element()"/>
+    <xsl:sequence select="(key('fp:slot-by-value', fp:id($spec), root($spec)) ! fp:targets(., 'definingFeature'),
+                           fp:targets($spec, 'classifier'))[1]"/>
   </xsl:function>
 
   <!-- the name of the top of the system model $root names (a dialect's

@@ -60,6 +60,9 @@
     <pim:platform>
       <xsl:apply-templates select="$all[@x:type = $node-metas][not(../@x:type = $node-metas)]"
           mode="mp:platform"/>
+      <!-- the execution environments of a tool's deployment plans (RobotML:
+           dialects.xsl) -->
+      <xsl:sequence select="fp:allocation-nodes($root)"/>
       <xsl:apply-templates select="$all[@x:type = $artifact-metas]" mode="mp:platform"/>
       <xsl:apply-templates select="$all[@x:type eq 'CommunicationPath']" mode="mp:platform"/>
     </pim:platform>

@@ -115,8 +115,12 @@
     <xsl:variable name="applications" as="element()*"
         select="$norm/x:XMI/*[not(namespace-uri() = ($U, $X))][@x:id]
                   [@*[starts-with(local-name(), 'base_')]]"/>
+    <!-- (not an allocation of a deployment plan to a simulator or another
+         middleware, nor its stereotype: IMP123 named it, dialects.xsl) -->
     <xsl:variable name="left-out" as="element()*"
-        select="($understood, $applications)[empty(key('fp:in-pim', fp:id(.), $pim))]"/>
+        select="($understood, $applications)[empty(key('fp:in-pim', fp:id(.), $pim))]
+                [not(fp:is-allocation(.) or (parent::x:XMI and (let $a := . return
+                                                                 some $b in fp:base-ids($a) satisfies fp:is-allocation(fp:element($a, $b)))))]"/>
     <!-- stereotype applications on no element of the model (tools apply
          their own to diagrams kept in xmi:Extension): one warning per
          stereotype, naming every application -->

@@ -63,8 +63,10 @@
        default (OROCOS); without the stereotype, the environment's name -->
   <xsl:function name="fp:middleware-name" as="xs:string">
     <xsl:param name="ee" as="element(pim:node)"/>
+    <!-- (a middleware its tool's profile gives, pim:node/@middleware: a
+         RobotML «RoboticMiddleware» that a deployment plan allocates to) -->
     <xsl:variable name="tag" as="xs:string?"
-        select="(fp:tag($ee, 'Middleware', 'kind')[normalize-space(.)],
+        select="($ee/@middleware ! string(.), fp:tag($ee, 'Middleware', 'kind')[normalize-space(.)],
                  if (exists(f:stereotype($ee, 'Middleware'))) then fp:tag-default('Middleware', 'kind') else ())[1]"/>
     <xsl:sequence select="if (normalize-space($tag)) then fp:literal($tag) else string($ee/@name)"/>
   </xsl:function>
