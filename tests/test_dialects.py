@@ -745,3 +745,73 @@ def test_random_sysml_systems_keep_every_flow_direction(system) -> None:
                 [dp] = pim.xpath(f"//p:bound-component/p:data-port[@port='{e.get('port')}'][@name='{e.get('data-port')}']",
                                  namespaces=NS)
                 assert dp.get("direction") == role
+
+
+@st.composite
+def umlrt_systems(draw) -> tuple[str, dict[str, bool], dict[str, str]]:
+    """A Papyrus-RT system: one protocol with an in set and an out set (rtMsgKind absent or written) of random
+    messages, capsules with ports typed by it, some conjugated, and connectors between them. Returns the file,
+    each port's conjugation and each message's set ('in' or 'out')."""
+    sets = {"in": draw(st.sampled_from(["", "in"])), "out": "out"}
+    messages: dict[str, str] = {}
+    interfaces = ""
+    for kind in ("in", "out"):
+        ops = ""
+        for m in range(draw(st.integers(min_value=1, max_value=2))):
+            mid = f"{kind}_m{m}"
+            messages[mid] = kind
+            payload = (f'<ownedParameter xmi:id="{mid}_p" name="v"><type xmi:type="uml:PrimitiveType" href="{PRIM}Real"/>'
+                       f'</ownedParameter>' if draw(st.booleans()) else "")
+            ops += f'      <ownedOperation xmi:type="uml:Operation" xmi:id="{mid}" name="{kind}{m}">{payload}</ownedOperation>\n'
+        interfaces += (f'    <packagedElement xmi:type="uml:Interface" xmi:id="set_{kind}" name="P{"~" if kind == "out" else ""}">\n'
+                       f'{ops}    </packagedElement>\n')
+    body = ('    <packagedElement xmi:type="uml:Collaboration" xmi:id="proto" name="P">\n'
+            '      <interfaceRealization xmi:type="uml:InterfaceRealization" xmi:id="proto_r" client="proto" supplier="set_in" contract="set_in"/>\n'
+            '    </packagedElement>\n' + interfaces
+            + '    <packagedElement xmi:type="uml:Usage" xmi:id="proto_u" client="proto" supplier="set_out"/>\n')
+    apps = ['  <UMLRealTime:Protocol xmi:id="a_proto" base_Collaboration="proto"/>\n']
+    apps += [f'  <UMLRealTime:RTMessageSet xmi:id="a_set_{k}" base_Interface="set_{k}"' + (f' rtMsgKind="{v}"' if v else "") + '/>\n'
+             for k, v in sets.items()]
+    ports: dict[str, bool] = {}
+    n = draw(st.integers(min_value=2, max_value=3))
+    for c in range(n):
+        conj = draw(st.booleans())
+        ports[f"c{c}_p"] = conj
+        body += (f'    <packagedElement xmi:type="uml:Class" xmi:id="c{c}" name="Capsule{c}" isActive="true">\n'
+                 f'      <ownedAttribute xmi:type="uml:Port" xmi:id="c{c}_p" name="p" type="proto" aggregation="composite"'
+                 + (' isConjugated="true"' if conj else "") + '/>\n    </packagedElement>\n')
+        apps.append(f'  <UMLRealTime:Capsule xmi:id="a_c{c}" base_Class="c{c}"/>\n')
+    connectors = "".join(_connector(f"k{c}", (f"top_q{c}", f"c{c}_p"), (f"top_q{c + 1}", f"c{c + 1}_p"))
+                         for c in range(n - 1) if ports[f"c{c}_p"] != ports[f"c{c + 1}_p"] or draw(st.booleans()))
+    body += _class("top", "Top", [], [(f"q{c}", f"c{c}") for c in range(n)], connectors, composite=True)
+    apps.append('  <UMLRealTime:Capsule xmi:id="a_top" base_Class="top"/>\n')
+    return _xmi(body, "".join(apps), ' xmlns:UMLRealTime="http://www.eclipse.org/papyrus/umlrt"'), ports, messages
+
+
+@settings(max_examples=EXAMPLES, derandomize=not RANDOM, deadline=None, database=None,
+          suppress_health_check=[HealthCheck.too_slow])
+@given(umlrt_systems())
+def test_random_umlrt_systems_receive_the_in_set_and_send_the_out_set(system) -> None:
+    """Whatever UML-RT system is drawn: robomda never ends INTERNAL; when it binds, a port receives the
+    messages of the set its protocol realizes (rtMsgKind in, absent or written) and sends those of the set it
+    uses, swapped when conjugated; every message connection is a queue from a sender to a receiver."""
+    text, ports, messages = system
+    import tempfile
+    with tempfile.TemporaryDirectory() as tmp:
+        model = Path(tmp) / "random.uml"
+        model.write_text(text, encoding="utf-8")
+        result = check(model)
+        assert result.exit_code in (0, 1) and not [d for d in result.diagnostics if d.code == "INTERNAL"]
+        try:
+            pim = _pim(model)
+        except RobomdaError as caught:
+            assert {d.code for d in caught.diagnostics if d.severity == "error"} <= {"BND007", "BND008"}, \
+                [d.format() for d in caught.diagnostics]
+            return
+    for d in pim.xpath("//p:binding/p:bound-component/p:data-port", namespaces=NS):
+        received = messages[d.get("datum")] == "in"
+        if ports[d.get("port")]:
+            received = not received
+        assert d.get("direction") == ("in" if received else "out"), (d.get("port"), d.get("datum"))
+    for connection in pim.xpath("//p:binding/p:connection", namespaces=NS):
+        assert connection.find("p:policy", NS).get("type") == "BUFFER"
