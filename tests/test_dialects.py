@@ -815,3 +815,25 @@ def test_random_umlrt_systems_receive_the_in_set_and_send_the_out_set(system) ->
         assert d.get("direction") == ("in" if received else "out"), (d.get("port"), d.get("datum"))
     for connection in pim.xpath("//p:binding/p:connection", namespaces=NS):
         assert connection.find("p:policy", NS).get("type") == "BUFFER"
+
+
+def test_papyrus_designer_flow_ports_give_the_direction_and_absent_means_inout(tmp_path: Path) -> None:
+    """Papyrus Designer: classes with ports used as parts are components (the rule for any tool); GCM's
+    «FlowPort» direction gives a port typed by its datum its direction, absent meaning inout."""
+    body = (DATA + _class("p", "Producer", [("q", "d")]) + _class("c", "Consumer", [("q", "d")])
+            + _class("mo", "Monitor", [("q", "d")])
+            + _class("sys", "System", [], [("prod", "p"), ("con", "c"), ("mon", "mo")],
+                     _connector("k1", ("sys_prod", "p_q"), ("sys_con", "c_q"))
+                     + _connector("k2", ("sys_prod", "p_q"), ("sys_mon", "mo_q")), composite=True))
+    apps = ('  <GCM:FlowPort xmi:id="g1" base_Port="p_q" direction="out"/>\n'
+            '  <GCM:FlowPort xmi:id="g2" base_Port="c_q" direction="in"/>\n'
+            '  <GCM:FlowPort xmi:id="g3" base_Port="mo_q"/>\n')
+    model = tmp_path / "designer.uml"
+    model.write_text(_xmi(body, apps, ' xmlns:GCM="http://www.eclipse.org/papyrus/GCM/1"'), encoding="utf-8")
+    found: list[Diagnostic] = []
+    pim = _pim(model, found)
+    data = sorted((d.getparent().get("name"), d.get("name"), d.get("direction"))
+                  for d in pim.xpath("//p:binding/p:bound-component/p:data-port", namespaces=NS))
+    assert data == [("Consumer", "q", "in"), ("Monitor", "q_in", "in"), ("Monitor", "q_out", "out"),
+                    ("Producer", "q", "out")]
+    assert [d.xmi_id for d in found if d.code == "BND029"] == ["mo_q"]

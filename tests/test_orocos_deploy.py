@@ -49,7 +49,9 @@ MODELS = ["headlamp/model.xmi", "headlamp/model.ea.xmi", "meka/model.xmi", "meka
           # structured data: a typekit, struct / enum / array ports and properties
           "quadarm/model.xmi", "structured/model.xmi",
           # seed 004: a configuration constant, read by the controller in its configureHook
-          "pidswap/model.xmi"]
+          "pidswap/model.xmi",
+          # components drawn as classes in the modelling tools' own profiles (issue 51)
+          "robotml/model.xmi", "p4r/model.xmi", "umlrt/model.xmi", "sysml/model.xmi"]
 
 
 
