@@ -47,11 +47,19 @@
                           else $fp:dialects[matches($uri, @uri)][1]"/>
   </xsl:function>
 
+  <!-- the stereotype applications of a known dialect, all under one key
+       value: whether a model uses any is one look-up -->
+  <xsl:key name="fp:dialect-use" match="/x:XMI/*[not(namespace-uri() = ($U, $X))]"
+      use="if (exists(fp:dialect(.))) then 'any' else ()"/>
+
   <!-- the stereotype applications on $e that a dialect knows, each with
        its dialect: (application, dialect) pairs flattened -->
   <xsl:function name="fp:dialect-apps" as="element()*">
     <xsl:param name="e" as="element()"/>
-    <xsl:for-each select="key('fp:stereotype-by-base', fp:id($e), root($e))">
+    <!-- a model in no known dialect (most: the robomda profile, or none)
+         asks no more than one look-up -->
+    <xsl:for-each select="if (empty(key('fp:dialect-use', 'any', root($e)))) then ()
+                          else key('fp:stereotype-by-base', fp:id($e), root($e))">
       <xsl:variable name="dialect" as="element(d:dialect)?" select="fp:dialect(.)"/>
       <xsl:if test="exists($dialect)">
         <xsl:sequence select="., $dialect"/>
@@ -210,7 +218,7 @@
        it -->
   <xsl:function name="fp:message-dialect" as="element(d:dialect)?">
     <xsl:param name="e" as="element()"/>
-    <xsl:sequence select="(key('fp:dep-by-supplier', fp:id($e), root($e))
+    <xsl:sequence select="(if (empty(key('fp:dialect-use', 'any', root($e)))) then () else key('fp:dep-by-supplier', fp:id($e), root($e))
                            ! fp:targets(., 'client')[@x:type eq 'Collaboration']
                            ! (let $pairs := fp:dialect-apps(.)
                               return for $i in 1 to count($pairs) idiv 2
@@ -324,7 +332,8 @@
   <xsl:function name="fp:allocation-nodes" as="element(pim:node)*">
     <xsl:param name="root" as="element()"/>
     <xsl:variable name="allocations" as="element()*"
-        select="$root/descendant::*[@x:type eq 'Abstraction'][exists(fp:allocation-rule(.))]"/>
+        select="if (empty(key('fp:dialect-use', 'any', root($root)))) then ()
+                else $root/descendant::*[@x:type eq 'Abstraction'][exists(fp:allocation-rule(.))]"/>
     <xsl:for-each-group select="$allocations" group-by="string(fp:ref-ids(., 'supplier')[1])">
       <xsl:variable name="rule" as="element(d:allocation)" select="fp:allocation-rule(current-group()[1])"/>
       <xsl:variable name="target" as="element()?" select="fp:element(current-group()[1], current-grouping-key())"/>
@@ -359,7 +368,9 @@
             <xsl:sequence select="f:warn('IMP123', fp:id(.), fp:label(.) || ' allocates '
                 || string-join(fp:targets(., 'client') ! ('''' || @name || ''''), ', ') || ' to ' || $what
                 || ', for which robomda generates nothing: it is generated with the instances the model deploys on no'
-                || ' middleware (a simulated sensor is generated as a component of its own, for its user class to fill in)')"/>
+                || ' middleware (a simulated sensor is generated as a component of its own, for its user class to fill in;'
+                || ' the allocation and its stereotype: xmi:ids='
+                || string-join((fp:id(.), key('fp:stereotype-by-base', fp:id(.), root(.)) ! fp:id(.)), ',') || ')')"/>
           </xsl:for-each>
         </xsl:otherwise>
       </xsl:choose>

@@ -51,6 +51,8 @@
   x:qid.
   Errors:  IMP040 a file outside the sandbox; every one of the model is
            reported (f:fail-all); ID is the referencing element's xmi:id.
+  Errors (as maps, raised with the others): IMP050 a referenced model file
+           that is there but not well-formed XML.
   Warnings: IMP041 a referenced file that is not there (its elements are
            left out; the references stay external, as for a library).
            IMP049 references into a MagicDraw used project that leave out
@@ -279,6 +281,13 @@
           <xsl:sequence select="map { 'code': 'IMP040', 'id': $id, 'message': $what || ', a file outside '
               || fp:sandbox-text($sandbox) || ' (' || fp:uri-decode($uri) || '): robomda reads only files there and '
               || 'never the network; add its folder with --model-path DIR' }"/>
+        </xsl:when>
+        <xsl:when test="not(doc-available($uri)) and unparsed-text-available($uri)">
+          <!-- there, but not XML (a file saved half-way): bad input, not a
+               file left out -->
+          <xsl:sequence select="map { 'code': 'IMP050', 'id': $id, 'message': $what || ', but '
+              || fp:uri-decode($uri) || ' is not well-formed XML (saved half-way?): an XML parser names the line'
+              || ' (xmllint --noout FILE); robomda reads none of the model until it is' }"/>
         </xsl:when>
         <xsl:when test="not(doc-available($uri))">
           <xsl:sequence select="f:warn('IMP041', $id, $what || ', but ' || fp:uri-decode($uri) || ' is not there (or not XML): '
