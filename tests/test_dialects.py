@@ -837,3 +837,25 @@ def test_papyrus_designer_flow_ports_give_the_direction_and_absent_means_inout(t
     assert data == [("Consumer", "q", "in"), ("Monitor", "q_in", "in"), ("Monitor", "q_out", "out"),
                     ("Producer", "q", "out")]
     assert [d.xmi_id for d in found if d.code == "BND029"] == ["mo_q"]
+
+
+def test_the_top_capsule_the_model_names_is_the_system(tmp_path: Path) -> None:
+    """Papyrus-RT: the model's UMLRT_Default_top annotation names the top capsule; another capsule whose
+    parts would be instances too (a test harness drawn beside it) is not the system."""
+    body = (DATA + _class("s", "Sensor", [("v", "d")])
+            + _class("top", "Top", [], [("sensor", "s")], composite=True)
+            + _class("bench", "Bench", [], [("probe", "s")], composite=True))
+    annotation = ('    <eAnnotations xmi:type="ecore:EAnnotation" xmi:id="ann" source="UMLRT_Default_top">\n'
+                  '      <details xmi:type="ecore:EStringToStringMapEntry" xmi:id="ann_d" key="top_name" value="Top"/>\n'
+                  '    </eAnnotations>\n')
+    apps = "".join(f'  <UMLRealTime:Capsule xmi:id="a_{c}" base_Class="{c}"/>\n' for c in ("s", "top", "bench"))
+    text = _xmi(annotation + body, apps, ' xmlns:UMLRealTime="http://www.eclipse.org/papyrus/umlrt"'
+                ' xmlns:ecore="http://www.eclipse.org/emf/2002/Ecore"')
+    model = tmp_path / "tops.uml"
+    model.write_text(text, encoding="utf-8")
+    pim = _pim(model)
+    assert pim.xpath("//p:application/@top", namespaces=NS) == ["Top"]
+    assert [i.get("name") for i in pim.xpath("//p:binding/p:instance", namespaces=NS)] == ["sensor"]
+    # without the annotation, both composites are systems
+    model.write_text(text.replace(annotation, ""), encoding="utf-8")
+    assert sorted(i.get("name") for i in _pim(model).xpath("//p:binding/p:instance", namespaces=NS)) == ["probe", "sensor"]
