@@ -1,29 +1,41 @@
 <?xml version="1.0" encoding="UTF-8"?>
 <!--
-  xslt/import/dialects.xsl - components drawn as classes with ports in a
-  modelling tool's own profile (RobotML ...), read in that profile's terms.
+  xslt/import/dialects.xsl - what the modelling tools' own profiles mean
+  (RobotML, Papyrus for Robotics, UML-RT, SysML, Papyrus Designer), read
+  in each profile's terms: functions for application.xsl, stereotypes.xsl,
+  platform.xsl, import.xsl and report.xsl.
 
-  Reads:   the normalised XMI's stereotype applications (key
-           fp:stereotype-by-base, xmi-common.xsl) and the table
-           dialects.xml beside this file (which profile, by namespace URI,
-           says what).
-  Writes:  attributes and children of the PIM elements application.xsl
-           makes (schemas/pim/1/pim.xsd):
-           - pim:class/@component="true" and @dialect, when a stereotype
-             of a known dialect marks the class as a component (bind
-             takes such a class as a component: xslt/m2m/bind.xsl,
-             "Classes taken as components");
-           - pim:port/@direction (in, out, inout) and @dialect, from the
-             dialect's data-port stereotype and its direction tag (its
-             default when the tag is absent); pim:port/@buffer from its
-             buffer-size tag;
-           - pim:provided / pim:required of a port stereotyped by the
-             dialect's service port, for the interface typing the port,
-             by its kind tag (its default when absent).
-  Params:  none.
-  Errors:  none raised; a direction or kind literal the table does not
-           know is written as it is (@direction-literal) and the bind
-           stage reports it (BND030).
+  Reads:   the normalised XMI's stereotype applications (keys
+           fp:stereotype-by-base, fp:dep-by-supplier of xmi-common.xsl), the
+           model element as written (its top annotation), and the table
+           dialects.xml beside this file: which profile, recognised by the
+           namespace URI of its applications (never by file or tool name),
+           says what. docs/profile.md, "Components drawn as classes".
+  Writes:  attributes and children of the PIM elements the import makes
+           (schemas/pim/1/pim.xsd):
+           - pim:class/@component (true: a component; false: never one),
+             @dialect, @managed, @parameters;
+           - pim:port/@direction (or @direction-literal for a literal the
+             table does not know; bind reports it, BND030), @buffer,
+             @dialect, @runtime; the conjugation a profile's tag gives;
+             pim:provided / pim:required of a service port by its kind;
+           - pim:attribute/@direction of a flow property;
+           - pim:interface/@pattern, @provided-direction, @dialect, @via of
+             a communication pattern or a UML-RT message set, and its data
+             (fp:pattern-datum, fp:message-data);
+           - pim:stereotype/@means and pim:tag/@means (a tool's stereotype
+             that stands for a robomda one: RobotML «Software» for
+             «Activity»);
+           - pim:application/@top (fp:top-name);
+           - pim:node elements (execution environments) of a deployment
+             plan's allocations (fp:allocation-nodes).
+  Params:  none.  Keys: fp:dialect-use (any application of a known
+           dialect: one look-up says a model uses none), fp:slot-by-value.
+  Errors:  none raised. Warnings: IMP120 a tag that means something only
+           under a condition of its profile that does not hold; IMP121 a
+           UML-RT message with no payload; IMP122 one with several
+           parameters; IMP123 an allocation to a simulator or a middleware
+           robomda has no target for.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"

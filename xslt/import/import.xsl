@@ -27,16 +27,18 @@
            so no parameter gives it).
   Modules: xmi-common.xsl (normalisation, keys, references, types),
            files.xsl (models split over several files, the sandbox:
-           IMP040, IMP041, IMP049),
+           IMP040, IMP041, IMP049, IMP050),
            urdf.xsl (the kinematic chains of robot Devices, counted in
            the URDF files their Robot stereotype names: IMP040,
            IMP042-IMP048),
            check.xsl (dangling references), application.xsl,
            connector-ends.xsl (nested connector ends), platform.xsl,
            jobs.xsl (jobs and subsystems),
-           stereotypes.xsl, dialect-*.xsl, ../common/profile.xsl (the
-           robomda profile URI); data:
-           ../common/primitive-types.xml.
+           stereotypes.xsl, dialect-*.xsl (the tools' XMI quirks),
+           dialects.xsl (the tools' own profiles: components drawn as
+           classes, IMP120-IMP123), ../common/profile.xsl (the robomda
+           profile URI); data: ../common/primitive-types.xml,
+           dialects.xml.
 
   Errors (namespace urn:robomda:error, raised with f:fail; the description
   is "CODE: message [xmi:id=ID]", ID being the offending element's xmi:id):
@@ -86,7 +88,8 @@
   Robot's rootLink / tipLink without urdf), IMP117 (platform.xsl: a
   deployment owned by a node whose client is another), IMP041 and IMP049
   (files.xsl: a model file that is not there, references into a MagicDraw
-  used project); docs/errors.md. Every
+  used project), IMP120-IMP123 (dialects.xsl: what a tool's own profile
+  says that robomda reads differently or not at all); docs/errors.md. Every
   duplicate id and dangling reference is reported (f:fail-all).
 -->
 <xsl:stylesheet version="3.0"

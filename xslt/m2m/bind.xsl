@@ -129,7 +129,11 @@
   Notes: SUB030 an «Alternative» component that no part instantiates is
   not generated (xslt/check/substitute.xsl checks it).
   Warnings: BND029 an inout port of a tool's profile, generated as an
-  output and an input (bind/ports.xsl).
+  output and an input (bind/ports.xsl); BND004 a port left out, BND031 a
+  connector left out with it (bind/ports.xsl, bind/connections.xsl);
+  BND032 components given ports (bind/classes.xsl); BND034 ports typed by
+  a library outside the model, said once (this file). Note BND033 a
+  runtime port (bind/ports.xsl).
   BND028 the model draws no execution environment: its instances
   run in one default process per host (bind/instances.xsl), named once,
   on the first instance, with how to model the platform.

@@ -6,11 +6,18 @@
   Writes:  parts of pim:binding (schemas/pim/1/binding.xsd), or values.
   Params:  none.  Keys: those of bind.xsl.
   Provides: fp:bound-component, fp:component-name, fp:port-interfaces, fp:data-ports, fp:port-problems,
-           fp:constant («Constant»: data-port/@constant).
+           fp:constant («Constant»: data-port/@constant), fp:provided-direction, fp:flip,
+           fp:is-message-set.
+  A port's data ports follow what its tool's profile says
+  (xslt/import/dialects.xsl): a direction (inout: a writer and a reader),
+  the flow properties of its type (SysML), a pattern whose provider reads
+  (a Papyrus for Robotics Send, a UML-RT message set), a message set's
+  messages, each a data port of its own.
   Errors:  BND002, BND005, BND030 (as data for f:fail-all), BND011.
   Warnings: BND004 a port whose interface has no datum and no operation,
-           left out; BND029 an inout port of a dialect generated as an output
-           and an input.
+           left out; BND029 an inout port or flow property generated as an
+           output and an input. Note BND033: a port that is the runtime's
+           service in its profile, not generated.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
