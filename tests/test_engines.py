@@ -66,7 +66,13 @@ STAGES = _stages()
 ONE_TARGET = [p.parent for p in sorted((ROOT / "fixtures" / "orocos").glob("*/model.xmi"))]
 # the ROS-only fixtures (fixtures/ros: e.g. managed lifecycle nodes) keep PSM goldens only: their text steps
 ROS_ONLY = [p.parent for p in sorted((ROOT / "fixtures" / "ros").glob("*/model.xmi"))]
-STAGE_RUNS = [(case, step) for case in CASES for step in STAGES] + [
+# the dialect fixtures (components drawn as classes in the tools' own profiles, issue 51): what is theirs
+# alone is the import's and bind's reading of each profile; their PSM and text stages run the generators
+# every other case runs, so the engines compare their import and bind (every engine) and the runner's
+# whole chain on Saxon-HE Java only
+DIALECTS = ("robotml", "p4r", "umlrt", "sysml")
+STAGE_RUNS = [(case, step) for case in CASES for step in STAGES
+              if case.name not in DIALECTS or step in ("import", "bind")] + [
     (case, step) for case in ONE_TARGET for step in STAGES if step in ("import", "bind") or step.startswith("orocos-")] + [
     (case, step) for case in ROS_ONLY for step in STAGES if step in ("ros1-text", "ros2-text")]
 
