@@ -131,8 +131,17 @@ def workdir(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return tmp_path_factory.mktemp("engines")
 
 
-@pytest.mark.parametrize("engine", ENGINES)
-@pytest.mark.parametrize(("case", "step"), STAGE_RUNS, ids=[f"{step}-{case.name}" for case, step in STAGE_RUNS])
+# SaxonJS takes 15 s a stage of a dialect fixture: it reads the import and bind of the two whose dialects
+# take the most paths of dialects.xsl and bind/classes.xsl (Papyrus for Robotics: patterns, parameter blocks,
+# activities, managed nodes; UML-RT: message sets, conjugation, runtime ports, the top capsule); Saxon-HE Java
+# reads all four
+SAXONJS_DIALECTS = ("p4r", "umlrt")
+STAGE_PARAMS = [pytest.param(engine.values[0], case, step, id=f"{step}-{case.name}-{engine.id}", marks=engine.marks)
+                for engine in ENGINES for case, step in STAGE_RUNS
+                if not (engine.id == "saxonjs" and case.name in DIALECTS and case.name not in SAXONJS_DIALECTS)]
+
+
+@pytest.mark.parametrize(("engine", "case", "step"), STAGE_PARAMS)
 def test_each_stage_writes_the_same_bytes(engine: Cli, case: Path, step: str, workdir: Path) -> None:
     xsl, source, golden, params, target = STAGES[step]
     out = workdir / f"{engine.name}-{case.name}-{step}.xml"
