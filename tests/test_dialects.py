@@ -859,3 +859,55 @@ def test_the_top_capsule_the_model_names_is_the_system(tmp_path: Path) -> None:
     # without the annotation, both composites are systems
     model.write_text(text.replace(annotation, ""), encoding="utf-8")
     assert sorted(i.get("name") for i in _pim(model).xpath("//p:binding/p:instance", namespaces=NS)) == ["probe", "sensor"]
+
+
+# ------------------------------------------------------------- Papyrus for Robotics' ROS 2 library (item 3)
+P4RLIB = ROOT / "fixtures" / "ros" / "p4rlib"
+
+
+def test_p4r_ports_typed_by_its_ros2_library_carry_the_library_messages(tmp_path: Path) -> None:
+    found: list[Diagnostic] = []
+    pim = _pim(P4RLIB / "model.xmi", found)
+    # no library reference is lost: each service the ports name is stood in, once, in a package
+    # named after its ROS package, binding the pattern its prefix names to the library's message
+    services = {i.get("id"): (i.getparent().get("name"), i.get("name"), i.get("pattern"),
+                              [(a.get("type-name"), a.get("type-library")) for a in i.findall("p:attribute", NS)])
+                for i in pim.xpath("//p:interface", namespaces=NS)}
+    assert services == {
+        "robomda.lib.std_msgs.P_String": ("std_msgs", "P_String", "Push", [("std_msgs/String", "ros-message")]),
+        "robomda.lib.std_msgs.S_Int32": ("std_msgs", "S_Int32", "Send", [("std_msgs/Int32", "ros-message")]),
+        "robomda.lib.std_srvs.Q_Trigger": ("std_srvs", "Q_Trigger", "Query", [])}
+    assert not [d for d in found if d.code in ("IMP112", "BND034")], [d.format() for d in found]
+    # the Query is left out, said where it is drawn; the rest flows as the patterns mean
+    [query] = [d for d in found if d.code == "BND004"]
+    assert query.xmi_id == "_p4rlib_rly_reset" and query.line and "a Query" in query.message
+    data = {(d.getparent().get("name"), d.get("name")): (d.get("direction"), d.get("type-name"))
+            for d in pim.xpath("//p:binding/p:bound-component/p:data-port", namespaces=NS)}
+    assert data == {("Talker", "chatter"): ("out", "std_msgs/String"), ("Relay", "chatter"): ("in", "std_msgs/String"),
+                    ("Relay", "count"): ("out", "std_msgs/Int32"), ("Counter", "count"): ("in", "std_msgs/Int32")}
+    # the library's primitive ids are primitives: the parameter typed by its float64 is a float64
+    [rate] = pim.xpath("//p:component[@name='Talker']/p:attribute[@name='rate']", namespaces=NS)
+    assert (rate.get("primitive"), rate.get("type-library")) == ("float64", "ros-primitive")
+
+
+@pytest.mark.parametrize("target, cpp", [("ros2", "std_msgs::msg::String"), ("ros1", "std_msgs::String")])
+def test_the_ros_targets_carry_a_library_message_as_it_is(target: str, cpp: str, tmp_path: Path) -> None:
+    generate(P4RLIB / "model.xmi", tmp_path / target, target, write=True)
+    talker = (tmp_path / target / "src" / "Talker.cpp").read_text(encoding="utf-8")
+    assert f"create_publisher<{cpp}>" in talker or f"advertise<{cpp}>" in talker
+    # the user's base class declares its accessors with the message, so it includes its header
+    base = (tmp_path / target / "include" / "p4rlib" / "TalkerBase.hpp").read_text(encoding="utf-8")
+    header = "std_msgs/msg/string.hpp" if target == "ros2" else "std_msgs/String.h"
+    assert f"#include <{header}>" in base and f"virtual {cpp} getString() const = 0;" in base
+    assert "<depend>std_msgs</depend>" in (tmp_path / target / "package.xml").read_text(encoding="utf-8")
+
+
+def test_orocos_and_openrtm_name_a_library_message_they_cannot_carry(tmp_path: Path) -> None:
+    with pytest.raises(RobomdaError) as failed:
+        generate(P4RLIB / "model.xmi", tmp_path / "orocos", "orocos", write=True)
+    errors = [d for d in failed.value.diagnostics if d.severity == "error"]
+    assert errors and all(d.code == "ORO001" and d.line and "message of the ROS library" in d.message for d in errors)
+    assert not (tmp_path / "orocos").exists()
+    warned = generate(P4RLIB / "model.xmi", tmp_path / "openrtm", "openrtm", write=True).warnings
+    left_out = [d for d in warned if d.code == "RTM001" and "message of the ROS library" in d.message]
+    assert {d.xmi_id for d in left_out} >= {"_p4rlib_tlk_chatter", "_p4rlib_rly_count"}

@@ -11,7 +11,8 @@ no realizing class, so robomda writes the user's classes once; the test fills th
   the writers at the end of each chain, which write only what went through the component before them:
   so every connection carried data from the port the dialect makes a writer to the one it makes a
   reader (the other way round, RTT refuses the connection); then a clean stop.
-- ROS 2: builds the package with colcon; launches it; for Papyrus for Robotics the nodes are managed
+- ROS 2: builds the package with colcon (with fixtures/ros/p4rlib, whose ports Papyrus for Robotics'
+  ROS 2 library types); launches it; for Papyrus for Robotics the nodes are managed
   (lifecycle) nodes, and each reports ``active``; messages flow on every connection topic, and the
   topic in the middle carries what went through; SIGINT stops it with no ERROR line.
 """
@@ -169,10 +170,17 @@ def test_orocos_components_run_and_data_flows_as_the_dialect_means(fixture: str,
 
 
 # ------------------------------------------------------------------------------------------- ROS 2
-ROS2_FIXTURES = ["robotml", "p4r", "umlrt", "sysml"]
+# the dialect fixtures, and fixtures/ros/p4rlib: Papyrus for Robotics ports typed by its ROS 2 library,
+# carried as std_msgs/String and std_msgs/Int32 themselves
+ROS2_FIXTURES = ["robotml", "p4r", "umlrt", "sysml", "p4rlib"]
 # nodes whose output flows only on what they receive (no period): their topics flowing proves that the
 # connection into them carries data in the direction the dialect means
-MANAGED = {"p4r": ["/camera", "/detector", "/logger"]}
+MANAGED = {"p4r": ["/camera", "/detector", "/logger"], "p4rlib": ["/talker", "/relay", "/counter"]}
+
+
+def _fixture_model(fixture: str) -> Path:
+    return next(p for p in (CASES / fixture / "model.xmi", ROOT / "fixtures" / "ros" / fixture / "model.xmi")
+                if p.is_file())
 
 
 @pytest.fixture(scope="module")
@@ -185,7 +193,7 @@ def ros2_ws(tmp_path_factory):
     packages = {}
     for fixture in ROS2_FIXTURES:
         out = ws / "src" / fixture
-        generate(CASES / fixture / "model.xmi", out, "ros2")
+        generate(_fixture_model(fixture), out, "ros2")
         packages[fixture] = fixture
     return ros2, ros2.Workspace(ws, packages, ros2.colcon_build(ws, "--continue-on-error "))
 

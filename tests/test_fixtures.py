@@ -793,8 +793,10 @@ def test_smoke_program(case: str, tmp_path: Path):
                                     ROOT / "fixtures" / "ros" / "jointstate" / "make.py",
                                     ROOT / "fixtures" / "ros" / "managed" / "make.py",
                                     ROOT / "fixtures" / "ros" / "usercode" / "make.py",
+                                    ROOT / "fixtures" / "ros" / "p4rlib" / "make.py",
                                     CASES_DIR / "pidswap" / "make.py"],
-                         ids=["tuned", "undeployed", "structured", "jointstate", "managed", "usercode", "pidswap"])
+                         ids=["tuned", "undeployed", "structured", "jointstate", "managed", "usercode", "p4rlib",
+                              "pidswap"])
 def test_derived_fixture_is_what_its_make_py_writes(script: Path):
     """A derived fixture is its source model with the edits its make.py lists, and nothing else."""
     import importlib.util

@@ -204,13 +204,27 @@
   <!-- the datum of interface $e that binds a pattern carrying one (Push,
        Send): a pim:attribute for the first argument of its template
        binding (its parameterSubstitution's id; named and typed by the
-       actual, a data type of the model) -->
+       actual: a data type of the model, else the type a library's href
+       names, as fp:href-type names it: a ROS message sensor_msgs/Image
+       is the datum Image) -->
   <xsl:function name="fp:pattern-datum" as="element(pim:attribute)?">
     <xsl:param name="e" as="element()"/>
     <xsl:param name="root" as="element()"/>
     <xsl:if test="exists(fp:pattern($e)/@provided)">
       <xsl:variable name="substitution" as="element()?" select="($e/templateBinding/parameterSubstitution)[1]"/>
       <xsl:variable name="actual" as="element()?" select="$substitution ! fp:targets(., 'actual')[1]"/>
+      <xsl:variable name="library" as="map(*)?"
+          select="if (exists($actual)) then () else ($substitution/actual/@href)[1] ! fp:href-type(.)"/>
+      <xsl:if test="exists($library)">
+        <xsl:variable name="name" as="xs:string" select="tokenize($library?name, '/')[last()]"/>
+        <pim:attribute id="{fp:id($substitution)}" name="{$name}"
+            qualified-name="{fp:qname($e, $root)}::{$name}" type-name="{$library?name}"
+            type-library="{$library?library}" visibility="public">
+          <xsl:for-each select="$library?kind">
+            <xsl:attribute name="primitive" select="."/>
+          </xsl:for-each>
+        </pim:attribute>
+      </xsl:if>
       <xsl:if test="exists($actual)">
         <pim:attribute id="{fp:id($substitution)}" name="{$actual/@name}"
             qualified-name="{fp:qname($e, $root)}::{$actual/@name}" type="{fp:id($actual)}"

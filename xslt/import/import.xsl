@@ -114,6 +114,7 @@
   <xsl:include href="check.xsl"/>
   <xsl:include href="stereotypes.xsl"/>
   <xsl:include href="dialects.xsl"/>
+  <xsl:include href="stand-ins.xsl"/>
   <xsl:include href="application.xsl"/>
   <xsl:include href="connector-ends.xsl"/>
   <xsl:include href="platform.xsl"/>
@@ -164,9 +165,10 @@
           <xsl:apply-templates select="$src-root" mode="mp:normalise"/>
         </xsl:document>
       </xsl:variable>
+      <!-- and the library services it names stood in (stand-ins.xsl) -->
       <xsl:variable name="norm" as="document-node()"
-          select="if (empty($linked)) then $main-norm
-                  else fp:merged($main-norm, $linked ! fp:normalised(doc(.)), (string(base-uri(.)), $linked), $sandbox)"/>
+          select="fp:with-stand-ins(if (empty($linked)) then $main-norm
+                  else fp:merged($main-norm, $linked ! fp:normalised(doc(.)), (string(base-uri(.)), $linked), $sandbox))"/>
       <xsl:variable name="model-el" as="element()" select="fp:model-el($norm)"/>
       <xsl:variable name="root" as="element()" select="fp:model-root($model-el)"/>
       <xsl:if test="fp:check-model($norm, $model-el)">

@@ -610,14 +610,19 @@
   </xsl:function>
 
   <!-- what an href says about a type: map { 'library': fp:href-library,
-       'name': fp:href-name without a dialect name, 'kind': fp:primitive-kind
+       'name': the library's name rule's (primitive-types.xml: a ROS message
+       of Papyrus for Robotics' library is package/Name), else fp:href-name
+       without a dialect name, 'kind': fp:primitive-kind
        of the two }. The same few hrefs repeat thousands of times, so
        fp:href-types computes this once per distinct href of a document and
        fp:typed looks it up. -->
   <xsl:function name="fp:href-type" as="map(*)">
     <xsl:param name="href" as="xs:string"/>
     <xsl:variable name="lib" as="xs:string" select="fp:href-library($href)"/>
-    <xsl:variable name="name" as="xs:string" select="fp:href-name($href, ())"/>
+    <xsl:variable name="rule" as="element(pt:name)?"
+        select="$primitive-table/pt:primitive-types/pt:library[@name eq $lib]/pt:name[matches($href, @pattern)][1]"/>
+    <xsl:variable name="name" as="xs:string"
+        select="if ($rule) then replace($href, $rule/@pattern, $rule/@replacement) else fp:href-name($href, ())"/>
     <xsl:sequence select="map { 'library': $lib, 'name': $name, 'kind': fp:primitive-kind($lib, $name) }"/>
   </xsl:function>
 

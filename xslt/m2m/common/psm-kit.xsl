@@ -27,6 +27,10 @@
     fp:check-class-names($components, $code)
     fp:is-array($typed)          multiplicity upper bound other than 1
     fp:type-label($typed)        'Type' or 'Type[*]', for messages
+    fp:type-library($typed)      the library of its type (a data port: its datum's)
+    fp:library-note($typed)      what a target that cannot carry a ROS library
+                                 message says of one: ' (a message of ...)', else ''
+
     fp:realization($bc)          the realizing class of a bound component
     fp:owner($bc)                where operations and attributes are read
     fp:callable($bc)             the non-private operations of the realization
@@ -326,7 +330,19 @@
                           || (if (fp:is-array($typed)) then '[' || $typed/@upper || ']' else '')"/>
   </xsl:function>
 
+  <xsl:function name="fp:type-library" as="xs:string?">
+    <xsl:param name="typed" as="element()"/>
+    <xsl:sequence select="($typed/@type-library, $typed/self::pim:data-port/key('fp:id', @datum, root(.))/@type-library)[1]"/>
+  </xsl:function>
+
+  <xsl:function name="fp:library-note" as="xs:string">
+    <xsl:param name="typed" as="element()"/>
+    <xsl:sequence select="if (fp:type-library($typed) eq 'ros-message')
+        then ' (a message of the ROS library the model names, which the ros1 and ros2 targets carry)' else ''"/>
+  </xsl:function>
+
   <!-- ================================================ component wrapper -->
+
   <xsl:function name="fp:realization" as="element(pim:class)?">
     <xsl:param name="bc" as="element(pim:bound-component)"/>
     <xsl:sequence select="key('fp:id', $bc/@realization, root($bc))"/>

@@ -222,7 +222,8 @@
         <xsl:choose>
           <xsl:when test="empty($type)">
             <xsl:sequence select="f:warn('RTM001', string(@port), 'port ''' || @port-name || ''' of component ''' || $bc/@name
-                || ''' carries ' || fp:type-label(.) || ', which has no OpenRTM data type (an enumeration needs a literal):'
+                || ''' carries ' || fp:type-label(.) || fp:library-note(.) || ', which has no OpenRTM
+ data type (an enumeration needs a literal):'
                 || ' the RT-Component has no such port')"/>
           </xsl:when>
           <xsl:otherwise>

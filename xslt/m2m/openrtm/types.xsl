@@ -213,7 +213,7 @@
     <xsl:param name="package" as="xs:string"/>
     <xsl:sequence select="(fp:rtm-type($attribute, $package),
         f:fail('RTM021', $attribute/@id, 'attribute ''' || $attribute/@name || ''' of data type ''' || $datatype/@name || ''' has type '''
-               || fp:type-label($attribute) || ''', which has no C++ / IDL type on OpenRTM (an enumeration needs a literal)'))[1]"/>
+               || fp:type-label($attribute) || '''' || fp:library-note($attribute) || ', which has no C++ / IDL type on OpenRTM (an enumeration needs a literal)'))[1]"/>
   </xsl:function>
 
   <!-- ================================================ configuration values -->

@@ -95,8 +95,9 @@
     <xsl:variable name="type" as="element(ty:type)?" select="fp:oro-type($typed)"/>
     <xsl:sequence select="if (exists($type) and ($type/@primitive ne 'void' or $what eq 'result'))
         then $type
-        else f:fail('ORO001', $id, $what || ' has type ''' || fp:type-label($typed)
-                     || ''', which robomda cannot map to an Orocos C++ / XML type (supported: '
+        else f:fail('ORO001', $id, $what || ' has type ''' || fp:type-label($typed) || '''' || fp:library-note($typed)
+                     || ', which robomda cannot map
+ to an Orocos C++ / XML type (supported: '
                      || string-join($fp:types//ty:type[@primitive ne 'void']/@primitive, ', ')
                      || ', the model''s data types and enumerations with a literal, and arrays of these but boolean)')"/>
   </xsl:function>

@@ -30,6 +30,8 @@
     mapped     an entry of the type map for the element's type name, then
                for its primitive kind (user map first): its message, C++
                type and parameter types as the entry says
+    library    a message of a ROS library (type-library ros-message,
+               type-name package/Name): that message, the datum itself
     struct     a UML DataType no entry maps: the C++ struct ::<pkg>::types::<Name> of the
                generated include/<Name>.hpp (m2t/common/data-types.xsl, the
                same header the Orocos target writes), carried as the
@@ -72,7 +74,23 @@
         if ($primitive ne '' and exists($fp:user-types)) then key('fp:type-by-primitive', $primitive, $fp:user-types) else (),
         if ($name ne '') then key('fp:type-by-name', $name, $fp:builtin-types) else (),
         if ($primitive ne '') then key('fp:type-by-primitive', $primitive, $fp:builtin-types) else (),
+        if (fp:type-library($typed) eq 'ros-message') then fp:library-message($name) else (),
+
         fp:type-def($typed) ! fp:def-type(.))[1]"/>
+  </xsl:function>
+
+  <!-- a message of a ROS library the model names (type-library
+       ros-message: Papyrus for Robotics' ROS 2 library), package/Name: the
+       datum is the message itself; a port carries it, a field of a
+       generated message does not yet (ROS001, as for a type-map entry
+       with no msg-field) -->
+  <xsl:function name="fp:library-message" as="element(ty:type)?">
+    <xsl:param name="name" as="xs:string"/>
+    <xsl:if test="matches($name, '^[A-Za-z][A-Za-z0-9_]*/[A-Za-z][A-Za-z0-9_]*$')">
+      <xsl:variable name="cpp" as="xs:string"
+          select="replace($name, '/', if ($ros-version eq '2') then '::msg::' else '::')"/>
+      <ty:type primitive="" cpp="{$cpp}" msg="{$name}" field="" msg-field="" param1="" param2="" sample="{$cpp}()"/>
+    </xsl:if>
   </xsl:function>
 
   <!-- a data type or an enumeration with a literal, as a generated type -->

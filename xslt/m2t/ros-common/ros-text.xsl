@@ -491,6 +491,14 @@
     <xsl:sequence select="concat($item[1], '/', $kind, '/', fp:ros-snake($item[2]), '.hpp'), concat($item[1], '::', $kind, '::', $item[2])"/>
   </xsl:function>
 
+  <!-- the header of message "pkg/Name" in package $package, on its ROS version -->
+  <xsl:function name="fp:message-header" as="xs:string">
+    <xsl:param name="msg" as="xs:string"/>
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:sequence select="if ($package/@ros-version eq '1') then fp:ros1-type($msg, $package/@name)[1]
+                          else fp:ros2-type($msg, $package/@name, 'msg')[1]"/>
+  </xsl:function>
+
   <!-- (header, C++ type) of the generated message of $type -->
   <xsl:function name="fp:generated-msg" as="xs:string+">
     <xsl:param name="type" as="element()"/>

@@ -136,8 +136,12 @@
         if (some $t in ($node/r:port/r:message/@cpp-type, $node/r:member/@cpp-type) satisfies contains($t, 'std::vector'))
         then '#include &lt;vector&gt;' else (),
         $types ! concat('#include &lt;', @header, '&gt;'),
+        (: a datum that is a message of its own (a ROS library's, a type-map entry's): its header :)
+        distinct-values($node/r:port/r:message[@generated eq 'false'][@field eq '']/@msg
+                        ! concat('#include &lt;', fp:message-header(., $node/..), '&gt;')),
         '',
         concat('namespace ', $node/@namespace, ' {'),
+
         '',
         '/**',
         concat(' * ', fp:doc-of($node, concat('The code of component ', $node/@name, '.'))),
