@@ -911,3 +911,44 @@ def test_orocos_and_openrtm_name_a_library_message_they_cannot_carry(tmp_path: P
     warned = generate(P4RLIB / "model.xmi", tmp_path / "openrtm", "openrtm", write=True).warnings
     left_out = [d for d in warned if d.code == "RTM001" and "message of the ROS library" in d.message]
     assert {d.xmi_id for d in left_out} >= {"_p4rlib_tlk_chatter", "_p4rlib_rly_count"}
+
+
+# ------------------------------------------------------------- SysML «Allocate» as deployment (item 2)
+def _allocated(tmp_path: Path, allocations: str, hardware: str) -> Path:
+    text = (SYSML / "model.xmi").read_text(encoding="utf-8")
+    text = text.replace(' xmlns:robomda=', ' xmlns:Allocations="http://www.eclipse.org/papyrus/sysml/1.6/SysML/Allocations"'
+                                           ' xmlns:robomda=')
+    applied = "".join(f'  <Allocations:Allocate xmi:id="{a}_s" base_Abstraction="{a}"/>\n'
+                      for a in ("_al1", "_al2"))
+    text = text.replace("  </uml:Model>\n", hardware + allocations + "  </uml:Model>\n" + applied)
+    model = tmp_path / "allocated.uml"
+    model.write_text(text, encoding="utf-8")
+    return model
+
+
+def test_a_sysml_allocation_to_a_node_deploys_the_part_there(tmp_path: Path) -> None:
+    model = _allocated(tmp_path,
+                       '    <packagedElement xmi:type="uml:Abstraction" xmi:id="_al1" client="_sy_plant_ctrl" supplier="_n1"/>\n'
+                       '    <packagedElement xmi:type="uml:Abstraction" xmi:id="_al2" client="_sy_plant_pump _sy_plant_sensor"'
+                       ' supplier="_n2"/>\n',
+                       '    <packagedElement xmi:type="uml:Node" xmi:id="_n1" name="Onboard"/>\n'
+                       '    <packagedElement xmi:type="uml:Node" xmi:id="_n2" name="Ground"/>\n')
+    found: list[Diagnostic] = []
+    pim = _pim(model, found)
+    # read, so neither "not imported" nor a stereotype left out
+    assert not [d for d in found if d.code in ("IMP111", "IMP115", "IMP124")], [d.format() for d in found]
+    hosts = {i.get("name"): i.get("host") for i in pim.xpath("//p:binding/p:instance", namespaces=NS)}
+    assert hosts == {"controller": "_n1", "pump": "_n2", "sensor": "_n2"}
+
+
+def test_a_sysml_allocation_to_what_is_no_node_is_said(tmp_path: Path) -> None:
+    model = _allocated(tmp_path,
+                       '    <packagedElement xmi:type="uml:Abstraction" xmi:id="_al1" client="_sy_plant_ctrl" supplier="_hw"/>\n'
+                       '    <packagedElement xmi:type="uml:Abstraction" xmi:id="_al2" client="_sy_sensor" supplier="_hw"/>\n',
+                       '    <packagedElement xmi:type="uml:Class" xmi:id="_hw" name="OnboardComputer"/>\n')
+    found: list[Diagnostic] = []
+    _pim(model, found)
+    said = [d for d in found if d.code == "IMP124"]
+    assert sorted(d.xmi_id for d in said) == ["_al1", "_al2"] and all(d.line for d in said)
+    assert all("'OnboardComputer', which is no Node" in d.message for d in said)
+    assert not [d for d in found if d.code in ("IMP111", "IMP115")], [d.format() for d in found]

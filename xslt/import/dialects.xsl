@@ -28,14 +28,19 @@
              «Activity»);
            - pim:application/@top (fp:top-name);
            - pim:node elements (execution environments) of a deployment
-             plan's allocations (fp:allocation-nodes).
+             plan's allocations (fp:allocation-nodes);
+           - pim:deployment elements of a node that a SysML «Allocate»
+             targets (fp:node-allocations, platform.xsl calls it per node).
   Params:  none.  Keys: fp:dialect-use (any application of a known
-           dialect: one look-up says a model uses none), fp:slot-by-value.
+           dialect: one look-up says a model uses none), fp:slot-by-value,
+           fp:abstraction-by-supplier.
+
   Errors:  none raised. Warnings: IMP120 a tag that means something only
            under a condition of its profile that does not hold; IMP121 a
            UML-RT message with no payload; IMP122 one with several
            parameters; IMP123 an allocation to a simulator or a middleware
-           robomda has no target for.
+           robomda has no target for; IMP124 an «Allocate» to what is no
+           Node.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -341,10 +346,56 @@
                            return $pairs[2 * $i]/d:allocation[@stereotype eq local-name($pairs[2 * $i - 1])])[1]"/>
   </xsl:function>
 
-  <!-- true when $e is an Abstraction its dialect reads as an allocation -->
+  <!-- the node-allocation rule of Abstraction $e's dialect (SysML «Allocate») -->
+  <xsl:function name="fp:node-allocation-rule" as="element(d:node-allocation)?">
+    <xsl:param name="e" as="element()"/>
+    <xsl:variable name="pairs" as="element()*" select="fp:dialect-apps($e)"/>
+    <xsl:sequence select="(for $i in 1 to count($pairs) idiv 2
+                           return $pairs[2 * $i]/d:node-allocation[@stereotype eq local-name($pairs[2 * $i - 1])])[1]"/>
+  </xsl:function>
+
+  <!-- true when $e is an Abstraction its dialect reads as an allocation
+       (a deployment, or IMP123 / IMP124 saying why not) -->
   <xsl:function name="fp:is-allocation" as="xs:boolean">
     <xsl:param name="e" as="element()?"/>
-    <xsl:sequence select="exists($e[@x:type eq 'Abstraction']) and exists(fp:allocation-rule($e))"/>
+    <xsl:sequence select="exists($e[@x:type eq 'Abstraction'])
+                          and (exists(fp:allocation-rule($e)) or exists(fp:node-allocation-rule($e)))"/>
+  </xsl:function>
+
+  <xsl:key name="fp:abstraction-by-supplier" match="*[@x:type eq 'Abstraction']" use="fp:ref-ids(., 'supplier')"/>
+
+  <!-- the pim:deployment of each «Allocate» (a node-allocation rule) to
+       node $node: what it allocates runs there -->
+  <xsl:function name="fp:node-allocations" as="element(pim:deployment)*">
+    <xsl:param name="node" as="element()"/>
+    <xsl:for-each select="if (empty(key('fp:dialect-use', 'any', root($node)))) then ()
+                          else key('fp:abstraction-by-supplier', fp:id($node), root($node))
+                               [exists(fp:node-allocation-rule(.))]">
+
+      <xsl:variable name="deployed" as="xs:string*"
+          select="distinct-values(fp:targets(., 'client') ! (if (@x:type eq 'InstanceSpecification') then fp:allocated-element(.) else .) ! fp:id(.))"/>
+      <xsl:if test="exists($deployed)">
+        <pim:deployment id="{fp:id(.)}" name="{@name}" deployed="{$deployed}">
+          <xsl:call-template name="tp:decoration"><xsl:with-param name="e" select="."/></xsl:call-template>
+        </pim:deployment>
+      </xsl:if>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- IMP124 for each «Allocate» (a node-allocation rule) to something
+       that is no Node: a block of hardware, a function ... -->
+  <xsl:function name="fp:node-allocation-warnings" as="empty-sequence()">
+    <xsl:param name="root" as="element()"/>
+    <xsl:for-each select="if (empty(key('fp:dialect-use', 'any', root($root)))) then ()
+                          else $root/descendant::*[@x:type eq 'Abstraction'][exists(fp:node-allocation-rule(.))]
+                               [not(fp:targets(., 'supplier')/@x:type = $node-metas)]">
+      <xsl:sequence select="f:warn('IMP124', fp:id(.), fp:label(.) || ' allocates '
+          || string-join(fp:targets(., 'client') ! ('''' || @name || ''''), ', ') || ' to '
+          || string-join((fp:targets(., 'supplier') ! (fp:meta(.) || ' ''' || @name || ''''), fp:ref-ids(., 'supplier')[empty(fp:element(current(), .))]), ', ')
+          || ', which is no Node: robomda reads an allocation to a Node (or a Device, an ExecutionEnvironment) as a deployment there;'
+          || ' draw the computer as a Node and allocate to it (the allocation and its stereotype: xmi:ids='
+          || string-join((fp:id(.), key('fp:stereotype-by-base', fp:id(.), root(.)) ! fp:id(.)), ',') || ')')"/>
+    </xsl:for-each>
   </xsl:function>
 
   <!-- slots by the instance their InstanceValue names -->

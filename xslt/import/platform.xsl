@@ -30,6 +30,11 @@
     without duplicates. One owned by a node whose client is another node
     deploys on its client, once (warning IMP117 names both); one whose
     client is no node is not imported (IMP113, report.xsl).
+  - A dialect's «Allocate» to the node (SysML: dialects.xsl,
+    fp:node-allocations): a pim:deployment of what it allocates, as a
+    Deployment; one to what is no node is IMP124 (fp:node-allocation-warnings).
+  - A tool's deployment plan (RobotML): its middleware instances as
+    execution environments (fp:allocation-nodes).
   - Artifact and DeploymentSpecification (nested artifacts too) ->
     top-level pim:artifact; @file-name = fileName; @node = the Node,
     Device or ExecutionEnvironment that owns it, if any (bind deploys what
@@ -62,7 +67,7 @@
           mode="mp:platform"/>
       <!-- the execution environments of a tool's deployment plans (RobotML:
            dialects.xsl) -->
-      <xsl:sequence select="fp:allocation-nodes($root)"/>
+      <xsl:sequence select="fp:allocation-nodes($root), fp:node-allocation-warnings($root)"/>
       <xsl:apply-templates select="$all[@x:type = $artifact-metas]" mode="mp:platform"/>
       <xsl:apply-templates select="$all[@x:type eq 'CommunicationPath']" mode="mp:platform"/>
     </pim:platform>
@@ -108,8 +113,11 @@
           </pim:deployment>
         </xsl:if>
       </xsl:for-each>
+      <!-- what a dialect's «Allocate» puts here (SysML: dialects.xsl) -->
+      <xsl:sequence select="fp:node-allocations(.)"/>
       <xsl:apply-templates select="*[@x:type = $node-metas]" mode="mp:platform"/>
     </pim:node>
+
   </xsl:template>
 
   <xsl:template match="*[@x:type = $artifact-metas]" mode="mp:platform" as="element(pim:artifact)">
