@@ -952,3 +952,25 @@ def test_a_sysml_allocation_to_what_is_no_node_is_said(tmp_path: Path) -> None:
     assert sorted(d.xmi_id for d in said) == ["_al1", "_al2"] and all(d.line for d in said)
     assert all("'OnboardComputer', which is no Node" in d.message for d in said)
     assert not [d for d in found if d.code in ("IMP111", "IMP115")], [d.format() for d in found]
+
+
+# ------------------------------------------------------------- a capsule's own behaviour (UML-RT)
+def test_a_capsule_whose_behaviour_talks_to_its_part_is_named_not_taken_for_a_delegation(tmp_path: Path) -> None:
+    text = (UMLRT / "model.xmi").read_text(encoding="utf-8")
+    # Top's own state machine talks to its sensor through an internal behaviour port
+    text = text.replace(
+        '      <ownedConnector xmi:type="uml:Connector" xmi:id="_rt_conn" name="RTConnector1">',
+        '      <ownedAttribute xmi:type="uml:Port" xmi:id="_rt_topc_own" name="own" type="_rt_proto" visibility="protected"'
+        ' aggregation="composite" isBehavior="true" isService="false"/>\n'
+        '      <ownedConnector xmi:type="uml:Connector" xmi:id="_rt_own" name="RTConnector2">\n'
+        '        <end xmi:type="uml:ConnectorEnd" xmi:id="_rt_own_a" role="_rt_topc_own"/>\n'
+        '        <end xmi:type="uml:ConnectorEnd" xmi:id="_rt_own_b" partWithPort="_rt_topc_sensor" role="_rt_sensor_data"/>\n'
+        '      </ownedConnector>\n'
+        '      <ownedConnector xmi:type="uml:Connector" xmi:id="_rt_conn" name="RTConnector1">')
+    model = tmp_path / "behaviour.uml"
+    model.write_text(text, encoding="utf-8")
+    with pytest.raises(RobomdaError) as failed:
+        _pim(model)
+    [said] = [d for d in failed.value.diagnostics if d.severity == "error"]
+    assert said.code == "BND035" and said.xmi_id == "_rt_own" and said.line
+    assert "behaviour port 'own' of 'Top'" in said.message and "part 'sensor'" in said.message

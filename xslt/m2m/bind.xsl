@@ -121,6 +121,8 @@
             delegates to nothing
     BND015  a delegation joins ports that do not carry the same data in the
             same direction
+    BND035  a composite's own behaviour port (UML-RT) joined to its part
+
     BND016  (warning) a property of a composite promotes the property of no part
     BND017  a property of a composite names the properties of several parts
     BND018  a part sets a value on a property its type does not have

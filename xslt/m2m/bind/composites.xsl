@@ -53,7 +53,9 @@
 
   Errors (codes of bind.xsl): BND013 composition cycle; BND014 a connector
   reaches a promoted port that is delegated to no inner port; BND015 a
-  delegation joins ports of another direction or data type; BND017 a
+  delegation joins ports of another direction or data type; BND035 a
+  connector joins the composite's own behaviour port (isBehavior: a UML-RT
+  capsule's state machine) to a part, no delegation; BND017 a
   composite property that promotes the property of several parts; BND018 a
   slot on a property the part's type does not have. Warning BND016: a
   composite property that promotes none.
@@ -283,7 +285,19 @@
         <xsl:variable name="type" as="element(pim:component)?" select="key('fp:id', @part, $root)/self::pim:part ! fp:part-component(.)"/>
         <xsl:variable name="inner" as="element(pim:port)?" select="key('fp:id', @role, $root)[self::pim:port]"/>
         <xsl:if test="$outer and $type and $inner">
-          <xsl:if test="fp:port-signature($outer, $connector/.., false()) ne fp:port-signature($inner, $type, false())">
+          <xsl:if test="$outer/@behavior eq 'true'">
+            <!-- no delegation: the composite's own behaviour (a UML-RT
+                 capsule's state machine) talks to its part -->
+            <xsl:sequence select="map { 'code': 'BND035', 'id': string($connector/@id), 'message': 'connector '''
+                || $connector/@name || ''' joins behaviour port ''' || $outer/@name || ''' of ''' || $connector/../@name
+                || ''' (isBehavior: the composite''s own behaviour, a capsule''s state machine, talks through it) to port '''
+                || $inner/@name || ''' of its part ''' || key('fp:id', @part, $root)/@name
+                || ''': robomda generates a composite as its parts and their connections only, so that behaviour has no'
+                || ' component to run in; move it into a component of its own, a part of ''' || $connector/../@name
+                || ''', and connect that part''s port to ''' || $inner/@name || ''' instead' }"/>
+          </xsl:if>
+          <xsl:if test="not($outer/@behavior eq 'true')
+                        and fp:port-signature($outer, $connector/.., false()) ne fp:port-signature($inner, $type, false())">
             <xsl:sequence select="map { 'code': 'BND015', 'id': string($connector/@id), 'message': 'delegation '''
                 || $connector/@name || ''' joins port ''' || $outer/@name || ''' of composite ''' || $connector/../@name
                 || ''' (' || fp:signature-text(fp:port-signature($outer, $connector/.., true())) || ') to port ''' || $inner/@name || ''' of part '''
