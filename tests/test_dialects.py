@@ -974,3 +974,53 @@ def test_a_capsule_whose_behaviour_talks_to_its_part_is_named_not_taken_for_a_de
     [said] = [d for d in failed.value.diagnostics if d.severity == "error"]
     assert said.code == "BND035" and said.xmi_id == "_rt_own" and said.line
     assert "behaviour port 'own' of 'Top'" in said.message and "part 'sensor'" in said.message
+
+
+# ------------------------------------------------------------- Papyrus Designer deployment plans (item 2)
+def _designer_plans(plans: list[tuple[str, str]]) -> str:
+    """A Producer / Consumer system, two Nodes and a deployment plan per (plan, node): its main
+    instance of the system allocated («Allocate» of Papyrus Designer's Alloc profile) to an instance
+    of the node."""
+    body = (DATA + _class("p", "Producer", [("q", "d")]) + _class("c", "Consumer", [("q", "d")])
+            + _class("sys", "System", [], [("prod", "p"), ("con", "c")],
+                     _connector("k1", ("sys_prod", "p_q"), ("sys_con", "c_q")), composite=True)
+            + '    <packagedElement xmi:type="uml:Node" xmi:id="linux" name="Linux"/>\n'
+            '    <packagedElement xmi:type="uml:Node" xmi:id="board" name="Board"/>\n')
+    apps = ('  <GCM:FlowPort xmi:id="g1" base_Port="p_q" direction="out"/>\n'
+            '  <GCM:FlowPort xmi:id="g2" base_Port="c_q" direction="in"/>\n')
+    for plan, node in plans:
+        body += (f'    <packagedElement xmi:type="uml:Package" xmi:id="{plan}" name="{plan}">\n'
+                 f'      <packagedElement xmi:type="uml:InstanceSpecification" xmi:id="{plan}_main" name="mainInstance"'
+                 f' classifier="sys"/>\n'
+                 f'      <packagedElement xmi:type="uml:InstanceSpecification" xmi:id="{plan}_node" name="{node}"'
+                 f' classifier="{node}"/>\n'
+                 f'      <packagedElement xmi:type="uml:Abstraction" xmi:id="{plan}_a" name="allocate to {node}"'
+                 f' client="{plan}_main" supplier="{plan}_node"/>\n'
+                 '    </packagedElement>\n')
+        apps += (f'  <Deployment:DeploymentPlan xmi:id="{plan}_s" base_Package="{plan}" mainInstance="{plan}_main"/>\n'
+                 f'  <Alloc:Allocate xmi:id="{plan}_as" base_Abstraction="{plan}_a"/>\n')
+    return _xmi(body, apps, ' xmlns:GCM="http://www.eclipse.org/papyrus/GCM/1"'
+                ' xmlns:Alloc="http://www.eclipse.org/papyrus/Alloc/1"'
+                ' xmlns:Deployment="http://www.eclipse.org/papyrus/Deployment/1"')
+
+
+def test_a_papyrus_designer_deployment_plan_puts_the_system_on_its_node(tmp_path: Path) -> None:
+    model = tmp_path / "plan.uml"
+    model.write_text(_designer_plans([("onboard", "board")]), encoding="utf-8")
+    found: list[Diagnostic] = []
+    pim = _pim(model, found)
+    assert not [d for d in found if d.code in ("IMP111", "IMP115", "IMP124", "IMP125")], [d.format() for d in found]
+    hosts = {i.get("name"): i.get("host") for i in pim.xpath("//p:binding/p:instance", namespaces=NS)}
+    assert hosts == {"prod": "board", "con": "board"}
+
+
+def test_rival_papyrus_designer_plans_are_said_and_none_is_read(tmp_path: Path) -> None:
+    model = tmp_path / "plans.uml"
+    model.write_text(_designer_plans([("onboard", "board"), ("desktop", "linux")]), encoding="utf-8")
+    found: list[Diagnostic] = []
+    pim = _pim(model, found)
+    [said] = [d for d in found if d.code == "IMP125"]
+    assert said.line and "2 deployment plans ('onboard', 'desktop')" in said.message
+    assert not [d for d in found if d.code in ("IMP111", "IMP115")], [d.format() for d in found]
+    # neither plan's node: the instances run where the model's other deployments put them
+    assert not {i.get("host") for i in pim.xpath("//p:binding/p:instance", namespaces=NS)} & {"board", "linux"}

@@ -29,18 +29,21 @@
            - pim:application/@top (fp:top-name);
            - pim:node elements (execution environments) of a deployment
              plan's allocations (fp:allocation-nodes);
-           - pim:deployment elements of a node that a SysML «Allocate»
-             targets (fp:node-allocations, platform.xsl calls it per node).
+           - pim:deployment elements of a node that a SysML or Papyrus
+             Designer «Allocate» targets, or an instance of it
+             (fp:node-allocations, platform.xsl calls it per node).
   Params:  none.  Keys: fp:dialect-use (any application of a known
            dialect: one look-up says a model uses none), fp:slot-by-value,
-           fp:abstraction-by-supplier.
+           fp:abstraction-by-supplier, fp:planned-allocation.
 
   Errors:  none raised. Warnings: IMP120 a tag that means something only
            under a condition of its profile that does not hold; IMP121 a
            UML-RT message with no payload; IMP122 one with several
            parameters; IMP123 an allocation to a simulator or a middleware
            robomda has no target for; IMP124 an «Allocate» to what is no
-           Node.
+           Node; IMP125 allocations to nodes in several deployment plans
+           (none is read).
+
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -362,15 +365,60 @@
                           and (exists(fp:allocation-rule($e)) or exists(fp:node-allocation-rule($e)))"/>
   </xsl:function>
 
-  <xsl:key name="fp:abstraction-by-supplier" match="*[@x:type eq 'Abstraction']" use="fp:ref-ids(., 'supplier')"/>
+  <!-- Abstractions by their suppliers, and by what a supplier instance or
+       part is of (an allocation to an instance of a Node is to the Node) -->
+  <xsl:key name="fp:abstraction-by-supplier" match="*[@x:type eq 'Abstraction']"
+      use="fp:targets(., 'supplier') ! (fp:id(.), fp:node-of(.) ! fp:id(.))"/>
+
+  <!-- the node an element stands for: itself, else the Node classifying an
+       InstanceSpecification or typing a part -->
+  <xsl:function name="fp:node-of" as="element()?">
+    <xsl:param name="e" as="element()"/>
+    <xsl:sequence select="(if ($e/@x:type = $node-metas) then $e
+                           else if ($e/@x:type eq 'InstanceSpecification') then fp:targets($e, 'classifier')
+                           else if ($e/@x:type eq 'Property') then fp:targets($e, 'type') else ())[@x:type = $node-metas][1]"/>
+  </xsl:function>
+
+
+  <!-- the deployment plan allocation $a belongs to: the nearest package
+       stereotyped as its rule's @plan, else the package that owns it (a
+       plan whose stereotype the tool did not write) -->
+
+  <xsl:function name="fp:allocation-plan" as="element()?">
+    <xsl:param name="a" as="element()"/>
+    <xsl:variable name="plan" as="xs:string?" select="fp:node-allocation-rule($a)/@plan"/>
+    <xsl:sequence select="if (empty($plan)) then ()
+        else ($a/ancestor::*[@x:type = ('Package', 'Model')]
+                 [key('fp:stereotype-by-base', fp:id(.), root(.))[local-name() eq $plan]][1],
+              $a/ancestor::*[@x:type = ('Package', 'Model')][1])[1]"/>
+
+  </xsl:function>
+
+  <!-- the allocations to a node that belong to a deployment plan, under
+       one key value -->
+  <xsl:key name="fp:planned-allocation" match="*[@x:type eq 'Abstraction']"
+      use="if (exists(fp:node-allocation-rule(.)/@plan) and exists(fp:targets(., 'supplier') ! fp:node-of(.))) then 'any' else ()"/>
+
+
+  <!-- the deployment plans of the model's allocations, when there are
+       several (alternatives: none is read, IMP125), else () -->
+  <xsl:function name="fp:rival-plans" as="element()*">
+    <xsl:param name="any" as="node()"/>
+    <xsl:variable name="plans" as="element()*"
+        select="(key('fp:planned-allocation', 'any', root($any)) ! fp:allocation-plan(.))/."/>
+    <xsl:sequence select="if (count($plans) gt 1) then $plans else ()"/>
+  </xsl:function>
 
   <!-- the pim:deployment of each «Allocate» (a node-allocation rule) to
-       node $node: what it allocates runs there -->
+       node $node: what it allocates runs there (not when the allocations
+       belong to rival deployment plans) -->
   <xsl:function name="fp:node-allocations" as="element(pim:deployment)*">
     <xsl:param name="node" as="element()"/>
     <xsl:for-each select="if (empty(key('fp:dialect-use', 'any', root($node)))) then ()
                           else key('fp:abstraction-by-supplier', fp:id($node), root($node))
-                               [exists(fp:node-allocation-rule(.))]">
+                               [exists(fp:node-allocation-rule(.))]
+                               [empty(fp:allocation-plan(.)) or empty(fp:rival-plans(.))]">
+
 
       <xsl:variable name="deployed" as="xs:string*"
           select="distinct-values(fp:targets(., 'client') ! (if (@x:type eq 'InstanceSpecification') then fp:allocated-element(.) else .) ! fp:id(.))"/>
@@ -386,9 +434,18 @@
        that is no Node: a block of hardware, a function ... -->
   <xsl:function name="fp:node-allocation-warnings" as="empty-sequence()">
     <xsl:param name="root" as="element()"/>
+    <xsl:variable name="rivals" as="element()*"
+        select="if (empty(key('fp:dialect-use', 'any', root($root)))) then () else fp:rival-plans($root)"/>
+    <xsl:for-each select="key('fp:planned-allocation', 'any', root($root))[exists($rivals)][1]">
+      <xsl:sequence select="f:warn('IMP125', fp:id(.), 'the model''s allocations belong to ' || count($rivals)
+          || ' deployment plans (' || string-join($rivals ! ('''' || @name || ''''), ', ') || '), alternatives of one another:'
+          || ' robomda reads none of them, and the instances run where the model''s other deployments put them;'
+          || ' keep one plan in the model you generate from')"/>
+    </xsl:for-each>
     <xsl:for-each select="if (empty(key('fp:dialect-use', 'any', root($root)))) then ()
                           else $root/descendant::*[@x:type eq 'Abstraction'][exists(fp:node-allocation-rule(.))]
-                               [not(fp:targets(., 'supplier')/@x:type = $node-metas)]">
+                               [empty(fp:targets(., 'supplier') ! fp:node-of(.))]">
+
       <xsl:sequence select="f:warn('IMP124', fp:id(.), fp:label(.) || ' allocates '
           || string-join(fp:targets(., 'client') ! ('''' || @name || ''''), ', ') || ' to '
           || string-join((fp:targets(., 'supplier') ! (fp:meta(.) || ' ''' || @name || ''''), fp:ref-ids(., 'supplier')[empty(fp:element(current(), .))]), ', ')

@@ -36,7 +36,7 @@
            jobs.xsl (jobs and subsystems),
            stereotypes.xsl, dialect-*.xsl (the tools' XMI quirks),
            dialects.xsl (the tools' own profiles: components drawn as
-           classes, IMP120-IMP124), ../common/profile.xsl (the robomda
+           classes, IMP120-IMP125), ../common/profile.xsl (the robomda
            profile URI); data: ../common/primitive-types.xml,
            dialects.xml.
 
@@ -88,7 +88,7 @@
   Robot's rootLink / tipLink without urdf), IMP117 (platform.xsl: a
   deployment owned by a node whose client is another), IMP041 and IMP049
   (files.xsl: a model file that is not there, references into a MagicDraw
-  used project), IMP120-IMP124 (dialects.xsl: what a tool's own profile
+  used project), IMP120-IMP125 (dialects.xsl: what a tool's own profile
   says that robomda reads differently or not at all); docs/errors.md. Every
   duplicate id and dangling reference is reported (f:fail-all).
 -->
