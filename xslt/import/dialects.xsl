@@ -442,17 +442,26 @@
           || ' robomda reads none of them, and the instances run where the model''s other deployments put them;'
           || ' keep one plan in the model you generate from')"/>
     </xsl:for-each>
-    <xsl:for-each select="if (empty(key('fp:dialect-use', 'any', root($root)))) then ()
-                          else $root/descendant::*[@x:type eq 'Abstraction'][exists(fp:node-allocation-rule(.))]
-                               [empty(fp:targets(., 'supplier') ! fp:node-of(.))]">
-
-      <xsl:sequence select="f:warn('IMP124', fp:id(.), fp:label(.) || ' allocates '
-          || string-join(fp:targets(., 'client') ! ('''' || @name || ''''), ', ') || ' to '
-          || string-join((fp:targets(., 'supplier') ! (fp:meta(.) || ' ''' || @name || ''''), fp:ref-ids(., 'supplier')[empty(fp:element(current(), .))]), ', ')
-          || ', which is no Node: robomda reads an allocation to a Node (or a Device, an ExecutionEnvironment) as a deployment there;'
-          || ' draw the computer as a Node and allocate to it (the allocation and its stereotype: xmi:ids='
-          || string-join((fp:id(.), key('fp:stereotype-by-base', fp:id(.), root(.)) ! fp:id(.)), ',') || ')')"/>
-    </xsl:for-each>
+    <!-- one warning per element allocated to: a model tracing its blocks to
+         requirements allocates dozens -->
+    <xsl:for-each-group select="if (empty(key('fp:dialect-use', 'any', root($root)))) then ()
+                                else $root/descendant::*[@x:type eq 'Abstraction'][exists(fp:node-allocation-rule(.))]
+                                     [empty(fp:targets(., 'supplier') ! fp:node-of(.))]"
+                        group-by="string-join(fp:ref-ids(., 'supplier'), ' ')">
+      <xsl:variable name="first" as="element()" select="current-group()[1]"/>
+      <xsl:variable name="to" as="xs:string"
+          select="string-join((fp:targets($first, 'supplier') ! (fp:meta(.) || ' ''' || @name || ''''),
+                               fp:ref-ids($first, 'supplier')[empty(fp:element($first, .))]), ', ')"/>
+      <xsl:variable name="n" as="xs:integer" select="count(current-group())"/>
+      <xsl:sequence select="f:warn('IMP124', fp:id($first), $n || ' allocation' || (if ($n gt 1) then 's' else '')
+          || ' («Allocate») of '
+          || string-join(distinct-values(current-group() ! fp:targets(., 'client') ! ('''' || @name || '''')), ', ')
+          || ' to ' || (if ($to) then $to else 'nothing') || ', which is no Node: robomda reads only an allocation to a Node'
+          || ' (a Device, an ExecutionEnvironment) as a deployment there, so ' || (if ($n gt 1) then 'these stay' else 'it stays')
+          || ' in the model only (a trace to a requirement, a function or a hardware block); to deploy, allocate to a Node'
+          || ' (the allocations and their stereotypes: xmi:ids='
+          || string-join(current-group() ! (fp:id(.), key('fp:stereotype-by-base', fp:id(.), root(.)) ! fp:id(.)), ',') || ')')"/>
+    </xsl:for-each-group>
   </xsl:function>
 
   <!-- slots by the instance their InstanceValue names -->
