@@ -66,7 +66,10 @@
   <!-- $norm with the stand-ins its references name (see the header) -->
   <xsl:function name="fp:with-stand-ins" as="document-node()">
     <xsl:param name="norm" as="document-node()"/>
-    <xsl:variable name="refs" as="element()*" select="key('fp:stand-in', 'any', $norm)"/>
+    <!-- a model in no dialect (most) asks the key of its stereotype
+         applications only, not a scan of every element -->
+    <xsl:variable name="refs" as="element()*"
+        select="if (empty(key('fp:dialect-use', 'any', $norm))) then () else key('fp:stand-in', 'any', $norm)"/>
     <xsl:choose>
       <xsl:when test="empty($refs)">
         <xsl:sequence select="$norm"/>
