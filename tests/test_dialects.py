@@ -876,7 +876,13 @@ def test_p4r_ports_typed_by_its_ros2_library_carry_the_library_messages(tmp_path
     assert services == {
         "robomda.lib.std_msgs.P_String": ("std_msgs", "P_String", "Push", [("std_msgs/String", "ros-message")]),
         "robomda.lib.std_msgs.S_Int32": ("std_msgs", "S_Int32", "Send", [("std_msgs/Int32", "ros-message")]),
-        "robomda.lib.std_srvs.Q_Trigger": ("std_srvs", "Q_Trigger", "Query", [])}
+        "robomda.lib.std_srvs.Q_Trigger": ("std_srvs", "Q_Trigger", "Query", []),
+        # the model's own service, whose data type has a field of a library message
+        "_p4rlib_p_lab": ("services", "P_Labelled", "Push", [("Labelled", "local")])}
+    fields = {a.get("name"): (a.get("type-name"), a.get("type-library"), a.get("primitive"))
+              for a in pim.xpath("//p:datatype[@name='Labelled']/p:attribute", namespaces=NS)}
+    assert fields == {"label": ("std_msgs/String", "ros-message", None), "score": (fields["score"][0], "ros-primitive",
+                                                                                    "float64")}
     assert not [d for d in found if d.code in ("IMP112", "BND034")], [d.format() for d in found]
     # the Query is left out, said where it is drawn; the rest flows as the patterns mean
     [query] = [d for d in found if d.code == "BND004"]
@@ -884,7 +890,8 @@ def test_p4r_ports_typed_by_its_ros2_library_carry_the_library_messages(tmp_path
     data = {(d.getparent().get("name"), d.get("name")): (d.get("direction"), d.get("type-name"))
             for d in pim.xpath("//p:binding/p:bound-component/p:data-port", namespaces=NS)}
     assert data == {("Talker", "chatter"): ("out", "std_msgs/String"), ("Relay", "chatter"): ("in", "std_msgs/String"),
-                    ("Relay", "count"): ("out", "std_msgs/Int32"), ("Counter", "count"): ("in", "std_msgs/Int32")}
+                    ("Relay", "count"): ("out", "std_msgs/Int32"), ("Counter", "count"): ("in", "std_msgs/Int32"),
+                    ("Relay", "labelled"): ("out", "Labelled"), ("Counter", "labelled"): ("in", "Labelled")}
     # the library's primitive ids are primitives: the parameter typed by its float64 is a float64
     [rate] = pim.xpath("//p:component[@name='Talker']/p:attribute[@name='rate']", namespaces=NS)
     assert (rate.get("primitive"), rate.get("type-library")) == ("float64", "ros-primitive")
@@ -900,6 +907,14 @@ def test_the_ros_targets_carry_a_library_message_as_it_is(target: str, cpp: str,
     header = "std_msgs/msg/string.hpp" if target == "ros2" else "std_msgs/String.h"
     assert f"#include <{header}>" in base and f"virtual {cpp} getString() const = 0;" in base
     assert "<depend>std_msgs</depend>" in (tmp_path / target / "package.xml").read_text(encoding="utf-8")
+    # a field of a library message: its header in the data type's, its type in the generated message,
+    # copied as it is, and the messages generated with that package as their dependency
+    header = "std_msgs/msg/string.hpp" if target == "ros2" else "std_msgs/String.h"
+    assert f"#include <{header}>" in (tmp_path / target / "include" / "Labelled.hpp").read_text(encoding="utf-8")
+    assert "std_msgs/String label\n" in (tmp_path / target / "msg" / "Labelled.msg").read_text(encoding="utf-8")
+    cmake = (tmp_path / target / "CMakeLists.txt").read_text(encoding="utf-8")
+    assert ("DEPENDENCIES std_msgs)" in cmake) and "m.label = v.label;" in (
+        tmp_path / target / "include" / "p4rlib" / "msg_conversions.hpp").read_text(encoding="utf-8")
 
 
 def test_orocos_and_openrtm_name_a_library_message_they_cannot_carry(tmp_path: Path) -> None:
@@ -908,9 +923,15 @@ def test_orocos_and_openrtm_name_a_library_message_they_cannot_carry(tmp_path: P
     errors = [d for d in failed.value.diagnostics if d.severity == "error"]
     assert errors and all(d.code == "ORO001" and d.line and "message of the ROS library" in d.message for d in errors)
     assert not (tmp_path / "orocos").exists()
-    warned = generate(P4RLIB / "model.xmi", tmp_path / "openrtm", "openrtm", write=True).warnings
-    left_out = [d for d in warned if d.code == "RTM001" and "message of the ROS library" in d.message]
-    assert {d.xmi_id for d in left_out} >= {"_p4rlib_tlk_chatter", "_p4rlib_rly_count"}
+    with pytest.raises(RobomdaError) as failed:
+        generate(P4RLIB / "model.xmi", tmp_path / "openrtm", "openrtm", write=True)
+    said = failed.value.diagnostics
+    # a port carrying one is left out (RTM001), a data type's field of one has no IDL type (RTM021)
+    assert {d.xmi_id for d in said if d.code == "RTM001" and "message of the ROS library" in d.message} >= \
+        {"_p4rlib_tlk_chatter", "_p4rlib_rly_count"}
+    assert [d.xmi_id for d in said if d.code == "RTM021" and "message of the ROS library" in d.message] == \
+        ["_p4rlib_lab_label"]
+    assert not (tmp_path / "openrtm").exists()
 
 
 # ------------------------------------------------------------- SysML «Allocate» as deployment (item 2)

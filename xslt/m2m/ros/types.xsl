@@ -81,17 +81,23 @@
 
   <!-- a message of a ROS library the model names (type-library
        ros-message: Papyrus for Robotics' ROS 2 library), package/Name: the
-       datum is the message itself; a port carries it, a field of a
-       generated message does not yet (ROS001, as for a type-map entry
-       with no msg-field) -->
+       datum is the message itself, as a port's datum and as a field of a
+       generated message (@element-kind message: copied as it is; @include:
+       its header, which the data type's header includes) -->
   <xsl:function name="fp:library-message" as="element(ty:type)?">
     <xsl:param name="name" as="xs:string"/>
     <xsl:if test="matches($name, '^[A-Za-z][A-Za-z0-9_]*/[A-Za-z][A-Za-z0-9_]*$')">
+      <xsl:variable name="package" as="xs:string" select="substring-before($name, '/')"/>
+      <xsl:variable name="type" as="xs:string" select="substring-after($name, '/')"/>
       <xsl:variable name="cpp" as="xs:string"
-          select="replace($name, '/', if ($ros-version eq '2') then '::msg::' else '::')"/>
-      <ty:type primitive="" cpp="{$cpp}" msg="{$name}" field="" msg-field="" param1="" param2="" sample="{$cpp}()"/>
+          select="$package || (if ($ros-version eq '2') then '::msg::' else '::') || $type"/>
+      <ty:type primitive="" cpp="{$cpp}" msg="{$name}" field="" msg-field="{$name}" param1="" param2="" sample="{$cpp}()"
+               element-kind="message"
+               include="{if ($ros-version eq '2') then $package || '/msg/' || lower-case(string-join(f:words($type), '_')) || '.hpp'
+                         else $name || '.h'}"/>
     </xsl:if>
   </xsl:function>
+
 
   <!-- a data type or an enumeration with a literal, as a generated type -->
   <xsl:function name="fp:def-type" as="element(ty:type)?">
@@ -235,11 +241,14 @@
         </xsl:if>
         <xsl:if test="$message">
           <xsl:attribute name="msg-field" select="$type/@msg-field"/>
-          <xsl:attribute name="element-kind" select="($element/@kind, 'primitive')[1]"/>
+          <xsl:attribute name="element-kind" select="($element/@kind, $element/@element-kind, 'primitive')[1]"/>
+
           <xsl:sequence select="$type/@array"/>
         </xsl:if>
+        <xsl:sequence select="$element/@include"/>
         <xsl:sequence select="fp:psm-doc(.)"/>
       </r:field>
+
     </xsl:for-each>
   </xsl:function>
 

@@ -12,7 +12,8 @@
 
   Reads:   a PSM's type definitions, of any target's namespace: an element
            with @cpp-name and @header, holding *:field elements (a struct:
-           @member, @cpp-type, @cpp-default, optional @type-ref, @type-kind)
+           @member, @cpp-type, @cpp-default, optional @type-ref, @type-kind,
+           @include: a header its type needs)
            or *:literal elements (an enumeration: @member).
   Writes:  strings (file contents).
   Params:  none.  Errors: none.
@@ -52,6 +53,7 @@
     <xsl:variable name="includes" as="xs:string*" select="
         if ($fields[@type-kind eq 'sequence']) then '#include &lt;vector&gt;' else (),
         if ($fields[contains(@cpp-type, 'std::string')]) then '#include &lt;string&gt;' else (),
+        distinct-values($fields/@include) ! ('#include &lt;' || . || '&gt;'),
         distinct-values(fp:definitions-of($fields/@type-ref, $definitions)/@header) ! ('#include &quot;' || . || '&quot;')"/>
     <xsl:sequence select="fp:lines((
         fp:banner('// ', 'm2t/common/data-types.xsl', (if ($enum) then 'enumeration ''' else 'data type ''') || $type/@name

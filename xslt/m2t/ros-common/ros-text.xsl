@@ -491,7 +491,18 @@
     <xsl:sequence select="concat($item[1], '/', $kind, '/', fp:ros-snake($item[2]), '.hpp'), concat($item[1], '::', $kind, '::', $item[2])"/>
   </xsl:function>
 
+  <!-- the packages whose messages the generated messages use: std_msgs for
+       a stamped one's Header, a ROS library message's package for a field
+       of that type; sorted -->
+  <xsl:function name="fp:message-dependencies" as="xs:string*">
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:sequence select="sort(distinct-values((
+        $package/r:types/*[@stamped eq 'true'][1] ! 'std_msgs',
+        $package/r:types/*/r:field[@element-kind eq 'message']/@msg-field ! substring-before(., '/'))))"/>
+  </xsl:function>
+
   <!-- the header of message "pkg/Name" in package $package, on its ROS version -->
+
   <xsl:function name="fp:message-header" as="xs:string">
     <xsl:param name="msg" as="xs:string"/>
     <xsl:param name="package" as="element(r:package)"/>
@@ -585,7 +596,8 @@
     <xsl:variable name="source" as="xs:string" select="$from || '.' || (if ($from eq 'm') then $field/@name else $field/@member)"/>
     <xsl:variable name="target" as="xs:string" select="$to || '.' || (if ($to eq 'm') then $field/@name else $field/@member)"/>
     <xsl:variable name="copy" as="xs:string" select="
-        if ($field/@element-kind eq 'primitive') then '{1} = {0};' else $function || '({0}, {1});'"/>
+        if ($field/@element-kind = ('primitive', 'message')) then '{1} = {0};' else $function || '({0}, {1});'"/>
+
     <xsl:sequence select="
       if (empty($field/@array)) then '  ' || replace(replace($copy, '\{0\}', $source), '\{1\}', $target)
       else (

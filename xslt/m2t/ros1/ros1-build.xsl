@@ -27,8 +27,9 @@
     <xsl:sequence select="sort(distinct-values(('roscpp',
         if ($package/r:coordinator) then ('std_msgs', 'std_srvs') else (),
         ($package/r:node/r:port/r:message/@msg, $package/r:node/r:service/@srv, $package/r:node/r:service-client/@srv)[contains(., '/')] ! substring-before(., '/'),
-        (: a stamped message's std_msgs/Header :)
-        $package/r:types/*[@stamped eq 'true'][1] ! 'std_msgs')))"/>
+        (: what the generated messages use :)
+        fp:message-dependencies($package))))"/>
+
   </xsl:function>
 
   <xsl:function name="fp:ros1-cmakelists" as="xs:string">
@@ -50,7 +51,8 @@
         if ($msgs) then (
           '',
           concat('add_message_files(FILES ', string-join($package/r:types/*/@message ! (. || '.msg'), ' '), ')'),
-          if ($package/r:types/*[@stamped eq 'true']) then 'generate_messages(DEPENDENCIES std_msgs)' else 'generate_messages()')
+          concat('generate_messages(', string-join(('DEPENDENCIES'[exists(fp:message-dependencies($package))], fp:message-dependencies($package)), ' '), ')'))
+
         else (),
         '',
         'catkin_package(',

@@ -30,8 +30,9 @@
         if ($package/r:node[@lifecycle-type-name]) then ('rclcpp_lifecycle', 'lifecycle_msgs') else (),
         if ($package/r:coordinator) then 'std_msgs' else (),
         ($package/r:node/r:port/r:message/@msg, $package/r:node/r:service/@srv, $package/r:node/r:service-client/@srv)[contains(., '/')] ! substring-before(., '/'),
-        (: a stamped message's std_msgs/Header :)
-        $package/r:types/*[@stamped eq 'true'][1] ! 'std_msgs')))"/>
+        (: what the generated messages use :)
+        fp:message-dependencies($package))))"/>
+
   </xsl:function>
 
   <xsl:function name="fp:ros2-cmakelists" as="xs:string">
@@ -52,7 +53,7 @@
         if ($msgs) then (
           'find_package(rosidl_default_generators REQUIRED)',
           concat('rosidl_generate_interfaces(${PROJECT_NAME} ', string-join($package/r:types/*/@message ! ('&quot;msg/' || . || '.msg&quot;'), ' '),
-                 if ($package/r:types/*[@stamped eq 'true']) then ' DEPENDENCIES std_msgs' else '', ')'),
+                 string-join(('', 'DEPENDENCIES'[exists(fp:message-dependencies($package))], fp:message-dependencies($package)), ' '), ')'),
           'rosidl_get_typesupport_target(${PROJECT_NAME}_msgs_cpp ${PROJECT_NAME} &quot;rosidl_typesupport_cpp&quot;)')
         else (),
         $package/r:library ! fp:library-external-project(.),
