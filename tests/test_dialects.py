@@ -1048,3 +1048,35 @@ def test_rival_papyrus_designer_plans_are_said_and_none_is_read(tmp_path: Path) 
     assert not [d for d in found if d.code in ("IMP111", "IMP115")], [d.format() for d in found]
     # neither plan's node: the instances run where the model's other deployments put them
     assert not {i.get("host") for i in pim.xpath("//p:binding/p:instance", namespaces=NS)} & {"board", "linux"}
+
+
+def test_the_robotml_platform_library_primitives_are_primitives_and_its_types_are_named(tmp_path: Path) -> None:
+    """RobotML's platform library is not shipped with models; its primitives are read by their ids
+    (Float64, Bool ...: ports typed by them generate), its data types named in BND034."""
+    lib = "pathmap://Robotml_LIBRARIES/RobotMLPlatformLibraries.uml#"
+    port = ('      <ownedAttribute xmi:type="uml:Port" xmi:id="{}" name="{}" aggregation="composite">'
+            '<type xmi:type="uml:{}" href="{}"/></ownedAttribute>\n')
+    body = ('    <packagedElement xmi:type="uml:Class" xmi:id="a" name="Sick">\n'
+            + port.format("a_on", "on", "PrimitiveType", lib + "_NZnTsAIUEeCVrLEBH5ejnQ")
+            + port.format("a_scan", "scan", "DataType", lib + "_zdwdIAKsEeCQReIOIWJ0nA")
+            + '    </packagedElement>\n'
+            '    <packagedElement xmi:type="uml:Class" xmi:id="b" name="Planner">\n'
+            + port.format("b_on", "on", "PrimitiveType", lib + "_NZnTsAIUEeCVrLEBH5ejnQ")
+            + '    </packagedElement>\n'
+            + _class("sys", "Robot", [], [("sick", "a"), ("planner", "b")],
+                     _connector("c1", ("sys_sick", "a_on"), ("sys_planner", "b_on"))))
+    apps = ('  <RobotML:SensorSystem xmi:id="s1" base_Class="a"/>\n  <RobotML:Software xmi:id="s2" base_Class="b"/>\n'
+            '  <RobotML:DataFlowPort xmi:id="s3" base_Port="a_on" direction="out"/>\n'
+            '  <RobotML:DataFlowPort xmi:id="s4" base_Port="a_scan" direction="out"/>\n'
+            '  <RobotML:DataFlowPort xmi:id="s5" base_Port="b_on"/>\n')
+    model = tmp_path / "library.uml"
+    model.write_text(_xmi(body, apps, ROBOTML_NS), encoding="utf-8")
+    found: list[Diagnostic] = []
+    pim = _pim(model, found)
+    [on] = pim.xpath("//p:component[@name='Sick']/p:port[@name='on']", namespaces=NS)
+    assert (on.get("type-name"), on.get("type-library"), on.get("primitive")) == ("Bool", "robotml", "boolean")
+    flows = [(c.find("p:writer", NS).get("instance"), c.find("p:reader", NS).get("instance"))
+             for c in pim.xpath("//p:binding/p:connection", namespaces=NS)]
+    assert flows == [("sick", "planner")]
+    [once] = [d for d in found if d.code == "BND034"]
+    assert once.xmi_id == "a_scan" and "'scan' of Sick: LaserScan" in once.message

@@ -623,7 +623,10 @@
         select="$primitive-table/pt:primitive-types/pt:library[@name eq $lib]/pt:name[matches($href, @pattern)][1]"/>
     <xsl:variable name="name" as="xs:string"
         select="if ($rule) then replace($href, $rule/@pattern, $rule/@replacement) else fp:href-name($href, ())"/>
-    <xsl:sequence select="map { 'library': $lib, 'name': $name, 'kind': fp:primitive-kind($lib, $name) }"/>
+    <!-- a library that names its types by id only says the type's name (@label) -->
+    <xsl:variable name="label" as="xs:string?" select="key('fp:primitive', $lib || '|' || $name, $primitive-table)/@label"/>
+    <xsl:sequence select="map { 'library': $lib, 'name': ($label, $name)[1], 'kind': fp:primitive-kind($lib, $name) }"/>
+
   </xsl:function>
 
   <!-- fp:href-type of every distinct href of a type reference in $norm -->

@@ -400,7 +400,9 @@
          platform library, a tool's pathmap:// library): left out, said once -->
     <xsl:variable name="unknown-typed" as="element(pim:port)*"
         select="$components[exists(key('fp:instance-by-component', @id, $instance-tree))]/pim:port
-                [not(@runtime)][@type-library eq 'external'][empty(@type)][empty(@primitive)][not(pim:provided or pim:required)]"/>
+                [not(@runtime)][not(@type-library = ('local', 'ros-message'))][empty(@type)][empty(@primitive)]
+                [not(pim:provided or pim:required)]"/>
+
     <xsl:if test="exists($unknown-typed)">
       <xsl:sequence select="f:warn('BND034', string($unknown-typed[1]/@id), count($unknown-typed) || ' port'
           || (if (count($unknown-typed) gt 1) then 's are' else ' is') || ' typed by a data type of a library outside the model,'
