@@ -1080,3 +1080,26 @@ def test_the_robotml_platform_library_primitives_are_primitives_and_its_types_ar
     assert flows == [("sick", "planner")]
     [once] = [d for d in found if d.code == "BND034"]
     assert once.xmi_id == "a_scan" and "'scan' of Sick: LaserScan" in once.message
+
+
+def test_classes_a_profile_makes_components_with_lollipops_get_named_ports(tmp_path: Path) -> None:
+    """A class its profile makes a component (RobotML) with no port that provides or requires an
+    interface gets a port per interface, named after it (it once got a port with no name)."""
+    body = ('    <packagedElement xmi:type="uml:Interface" xmi:id="i" name="IReading">\n'
+            f'      <ownedAttribute xmi:type="uml:Property" xmi:id="i_v" name="value"><type xmi:type="uml:PrimitiveType" '
+            f'href="{PRIM}Real"/></ownedAttribute>\n    </packagedElement>\n'
+            '    <packagedElement xmi:type="uml:Class" xmi:id="a" name="Sensor">\n'
+            '      <interfaceRealization xmi:type="uml:InterfaceRealization" xmi:id="a_r" client="a" supplier="i"'
+            ' contract="i"/>\n    </packagedElement>\n'
+            '    <packagedElement xmi:type="uml:Class" xmi:id="b" name="Logger"/>\n'
+            '    <packagedElement xmi:type="uml:Usage" xmi:id="b_u" client="b" supplier="i"/>\n')
+    apps = '  <RobotML:SensorSystem xmi:id="s1" base_Class="a"/>\n  <RobotML:Software xmi:id="s2" base_Class="b"/>\n'
+    model = tmp_path / "lollipops.uml"
+    model.write_text(_xmi(body, apps, ROBOTML_NS), encoding="utf-8")
+    pim = _pim(model)
+    ports = {(p.getparent().get("name"), p.get("name"), p.get("qualified-name"))
+             for p in pim.xpath("//p:component/p:port[@implicit='true']", namespaces=NS)}
+    assert ports == {("Sensor", "IReading", "shapes::Sensor::IReading"), ("Logger", "IReading", "shapes::Logger::IReading")}
+    flows = [(c.find("p:writer", NS).get("data-port"), c.find("p:reader", NS).get("data-port"))
+             for c in pim.xpath("//p:binding/p:connection", namespaces=NS)]
+    assert flows == [("IReading", "IReading")]

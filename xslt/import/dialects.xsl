@@ -73,19 +73,36 @@
       use="if (exists(fp:dialect(.))) then 'any' else ()"/>
 
   <!-- the stereotype applications on $e that a dialect knows, each with
-       its dialect: (application, dialect) pairs flattened -->
-  <xsl:function name="fp:dialect-apps" as="element()*">
+       its dialect: map { 'app': the application, 'dialect': its d:dialect } -->
+  <xsl:function name="fp:dialect-apps" as="map(*)*">
     <xsl:param name="e" as="element()"/>
     <!-- a model in no known dialect (most: the robomda profile, or none)
          asks no more than one look-up -->
-    <xsl:for-each select="if (empty(key('fp:dialect-use', 'any', root($e)))) then ()
-                          else key('fp:stereotype-by-base', fp:id($e), root($e))">
-      <xsl:variable name="dialect" as="element(d:dialect)?" select="fp:dialect(.)"/>
-      <xsl:if test="exists($dialect)">
-        <xsl:sequence select="., $dialect"/>
-      </xsl:if>
-    </xsl:for-each>
+    <xsl:sequence select="if (empty(key('fp:dialect-use', 'any', root($e)))) then ()
+                          else key('fp:stereotype-by-base', fp:id($e), root($e))
+                               ! (let $app := . return fp:dialect($app) ! map { 'app': $app, 'dialect': . })"/>
   </xsl:function>
+
+  <!-- the rules of kind $kinds (element names of dialects.xml: data-port,
+       conjugation ...) whose @stereotype is applied to $e, each with that
+       application: map { 'app': the application, 'rule': the rule } -->
+  <xsl:function name="fp:dialect-rules" as="map(*)*">
+    <xsl:param name="e" as="element()"/>
+    <xsl:param name="kinds" as="xs:string+"/>
+    <xsl:sequence select="fp:dialect-apps($e)
+                          ! (let $app := ?app
+                             return ?dialect/*[local-name() = $kinds][@stereotype eq local-name($app)]
+                                    ! map { 'app': $app, 'rule': . })"/>
+  </xsl:function>
+
+  <!-- true when the boolean tag of rule $r (fp:dialect-rules) is one of
+       $values as written (true / 1, false / 0) -->
+  <xsl:function name="fp:rule-tag-is" as="xs:boolean">
+    <xsl:param name="r" as="map(*)"/>
+    <xsl:param name="values" as="xs:string+"/>
+    <xsl:sequence select="lower-case(string(fp:tag-literal($r?app, $r?rule/@tag))) = $values"/>
+  </xsl:function>
+
 
   <!-- @component and @dialect of the pim:class made from class $e: true
        when a stereotype of a dialect's component list is applied to it,
@@ -93,14 +110,12 @@
        decides) -->
   <xsl:function name="fp:dialect-component" as="attribute()*">
     <xsl:param name="e" as="element()"/>
-    <xsl:variable name="pairs" as="element()*" select="fp:dialect-apps($e)"/>
-    <xsl:variable name="hit" as="xs:integer?"
-        select="(for $i in 1 to count($pairs) idiv 2
-                 return $i[local-name($pairs[2 * $i - 1])
-                           = tokenize(string-join($pairs[2 * $i]/(d:component | d:not-component)/@stereotypes, ' '))])[1]"/>
+    <xsl:variable name="hit" as="map(*)?"
+        select="fp:dialect-apps($e)[local-name(?app) = ?dialect/(d:component | d:not-component)/tokenize(@stereotypes)][1]"/>
     <xsl:if test="exists($hit)">
-      <xsl:variable name="dialect" as="element(d:dialect)" select="$pairs[2 * $hit]"/>
-      <xsl:variable name="stereotype" as="xs:string" select="local-name($pairs[2 * $hit - 1])"/>
+      <xsl:variable name="dialect" as="element(d:dialect)" select="$hit?dialect"/>
+      <xsl:variable name="stereotype" as="xs:string" select="local-name($hit?app)"/>
+
       <xsl:variable name="component" as="xs:boolean" select="$stereotype = tokenize($dialect/d:component/@stereotypes)"/>
       <xsl:attribute name="component" select="$component"/>
       <xsl:attribute name="dialect" select="$dialect/@name || '::' || $stereotype"/>
@@ -128,14 +143,12 @@
        @buffer, @dialect -->
   <xsl:function name="fp:dialect-port" as="attribute()*">
     <xsl:param name="e" as="element()"/>
-    <xsl:variable name="pairs" as="element()*" select="fp:dialect-apps($e)"/>
-    <xsl:variable name="i" as="xs:integer?"
-        select="(for $i in 1 to count($pairs) idiv 2
-                 return $i[exists($pairs[2 * $i]/(d:data-port | d:flow-property)[@stereotype eq local-name($pairs[2 * $i - 1])])])[1]"/>
-    <xsl:if test="exists($i)">
-      <xsl:variable name="app" as="element()" select="$pairs[2 * $i - 1]"/>
-      <xsl:variable name="dialect" as="element(d:dialect)" select="$pairs[2 * $i]"/>
-      <xsl:variable name="rule" as="element()" select="$dialect/(d:data-port | d:flow-property)[@stereotype eq local-name($app)][1]"/>
+    <xsl:variable name="hit" as="map(*)?" select="fp:dialect-rules($e, ('data-port', 'flow-property'))[1]"/>
+    <xsl:if test="exists($hit)">
+      <xsl:variable name="app" as="element()" select="$hit?app"/>
+      <xsl:variable name="rule" as="element()" select="$hit?rule"/>
+      <xsl:variable name="dialect" as="element(d:dialect)" select="$rule/.."/>
+
       <xsl:variable name="literal" as="xs:string" select="(fp:tag-literal($app, $rule/@tag), string($rule/@default))[1]"/>
       <xsl:variable name="direction" as="xs:string?"
           select="$rule/d:literal[lower-case(@name) eq lower-case($literal)][1]/@direction"/>
@@ -186,10 +199,9 @@
        library, or an id of the model), else by its name's prefix -->
   <xsl:function name="fp:pattern" as="element(d:pattern)?">
     <xsl:param name="e" as="element()"/>
-    <xsl:variable name="pairs" as="element()*" select="fp:dialect-apps($e)"/>
     <xsl:variable name="rules" as="element(d:service-definition)*"
-        select="for $i in 1 to count($pairs) idiv 2
-                return $pairs[2 * $i]/d:service-definition[@stereotype eq local-name($pairs[2 * $i - 1])]"/>
+        select="fp:dialect-rules($e, 'service-definition') ! ?rule"/>
+
     <xsl:variable name="signature" as="xs:string*"
         select="$e/templateBinding/signature/@href ! replace(., '^.*#', ''), $e/templateBinding ! fp:ref-ids(., 'signature')"/>
     <xsl:sequence select="($rules/d:pattern[@signature = $signature],
@@ -247,34 +259,35 @@
     </xsl:if>
   </xsl:function>
 
-  <!-- the dialect in which interface $e is a message set: a collaboration
-       stereotyped as its protocol (d:messages/@protocol) realizes or uses
-       it -->
-  <xsl:function name="fp:message-dialect" as="element(d:dialect)?">
+  <!-- the «Protocol» applications that make interface $e a message set:
+       those of the collaborations that realize or use it, stereotyped as
+       their dialect's protocol (d:messages/@protocol); fp:dialect-apps maps -->
+  <xsl:function name="fp:message-protocols" as="map(*)*">
     <xsl:param name="e" as="element()"/>
-    <xsl:sequence select="(if (empty(key('fp:dialect-use', 'any', root($e)))) then () else key('fp:dep-by-supplier', fp:id($e), root($e))
-                           ! fp:targets(., 'client')[@x:type eq 'Collaboration']
-                           ! (let $pairs := fp:dialect-apps(.)
-                              return for $i in 1 to count($pairs) idiv 2
-                                     return $pairs[2 * $i][d:messages/@protocol = local-name($pairs[2 * $i - 1])]))[1]"/>
+    <xsl:sequence select="if (empty(key('fp:dialect-use', 'any', root($e)))) then ()
+                          else key('fp:dep-by-supplier', fp:id($e), root($e))
+                               ! fp:targets(., 'client')[@x:type eq 'Collaboration']
+                               ! fp:dialect-apps(.)[?dialect/d:messages/@protocol = local-name(?app)]"/>
   </xsl:function>
 
-  <!-- @pattern, @provided-direction and @dialect of the pim:interface made
-       from message set $e: a port that provides it (its protocol realizes
-       it) receives its messages -->
+  <!-- the dialect in which interface $e is a message set -->
+  <xsl:function name="fp:message-dialect" as="element(d:dialect)?">
+    <xsl:param name="e" as="element()"/>
+    <xsl:sequence select="fp:message-protocols($e)[1]?dialect"/>
+  </xsl:function>
+
+  <!-- @pattern, @provided-direction, @dialect and @via (the «Protocol»
+       applications) of the pim:interface made from message set $e: a port
+       that provides it (its protocol realizes it) receives its messages -->
   <xsl:function name="fp:message-attributes" as="attribute()*">
     <xsl:param name="e" as="element()"/>
-    <xsl:for-each select="fp:message-dialect($e)">
+    <xsl:variable name="protocols" as="map(*)*" select="fp:message-protocols($e)"/>
+    <xsl:for-each select="$protocols[1]?dialect">
       <xsl:variable name="protocol" as="xs:string" select="d:messages/@protocol"/>
       <xsl:attribute name="pattern" select="'Messages'"/>
       <xsl:attribute name="provided-direction" select="'in'"/>
       <xsl:attribute name="dialect" select="@name || '::' || $protocol"/>
-      <!-- the «Protocol» applications that make it a message set -->
-      <xsl:attribute name="via"
-          select="distinct-values(key('fp:dep-by-supplier', fp:id($e), root($e))
-                                  ! fp:targets(., 'client')[@x:type eq 'Collaboration']
-                                  ! key('fp:stereotype-by-base', fp:id(.), root(.))[local-name() eq $protocol]
-                                  ! fp:id(.))"/>
+      <xsl:attribute name="via" select="distinct-values($protocols[?dialect is current()] ! fp:id(?app))"/>
     </xsl:for-each>
   </xsl:function>
 
@@ -319,10 +332,8 @@
        (RSA-RTE's «RTPort» isConjugate) -->
   <xsl:function name="fp:dialect-conjugated" as="xs:boolean">
     <xsl:param name="e" as="element()"/>
-    <xsl:variable name="pairs" as="element()*" select="fp:dialect-apps($e)"/>
-    <xsl:sequence select="some $i in 1 to count($pairs) idiv 2
-                          satisfies $pairs[2 * $i]/d:conjugation[@stereotype eq local-name($pairs[2 * $i - 1])]
-                                    ! (lower-case(string(fp:tag-literal($pairs[2 * $i - 1], @tag))) = ('true', '1'))"/>
+    <xsl:sequence select="some $r in fp:dialect-rules($e, 'conjugation') satisfies fp:rule-tag-is($r, ('true', '1'))"/>
+
   </xsl:function>
 
   <!-- 'unwired' when port $e is unwired by its dialect's tag (UML-RT: an
@@ -331,11 +342,9 @@
        no port of the generated system -->
   <xsl:function name="fp:runtime-port" as="xs:string?">
     <xsl:param name="e" as="element()"/>
-    <xsl:variable name="pairs" as="element()*" select="fp:dialect-apps($e)"/>
     <xsl:variable name="unwired" as="xs:boolean"
-        select="some $i in 1 to count($pairs) idiv 2
-                satisfies $pairs[2 * $i]/d:unwired[@stereotype eq local-name($pairs[2 * $i - 1])]
-                          ! (lower-case(string(fp:tag-literal($pairs[2 * $i - 1], @tag))) = ('false', '0'))"/>
+        select="some $r in fp:dialect-rules($e, 'unwired') satisfies fp:rule-tag-is($r, ('false', '0'))"/>
+
     <xsl:sequence select="if ($unwired) then 'unwired'
         else if (some $h in $e/type/@href satisfies (some $p in $fp:dialects/d:runtime-library/@href satisfies matches($h, $p)))
         then 'library' else ()"/>
@@ -344,17 +353,15 @@
   <!-- the allocation rule of the dialect of an «Allocate» on Abstraction $e -->
   <xsl:function name="fp:allocation-rule" as="element(d:allocation)?">
     <xsl:param name="e" as="element()"/>
-    <xsl:variable name="pairs" as="element()*" select="fp:dialect-apps($e)"/>
-    <xsl:sequence select="(for $i in 1 to count($pairs) idiv 2
-                           return $pairs[2 * $i]/d:allocation[@stereotype eq local-name($pairs[2 * $i - 1])])[1]"/>
+    <xsl:sequence select="fp:dialect-rules($e, 'allocation')[1]?rule"/>
+
   </xsl:function>
 
   <!-- the node-allocation rule of Abstraction $e's dialect (SysML «Allocate») -->
   <xsl:function name="fp:node-allocation-rule" as="element(d:node-allocation)?">
     <xsl:param name="e" as="element()"/>
-    <xsl:variable name="pairs" as="element()*" select="fp:dialect-apps($e)"/>
-    <xsl:sequence select="(for $i in 1 to count($pairs) idiv 2
-                           return $pairs[2 * $i]/d:node-allocation[@stereotype eq local-name($pairs[2 * $i - 1])])[1]"/>
+    <xsl:sequence select="fp:dialect-rules($e, 'node-allocation')[1]?rule"/>
+
   </xsl:function>
 
   <!-- true when $e is an Abstraction its dialect reads as an allocation
@@ -544,11 +551,9 @@
        service-port stereotype: the interface typing it is so -->
   <xsl:function name="fp:dialect-service-kind" as="xs:string?">
     <xsl:param name="e" as="element()"/>
-    <xsl:variable name="pairs" as="element()*" select="fp:dialect-apps($e)"/>
-    <xsl:sequence select="(for $i in 1 to count($pairs) idiv 2
-                           return $pairs[2 * $i]/d:service-port[@stereotype eq local-name($pairs[2 * $i - 1])]
-                                  ! (let $literal := (fp:tag-literal($pairs[2 * $i - 1], @tag), string(@default))[1]
-                                     return (d:literal[lower-case(@name) eq lower-case($literal)]/@kind, string(@default))[1]))[1]"/>
+    <xsl:sequence select="(fp:dialect-rules($e, 'service-port')
+                           ! (let $rule := ?rule, $literal := (fp:tag-literal(?app, $rule/@tag), string($rule/@default))[1]
+                              return ($rule/d:literal[lower-case(@name) eq lower-case($literal)]/@kind, string($rule/@default))[1]))[1]"/>
   </xsl:function>
 
   <!-- the value of tag $tag of application $app as written: an attribute,

@@ -47,6 +47,7 @@
     xmlns:pim="urn:robomda:pim:1"
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
+    xmlns:tp="urn:robomda:xslt:template:private"
     xmlns:mp="urn:robomda:xslt:mode:private"
     exclude-result-prefixes="#all">
 
@@ -128,17 +129,7 @@
       <xsl:copy-of select="@*"/>
       <xsl:choose>
         <xsl:when test="map:contains($portless, generate-id(.))">
-          <xsl:variable name="after" as="element()?"
-              select="(pim:part | pim:operation | pim:connector | pim:attribute[last()]/following-sibling::*)[1]"/>
-          <xsl:for-each select="node()">
-            <xsl:if test=". is $after">
-              <xsl:sequence select="fp:implicit-ports(..)"/>
-            </xsl:if>
-            <xsl:apply-templates select="." mode="mp:promote"/>
-          </xsl:for-each>
-          <xsl:if test="empty($after)">
-            <xsl:sequence select="fp:implicit-ports(.)"/>
-          </xsl:if>
+          <xsl:call-template name="tp:with-implicit-ports"/>
         </xsl:when>
         <xsl:otherwise>
           <xsl:apply-templates mode="mp:promote"/>
@@ -146,6 +137,23 @@
       </xsl:choose>
     </xsl:copy>
   </xsl:template>
+
+  <!-- the content of the context component (or class taken as one), its
+       implicit ports after its attributes -->
+  <xsl:template name="tp:with-implicit-ports" as="node()*">
+    <xsl:variable name="after" as="element()?"
+        select="(pim:part | pim:operation | pim:connector | pim:attribute[last()]/following-sibling::*)[1]"/>
+    <xsl:for-each select="node()">
+      <xsl:if test=". is $after">
+        <xsl:sequence select="fp:implicit-ports(..)"/>
+      </xsl:if>
+      <xsl:apply-templates select="." mode="mp:promote"/>
+    </xsl:for-each>
+    <xsl:if test="empty($after)">
+      <xsl:sequence select="fp:implicit-ports(.)"/>
+    </xsl:if>
+  </xsl:template>
+
 
   <xsl:function name="fp:implicit-ports" as="element(pim:port)*">
     <xsl:param name="component" as="element()"/>
@@ -175,21 +183,14 @@
     <xsl:choose>
       <xsl:when test="map:contains($ids, generate-id(.)) and map:contains($portless, generate-id(.))">
         <!-- a class with no port taken as a component (its profile says so)
-             that provides or requires interfaces: a component first, then
-             given its implicit ports by the rule for components -->
-        <xsl:variable name="component" as="document-node()">
-          <xsl:document>
-            <pim:component>
-              <xsl:copy-of select="@* except (@active, @component, @parameters)"/>
-              <xsl:attribute name="drawn-as" select="'class'"/>
-              <xsl:copy-of select="node()"/>
-            </pim:component>
-          </xsl:document>
-        </xsl:variable>
-        <xsl:apply-templates select="$component/pim:component" mode="mp:promote">
-          <xsl:with-param name="ids" tunnel="yes" select="map { }"/>
-          <xsl:with-param name="portless" tunnel="yes" select="map { generate-id($component/pim:component): true() }"/>
-        </xsl:apply-templates>
+             that provides or requires interfaces: a component with its
+             implicit ports, as for components (read from the class, in the
+             model: its interfaces are looked up there) -->
+        <pim:component>
+          <xsl:copy-of select="@* except (@active, @component, @parameters)"/>
+          <xsl:attribute name="drawn-as" select="'class'"/>
+          <xsl:call-template name="tp:with-implicit-ports"/>
+        </pim:component>
       </xsl:when>
       <xsl:when test="map:contains($ids, generate-id(.))">
         <pim:component>
