@@ -25,8 +25,9 @@ apt_step() {
   else
     local sudo=(); [ "$(id -u)" = 0 ] || sudo=(sudo)
     say "installing Debian packages: ${absent[*]}"
-    "${sudo[@]}" apt-get update -q
-    DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -q --no-install-recommends "${absent[@]}"
+    # wait for another apt (an unattended upgrade, a second build) instead of failing, as tests/run.sh does
+    "${sudo[@]}" apt-get -o DPkg::Lock::Timeout=600 update -q
+    DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get -o DPkg::Lock::Timeout=600 install -y -q --no-install-recommends "${absent[@]}"
   fi
 }
 
