@@ -1103,3 +1103,14 @@ def test_classes_a_profile_makes_components_with_lollipops_get_named_ports(tmp_p
     flows = [(c.find("p:writer", NS).get("data-port"), c.find("p:reader", NS).get("data-port"))
              for c in pim.xpath("//p:binding/p:connection", namespaces=NS)]
     assert flows == [("IReading", "IReading")]
+
+
+def test_a_papyrus_for_robotics_model_deployed_on_nothing_is_a_ros2_model(tmp_path: Path) -> None:
+    """Its tool runs its components as managed (lifecycle) nodes, which only ROS 2 has: without
+    --target, check and generate take ROS 2 (a model of plain UML deployed on nothing stays Orocos's)."""
+    from robomda.api import default_targets
+
+    assert default_targets(P4R / "model.xmi") == ["ros2"]
+    assert check(P4R / "model.xmi").targets == ["ros2"]
+    assert generate(P4R / "model.xmi", tmp_path / "out").target == "ros2"
+    assert default_targets(SYSML / "model.xmi") == ["orocos"]

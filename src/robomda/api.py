@@ -215,7 +215,8 @@ def check(model: Path | str, target: str | None = None, *, package_name: str = "
     and bind errors, the PIM rules, the PSM step and its rules. Without one,
     the same for every target ``generate`` would pick (:func:`default_targets`):
     the middlewares the model's instances are deployed on, or Orocos when
-    they are deployed on none robomda generates for. ``rule_sets`` names the
+    they are deployed on none robomda generates for (ROS 2 when they are
+    deployed on none and run as managed nodes: Papyrus for Robotics). ``rule_sets`` names the
     rule files (and phases) that ran. Diagnostics found by several targets
     are reported once. Input that cannot be read at all still raises
     :class:`RobomdaError` (exit code 2).
@@ -299,19 +300,31 @@ def _rule_ids(rules: Path) -> frozenset[str]:
 
 def _targets_of(bound: pipelines.RunResult) -> list[str]:
     """The targets of the middlewares the instances of a bound PIM (the import chain's result) are
-    deployed on, in target order (looked up in the tree Saxon holds, else read from the text as a
+    deployed on (ROS 2's when they are deployed on none and their default processes are managed), in target order (looked up in the tree Saxon holds, else read from the text as a
     stream: no lxml tree of the whole model for a few attributes)."""
+    pim = {"m": "urn:robomda:pim:1"}
     if bound.handed is not None:
-        deployed = set(shared().strings(bound.handed, "distinct-values(//m:instance/@middleware)",
-                                        {"m": "urn:robomda:pim:1"}))
+        deployed = set(shared().strings(bound.handed, "distinct-values(//m:instance/@middleware)", pim))
+        managed = set(shared().strings(bound.handed, "distinct-values(//m:process[@default = 'true']/@managed)", pim))
     else:
-        deployed = {e.get("middleware") for e in stream(bound.output) if e.tag == "{urn:robomda:pim:1}instance"}
+        deployed, managed = set(), set()
+        for e in stream(bound.output):  # each element is cleared once read: take what is needed now
+            if e.tag == "{urn:robomda:pim:1}instance":
+                deployed.add(e.get("middleware"))
+            elif e.tag == "{urn:robomda:pim:1}process" and e.get("default") == "true":
+                managed.add(e.get("managed"))
+    deployed.discard(None)
+    if not deployed and managed == {"true"}:
+        # deployed on nothing, but run as managed (lifecycle) nodes, as its tool means them (Papyrus
+        # for Robotics): ROS 2, the middleware with a node lifecycle
+        deployed = {"ROS2"}
     served = target_of_middleware()
     return [t for t in available_targets() if any(served.get(m) == t for m in deployed)]
 
 
 def default_targets(model: Path | str, model_path: Sequence[Path | str] = ()) -> list[str]:
-    """The targets ``generate`` and ``check`` use without ``--target``: the model's middlewares, else Orocos."""
+    """The targets ``generate`` and ``check`` use without ``--target``: the model's middlewares, else Orocos
+    (ROS 2 for a model deployed on none whose default processes run managed nodes)."""
     model = Path(model)
     _check_readable(model)
     return _default_targets(model, _context(model, None, "", model_path=_model_path(model_path)))[0]
@@ -355,7 +368,8 @@ def generate(model: Path | str, out: Path | str | None, target: str | None = Non
     """Run ``target``'s chain on ``model`` and write its files into ``out``.
 
     Without a ``target``: the one middleware the model deploys on (Orocos
-    when it deploys on none robomda generates for); a model deployed on
+    when it deploys on none robomda generates for, ROS 2 when it deploys on
+    none but runs managed nodes); a model deployed on
     several must name one (usage error, exit code 2). Nothing is written
     unless every step succeeded and every intermediate model is valid. With
     ``write=False`` only the stage outputs are returned. With ``diagrams``,

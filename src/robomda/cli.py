@@ -44,7 +44,8 @@ def _package_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--license", default="", metavar="LICENSE", help="the package license (e.g. Apache-2.0)")
     parser.add_argument("--package-version", default="", metavar="X.Y.Z", help="the package version (default 0.0.0)")
     parser.add_argument("-t", "--target", default=None, choices=targets(),
-                        help="middleware target (default: the one the model deploys on; Orocos if it deploys on none)")
+                        help="middleware target (default: the one the model deploys on; Orocos if it deploys on none, "
+                             "ROS 2 if it deploys on none and runs managed nodes)")
     parser.add_argument("--package-name", default="", metavar="NAME",
                         help="package / CMake project name (default: derived from the model name)")
     parser.add_argument("--type-map", type=Path, metavar="FILE",
