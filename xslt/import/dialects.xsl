@@ -43,7 +43,6 @@
            robomda has no target for; IMP124 an «Allocate» to what is no
            Node; IMP125 allocations to nodes in several deployment plans
            (none is read).
-
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -103,7 +102,6 @@
     <xsl:sequence select="lower-case(string(fp:tag-literal($r?app, $r?rule/@tag))) = $values"/>
   </xsl:function>
 
-
   <!-- @component and @dialect of the pim:class made from class $e: true
        when a stereotype of a dialect's component list is applied to it,
        false when one of its not-component list is (none: bind's rule
@@ -115,7 +113,6 @@
     <xsl:if test="exists($hit)">
       <xsl:variable name="dialect" as="element(d:dialect)" select="$hit?dialect"/>
       <xsl:variable name="stereotype" as="xs:string" select="local-name($hit?app)"/>
-
       <xsl:variable name="component" as="xs:boolean" select="$stereotype = tokenize($dialect/d:component/@stereotypes)"/>
       <xsl:attribute name="component" select="$component"/>
       <xsl:attribute name="dialect" select="$dialect/@name || '::' || $stereotype"/>
@@ -148,7 +145,6 @@
       <xsl:variable name="app" as="element()" select="$hit?app"/>
       <xsl:variable name="rule" as="element()" select="$hit?rule"/>
       <xsl:variable name="dialect" as="element(d:dialect)" select="$rule/.."/>
-
       <xsl:variable name="literal" as="xs:string" select="(fp:tag-literal($app, $rule/@tag), string($rule/@default))[1]"/>
       <xsl:variable name="direction" as="xs:string?"
           select="$rule/d:literal[lower-case(@name) eq lower-case($literal)][1]/@direction"/>
@@ -201,7 +197,6 @@
     <xsl:param name="e" as="element()"/>
     <xsl:variable name="rules" as="element(d:service-definition)*"
         select="fp:dialect-rules($e, 'service-definition') ! ?rule"/>
-
     <xsl:variable name="signature" as="xs:string*"
         select="$e/templateBinding/signature/@href ! replace(., '^.*#', ''), $e/templateBinding ! fp:ref-ids(., 'signature')"/>
     <xsl:sequence select="($rules/d:pattern[@signature = $signature],
@@ -333,7 +328,6 @@
   <xsl:function name="fp:dialect-conjugated" as="xs:boolean">
     <xsl:param name="e" as="element()"/>
     <xsl:sequence select="some $r in fp:dialect-rules($e, 'conjugation') satisfies fp:rule-tag-is($r, ('true', '1'))"/>
-
   </xsl:function>
 
   <!-- 'unwired' when port $e is unwired by its dialect's tag (UML-RT: an
@@ -344,7 +338,6 @@
     <xsl:param name="e" as="element()"/>
     <xsl:variable name="unwired" as="xs:boolean"
         select="some $r in fp:dialect-rules($e, 'unwired') satisfies fp:rule-tag-is($r, ('false', '0'))"/>
-
     <xsl:sequence select="if ($unwired) then 'unwired'
         else if (some $h in $e/type/@href satisfies (some $p in $fp:dialects/d:runtime-library/@href satisfies matches($h, $p)))
         then 'library' else ()"/>
@@ -354,14 +347,12 @@
   <xsl:function name="fp:allocation-rule" as="element(d:allocation)?">
     <xsl:param name="e" as="element()"/>
     <xsl:sequence select="fp:dialect-rules($e, 'allocation')[1]?rule"/>
-
   </xsl:function>
 
   <!-- the node-allocation rule of Abstraction $e's dialect (SysML «Allocate») -->
   <xsl:function name="fp:node-allocation-rule" as="element(d:node-allocation)?">
     <xsl:param name="e" as="element()"/>
     <xsl:sequence select="fp:dialect-rules($e, 'node-allocation')[1]?rule"/>
-
   </xsl:function>
 
   <!-- true when $e is an Abstraction its dialect reads as an allocation
@@ -386,7 +377,6 @@
                            else if ($e/@x:type eq 'Property') then fp:targets($e, 'type') else ())[@x:type = $node-metas][1]"/>
   </xsl:function>
 
-
   <!-- the deployment plan allocation $a belongs to: the nearest package
        stereotyped as its rule's @plan, else the package that owns it (a
        plan whose stereotype the tool did not write) -->
@@ -398,14 +388,12 @@
         else ($a/ancestor::*[@x:type = ('Package', 'Model')]
                  [key('fp:stereotype-by-base', fp:id(.), root(.))[local-name() eq $plan]][1],
               $a/ancestor::*[@x:type = ('Package', 'Model')][1])[1]"/>
-
   </xsl:function>
 
   <!-- the allocations to a node that belong to a deployment plan, under
        one key value -->
   <xsl:key name="fp:planned-allocation" match="*[@x:type eq 'Abstraction']"
       use="if (exists(fp:node-allocation-rule(.)/@plan) and exists(fp:targets(., 'supplier') ! fp:node-of(.))) then 'any' else ()"/>
-
 
   <!-- the deployment plans of the model's allocations, when there are
        several (alternatives: none is read, IMP125), else () -->
@@ -425,8 +413,6 @@
                           else key('fp:abstraction-by-supplier', fp:id($node), root($node))
                                [exists(fp:node-allocation-rule(.))]
                                [empty(fp:allocation-plan(.)) or empty(fp:rival-plans(.))]">
-
-
       <xsl:variable name="deployed" as="xs:string*"
           select="distinct-values(fp:targets(., 'client') ! (if (@x:type eq 'InstanceSpecification') then fp:allocated-element(.) else .) ! fp:id(.))"/>
       <xsl:if test="exists($deployed)">

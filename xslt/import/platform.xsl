@@ -117,7 +117,6 @@
       <xsl:sequence select="fp:node-allocations(.)"/>
       <xsl:apply-templates select="*[@x:type = $node-metas]" mode="mp:platform"/>
     </pim:node>
-
   </xsl:template>
 
   <xsl:template match="*[@x:type = $artifact-metas]" mode="mp:platform" as="element(pim:artifact)">

@@ -27,8 +27,8 @@
            service definition (so dialects.xsl reads its pattern as for a
            service definition of the model).
   Params:  none.  Keys: fp:stand-in.
-  Errors:  none. What the targets cannot do with a library message is
-           theirs to say (ORO001, RTM001: a located error).
+  Errors:  none. What a target cannot do with a library message it says
+           itself, located (ORO001; RTM001, a warning; RTM021).
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"

@@ -626,7 +626,6 @@
     <!-- a library that names its types by id only says the type's name (@label) -->
     <xsl:variable name="label" as="xs:string?" select="key('fp:primitive', $lib || '|' || $name, $primitive-table)/@label"/>
     <xsl:sequence select="map { 'library': $lib, 'name': ($label, $name)[1], 'kind': fp:primitive-kind($lib, $name) }"/>
-
   </xsl:function>
 
   <!-- fp:href-type of every distinct href of a type reference in $norm -->

@@ -122,7 +122,6 @@
     BND015  a delegation joins ports that do not carry the same data in the
             same direction
     BND035  a composite's own behaviour port (UML-RT) joined to its part
-
     BND016  (warning) a property of a composite promotes the property of no part
     BND017  a property of a composite names the properties of several parts
     BND018  a part sets a value on a property its type does not have
@@ -402,7 +401,6 @@
         select="$components[exists(key('fp:instance-by-component', @id, $instance-tree))]/pim:port
                 [not(@runtime)][not(@type-library = ('local', 'ros-message'))][empty(@type)][empty(@primitive)]
                 [not(pim:provided or pim:required)]"/>
-
     <xsl:if test="exists($unknown-typed)">
       <xsl:sequence select="f:warn('BND034', string($unknown-typed[1]/@id), count($unknown-typed) || ' port'
           || (if (count($unknown-typed) gt 1) then 's are' else ' is') || ' typed by a data type of a library outside the model,'

@@ -154,7 +154,6 @@
     </xsl:if>
   </xsl:template>
 
-
   <xsl:function name="fp:implicit-ports" as="element(pim:port)*">
     <xsl:param name="component" as="element()"/>
     <xsl:variable name="root" as="document-node()" select="root($component)"/>

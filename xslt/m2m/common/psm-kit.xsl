@@ -30,7 +30,6 @@
     fp:type-library($typed)      the library of its type (a data port: its datum's)
     fp:library-note($typed)      what a target that cannot carry a ROS library
                                  message says of one: ' (a message of ...)', else ''
-
     fp:realization($bc)          the realizing class of a bound component
     fp:owner($bc)                where operations and attributes are read
     fp:callable($bc)             the non-private operations of the realization

@@ -75,7 +75,6 @@
         if ($name ne '') then key('fp:type-by-name', $name, $fp:builtin-types) else (),
         if ($primitive ne '') then key('fp:type-by-primitive', $primitive, $fp:builtin-types) else (),
         if (fp:type-library($typed) eq 'ros-message') then fp:library-message($name) else (),
-
         fp:type-def($typed) ! fp:def-type(.))[1]"/>
   </xsl:function>
 
@@ -97,7 +96,6 @@
                          else $name || '.h'}"/>
     </xsl:if>
   </xsl:function>
-
 
   <!-- a data type or an enumeration with a literal, as a generated type -->
   <xsl:function name="fp:def-type" as="element(ty:type)?">
@@ -242,13 +240,11 @@
         <xsl:if test="$message">
           <xsl:attribute name="msg-field" select="$type/@msg-field"/>
           <xsl:attribute name="element-kind" select="($element/@kind, $element/@element-kind, 'primitive')[1]"/>
-
           <xsl:sequence select="$type/@array"/>
         </xsl:if>
         <xsl:sequence select="$element/@include"/>
         <xsl:sequence select="fp:psm-doc(.)"/>
       </r:field>
-
     </xsl:for-each>
   </xsl:function>
 

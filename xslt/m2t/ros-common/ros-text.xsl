@@ -597,7 +597,6 @@
     <xsl:variable name="target" as="xs:string" select="$to || '.' || (if ($to eq 'm') then $field/@name else $field/@member)"/>
     <xsl:variable name="copy" as="xs:string" select="
         if ($field/@element-kind = ('primitive', 'message')) then '{1} = {0};' else $function || '({0}, {1});'"/>
-
     <xsl:sequence select="
       if (empty($field/@array)) then '  ' || replace(replace($copy, '\{0\}', $source), '\{1\}', $target)
       else (

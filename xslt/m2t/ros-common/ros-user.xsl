@@ -141,7 +141,6 @@
                         ! concat('#include &lt;', fp:message-header(., $node/..), '&gt;')),
         '',
         concat('namespace ', $node/@namespace, ' {'),
-
         '',
         '/**',
         concat(' * ', fp:doc-of($node, concat('The code of component ', $node/@name, '.'))),

@@ -29,7 +29,6 @@
         ($package/r:node/r:port/r:message/@msg, $package/r:node/r:service/@srv, $package/r:node/r:service-client/@srv)[contains(., '/')] ! substring-before(., '/'),
         (: what the generated messages use :)
         fp:message-dependencies($package))))"/>
-
   </xsl:function>
 
   <xsl:function name="fp:ros1-cmakelists" as="xs:string">
@@ -52,7 +51,6 @@
           '',
           concat('add_message_files(FILES ', string-join($package/r:types/*/@message ! (. || '.msg'), ' '), ')'),
           concat('generate_messages(', string-join(('DEPENDENCIES'[exists(fp:message-dependencies($package))], fp:message-dependencies($package)), ' '), ')'))
-
         else (),
         '',
         'catkin_package(',

@@ -32,7 +32,6 @@
         ($package/r:node/r:port/r:message/@msg, $package/r:node/r:service/@srv, $package/r:node/r:service-client/@srv)[contains(., '/')] ! substring-before(., '/'),
         (: what the generated messages use :)
         fp:message-dependencies($package))))"/>
-
   </xsl:function>
 
   <xsl:function name="fp:ros2-cmakelists" as="xs:string">
