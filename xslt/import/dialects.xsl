@@ -429,11 +429,13 @@
     <xsl:param name="root" as="element()"/>
     <xsl:variable name="rivals" as="element()*"
         select="if (empty(key('fp:dialect-use', 'any', root($root)))) then () else fp:rival-plans($root)"/>
-    <xsl:for-each select="key('fp:planned-allocation', 'any', root($root))[exists($rivals)][1]">
+    <xsl:variable name="planned" as="element()*" select="key('fp:planned-allocation', 'any', root($root))[exists($rivals)]"/>
+    <xsl:for-each select="$planned[1]">
       <xsl:sequence select="f:warn('IMP125', fp:id(.), 'the model''s allocations belong to ' || count($rivals)
           || ' deployment plans (' || string-join($rivals ! ('''' || @name || ''''), ', ') || '), alternatives of one another:'
           || ' robomda reads none of them, and the instances run where the model''s other deployments put them;'
-          || ' keep one plan in the model you generate from')"/>
+          || ' keep one plan in the model you generate from (the allocations and their stereotypes: xmi:ids='
+          || string-join($planned ! (fp:id(.), key('fp:stereotype-by-base', fp:id(.), root(.)) ! fp:id(.)), ',') || ')')"/>
     </xsl:for-each>
     <!-- one warning per element allocated to: a model tracing its blocks to
          requirements allocates dozens -->
