@@ -300,8 +300,9 @@ def _rule_ids(rules: Path) -> frozenset[str]:
 
 def _targets_of(bound: pipelines.RunResult) -> list[str]:
     """The targets of the middlewares the instances of a bound PIM (the import chain's result) are
-    deployed on (ROS 2's when they are deployed on none and their default processes are managed), in target order (looked up in the tree Saxon holds, else read from the text as a
-    stream: no lxml tree of the whole model for a few attributes)."""
+    deployed on (ROS 2's when they are deployed on none and their default processes are managed), in
+    target order (looked up in the tree Saxon holds, else read from the text as a stream: no lxml tree
+    of the whole model for a few attributes)."""
     pim = {"m": "urn:robomda:pim:1"}
     if bound.handed is not None:
         deployed = set(shared().strings(bound.handed, "distinct-values(//m:instance/@middleware)", pim))

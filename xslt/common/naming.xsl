@@ -19,6 +19,10 @@
                               never become C++ (a process: its files, its deployer
                               name): "RTT" stays "RTT"
     f:snake-case($name)       lower snake_case identifier ("visionValue" -> vision_value)
+    f:ros-header($package, $name, $kind, $version)  the C++ header of ROS message or
+                              service (kind msg / srv) $package/$name: ROS 1
+                              pkg/Name.h, ROS 2 pkg/kind/name.hpp with rosidl's
+                              file name (UInt8 -> u_int8)
     f:upper-camel($name)      UpperCamelCase identifier ("vision value" -> VisionValue)
     f:upper-first($s)         first letter upper-cased, rest unchanged
     f:lower-first($s)         first letter lower-cased, rest unchanged
@@ -89,6 +93,15 @@
     <xsl:sequence select="if ($clean = ('', '_')) then 'unnamed'
                           else if (matches($clean, '^[0-9]')) then 'n' || $clean
                           else $clean"/>
+  </xsl:function>
+
+  <xsl:function name="f:ros-header" as="xs:string">
+    <xsl:param name="package" as="xs:string"/>
+    <xsl:param name="name" as="xs:string"/>
+    <xsl:param name="kind" as="xs:string"/>
+    <xsl:param name="version" as="xs:string"/>
+    <xsl:sequence select="if ($version eq '1') then $package || '/' || $name || '.h'
+                          else $package || '/' || $kind || '/' || lower-case(string-join(f:words($name), '_')) || '.hpp'"/>
   </xsl:function>
 
   <xsl:function name="f:snake-case" as="xs:string">

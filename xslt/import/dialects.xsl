@@ -400,19 +400,21 @@
   <xsl:function name="fp:rival-plans" as="element()*">
     <xsl:param name="any" as="node()"/>
     <xsl:variable name="plans" as="element()*"
-        select="(key('fp:planned-allocation', 'any', root($any)) ! fp:allocation-plan(.))/."/>
+        select="if (empty(key('fp:dialect-use', 'any', root($any)))) then ()
+                else (key('fp:planned-allocation', 'any', root($any)) ! fp:allocation-plan(.))/."/>
     <xsl:sequence select="if (count($plans) gt 1) then $plans else ()"/>
   </xsl:function>
 
   <!-- the pim:deployment of each «Allocate» (a node-allocation rule) to
-       node $node: what it allocates runs there (not when the allocations
-       belong to rival deployment plans) -->
+       node $node: what it allocates runs there (not an allocation of a
+       plan when there are $rival-plans: fp:rival-plans) -->
   <xsl:function name="fp:node-allocations" as="element(pim:deployment)*">
     <xsl:param name="node" as="element()"/>
+    <xsl:param name="rival-plans" as="element()*"/>
     <xsl:for-each select="if (empty(key('fp:dialect-use', 'any', root($node)))) then ()
                           else key('fp:abstraction-by-supplier', fp:id($node), root($node))
                                [exists(fp:node-allocation-rule(.))]
-                               [empty(fp:allocation-plan(.)) or empty(fp:rival-plans(.))]">
+                               [empty($rival-plans) or empty(fp:allocation-plan(.))]">
       <xsl:variable name="deployed" as="xs:string*"
           select="distinct-values(fp:targets(., 'client') ! (if (@x:type eq 'InstanceSpecification') then fp:allocated-element(.) else .) ! fp:id(.))"/>
       <xsl:if test="exists($deployed)">
@@ -423,19 +425,21 @@
     </xsl:for-each>
   </xsl:function>
 
-  <!-- IMP124 for each «Allocate» (a node-allocation rule) to something
-       that is no Node: a block of hardware, a function ... -->
+  <!-- IMP125 when the allocations of plans are alternatives ($rival-plans:
+       fp:rival-plans); IMP124 for the «Allocate»s (a node-allocation rule)
+       to something that is no Node: a requirement, a block of hardware, a
+       function ... -->
   <xsl:function name="fp:node-allocation-warnings" as="empty-sequence()">
     <xsl:param name="root" as="element()"/>
-    <xsl:variable name="rivals" as="element()*"
-        select="if (empty(key('fp:dialect-use', 'any', root($root)))) then () else fp:rival-plans($root)"/>
-    <xsl:variable name="planned" as="element()*" select="key('fp:planned-allocation', 'any', root($root))[exists($rivals)]"/>
+    <xsl:param name="rival-plans" as="element()*"/>
+    <xsl:variable name="planned" as="element()*"
+        select="if (empty($rival-plans)) then () else key('fp:planned-allocation', 'any', root($root))"/>
     <xsl:for-each select="$planned[1]">
-      <xsl:sequence select="f:warn('IMP125', fp:id(.), 'the model''s allocations belong to ' || count($rivals)
-          || ' deployment plans (' || string-join($rivals ! ('''' || @name || ''''), ', ') || '), alternatives of one another:'
+      <xsl:sequence select="f:warn('IMP125', fp:id(.), 'the model''s allocations belong to ' || count($rival-plans)
+          || ' deployment plans (' || string-join($rival-plans ! ('''' || @name || ''''), ', ') || '), alternatives of one another:'
           || ' robomda reads none of them, and the instances run where the model''s other deployments put them;'
-          || ' keep one plan in the model you generate from (the allocations and their stereotypes: xmi:ids='
-          || string-join($planned ! (fp:id(.), key('fp:stereotype-by-base', fp:id(.), root(.)) ! fp:id(.)), ',') || ')')"/>
+          || ' keep one plan in the model you generate from (the allocations and their stereotypes: '
+          || fp:with-stereotype-ids($planned) || ')')"/>
     </xsl:for-each>
     <!-- one warning per element allocated to: a model tracing its blocks to
          requirements allocates dozens -->
@@ -454,9 +458,16 @@
           || ' to ' || (if ($to) then $to else 'nothing') || ', which is no Node: robomda reads only an allocation to a Node'
           || ' (a Device, an ExecutionEnvironment) as a deployment there, so ' || (if ($n gt 1) then 'these stay' else 'it stays')
           || ' in the model only (a trace to a requirement, a function or a hardware block); to deploy, allocate to a Node'
-          || ' (the allocations and their stereotypes: xmi:ids='
-          || string-join(current-group() ! (fp:id(.), key('fp:stereotype-by-base', fp:id(.), root(.)) ! fp:id(.)), ',') || ')')"/>
+          || ' (the allocations and their stereotypes: ' || fp:with-stereotype-ids(current-group()) || ')')"/>
     </xsl:for-each-group>
+  </xsl:function>
+
+  <!-- 'xmi:ids=' and the ids of $elements, each followed by its stereotype
+       applications': how a warning names what it says is not read, so that
+       nothing is left out in silence (report.xsl) -->
+  <xsl:function name="fp:with-stereotype-ids" as="xs:string">
+    <xsl:param name="elements" as="element()*"/>
+    <xsl:sequence select="'xmi:ids=' || string-join($elements ! (fp:id(.), key('fp:stereotype-by-base', fp:id(.), root(.)) ! fp:id(.)), ',')"/>
   </xsl:function>
 
   <!-- slots by the instance their InstanceValue names -->
@@ -507,8 +518,7 @@
                 || string-join(fp:targets(., 'client') ! ('''' || @name || ''''), ', ') || ' to ' || $what
                 || ', for which robomda generates nothing: it is generated with the instances the model deploys on no'
                 || ' middleware (a simulated sensor is generated as a component of its own, for its user class to fill in;'
-                || ' the allocation and its stereotype: xmi:ids='
-                || string-join((fp:id(.), key('fp:stereotype-by-base', fp:id(.), root(.)) ! fp:id(.)), ',') || ')')"/>
+                || ' the allocation and its stereotype: ' || fp:with-stereotype-ids(.) || ')')"/>
           </xsl:for-each>
         </xsl:otherwise>
       </xsl:choose>

@@ -62,12 +62,15 @@
   <xsl:template name="tp:platform" as="element(pim:platform)">
     <xsl:param name="root" as="element()" tunnel="yes"/>
     <xsl:variable name="all" as="element()*" select="$root/descendant-or-self::*[@x:type = $platform-metas]"/>
+    <!-- rival deployment plans (dialects.xsl), found once for every node -->
+    <xsl:variable name="rival-plans" as="element()*" select="fp:rival-plans($root)"/>
     <pim:platform>
-      <xsl:apply-templates select="$all[@x:type = $node-metas][not(../@x:type = $node-metas)]"
-          mode="mp:platform"/>
+      <xsl:apply-templates select="$all[@x:type = $node-metas][not(../@x:type = $node-metas)]" mode="mp:platform">
+        <xsl:with-param name="rival-plans" as="element()*" select="$rival-plans" tunnel="yes"/>
+      </xsl:apply-templates>
       <!-- the execution environments of a tool's deployment plans (RobotML:
            dialects.xsl) -->
-      <xsl:sequence select="fp:allocation-nodes($root), fp:node-allocation-warnings($root)"/>
+      <xsl:sequence select="fp:allocation-nodes($root), fp:node-allocation-warnings($root, $rival-plans)"/>
       <xsl:apply-templates select="$all[@x:type = $artifact-metas]" mode="mp:platform"/>
       <xsl:apply-templates select="$all[@x:type eq 'CommunicationPath']" mode="mp:platform"/>
     </pim:platform>
@@ -78,6 +81,7 @@
   <xsl:template match="*[@x:type = $node-metas]" mode="mp:platform" as="element(pim:node)">
     <xsl:param name="root" as="element()" tunnel="yes"/>
     <xsl:param name="chains" as="map(*)" tunnel="yes" select="map { }"/>
+    <xsl:param name="rival-plans" as="element()*" tunnel="yes" select="()"/>
     <xsl:variable name="meta" as="xs:string" select="fp:meta(.)"/>
     <pim:node id="{fp:id(.)}" name="{@name}" qualified-name="{fp:qname(., $root)}"
         kind="{if ($meta eq 'Device') then 'device'
@@ -114,7 +118,7 @@
         </xsl:if>
       </xsl:for-each>
       <!-- what a dialect's «Allocate» puts here (SysML: dialects.xsl) -->
-      <xsl:sequence select="fp:node-allocations(.)"/>
+      <xsl:sequence select="fp:node-allocations(., $rival-plans)"/>
       <xsl:apply-templates select="*[@x:type = $node-metas]" mode="mp:platform"/>
     </pim:node>
   </xsl:template>

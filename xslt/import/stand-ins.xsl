@@ -15,8 +15,8 @@
            supplier or contract whose href a d:library-service rule of
            dialects.xml matches; then the normalised document.
   Writes:  on such a reference, x:idref (the stand-in's id,
-           robomda.lib.<package>.<name>) and x:stand-in (the rule's
-           position, so the stand-ins are found by key); fp:with-stand-ins:
+           robomda.lib.<package>.<name>) and x:stand-in (a marker, so the
+           references are found by key); fp:with-stand-ins:
            the normalised document unchanged when it has no such reference,
            else a copy with, inside the model element, a Package per
            library package (robomda.lib.<package>, named after it) holding
@@ -26,7 +26,8 @@
            the dialect's stereotype application that makes each one a
            service definition (so dialects.xsl reads its pattern as for a
            service definition of the model).
-  Params:  none.  Keys: fp:stand-in.
+  Params:  none.  Keys: fp:stand-in (asked only when the model uses a
+           dialect: fp:dialect-use of dialects.xsl).
   Errors:  none. What a target cannot do with a library message it says
            itself, located (ORO001; RTM001, a warning; RTM021).
 -->
@@ -56,9 +57,8 @@
 
   <xsl:template match="*[local-name() = ('supplier', 'contract')][exists(fp:library-service(@href))]"
                 mode="mp:normalise-extra" as="attribute()+">
-    <xsl:variable name="rule" as="element(d:library-service)" select="fp:library-service(@href)"/>
-    <xsl:attribute name="x:idref" select="fp:stand-in-id(@href, $rule)"/>
-    <xsl:attribute name="x:stand-in" select="count($rule/preceding::d:library-service) + 1"/>
+    <xsl:attribute name="x:idref" select="fp:stand-in-id(@href, fp:library-service(@href))"/>
+    <xsl:attribute name="x:stand-in" select="'true'"/>
   </xsl:template>
 
   <xsl:key name="fp:stand-in" match="*[@x:stand-in]" use="'any'"/>
@@ -79,10 +79,9 @@
         <xsl:variable name="services" as="map(*)*">
           <xsl:for-each-group select="$refs" group-by="string(@x:idref)">
             <xsl:sort select="current-grouping-key()"/>
-            <xsl:variable name="rule" as="element(d:library-service)"
-                select="($fp:dialects/d:library-service)[xs:integer(current-group()[1]/@x:stand-in)]"/>
             <xsl:variable name="href" as="xs:string" select="current-group()[1]/@href"/>
-            <xsl:sequence select="map { 'id': current-grouping-key(), 'rule': $rule, 'href': $href,
+            <xsl:variable name="rule" as="element(d:library-service)" select="fp:library-service($href)"/>
+            <xsl:sequence select="map { 'id': current-grouping-key(), 'rule': $rule,
                 'package': replace($href, $rule/@href, $rule/@package),
                 'name': replace($href, $rule/@href, $rule/@name),
                 'datum': replace($href, $rule/@href, $rule/@datum) }"/>

@@ -92,8 +92,7 @@
           select="$package || (if ($ros-version eq '2') then '::msg::' else '::') || $type"/>
       <ty:type primitive="" cpp="{$cpp}" msg="{$name}" field="" msg-field="{$name}" param1="" param2="" sample="{$cpp}()"
                element-kind="message"
-               include="{if ($ros-version eq '2') then $package || '/msg/' || lower-case(string-join(f:words($type), '_')) || '.hpp'
-                         else $name || '.h'}"/>
+               include="{f:ros-header($package, $type, 'msg', $ros-version)}"/>
     </xsl:if>
   </xsl:function>
 

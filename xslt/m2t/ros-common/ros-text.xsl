@@ -20,7 +20,6 @@
     fp:ros-on-input($port, $rc)  the body of a subscription callback
     fp:msg-parts($msg, $pkg)  (package, Name) of a message: a generated
                            message (no "/") lives in package $pkg
-    fp:ros-snake($name)    rosidl's file-name form of a type name (UInt8 -> u_int8)
     fp:library-external-project / fp:library-vars / fp:library-depends  CMake lines
                            finding, linking and building first the atomic-code
                            library (cache variable as in the Orocos target)
@@ -146,11 +145,6 @@
     <xsl:param name="msg" as="xs:string"/>
     <xsl:param name="pkg" as="xs:string"/>
     <xsl:sequence select="if (contains($msg, '/')) then (substring-before($msg, '/'), substring-after($msg, '/')) else ($pkg, $msg)"/>
-  </xsl:function>
-
-  <xsl:function name="fp:ros-snake" as="xs:string">
-    <xsl:param name="name" as="xs:string"/>
-    <xsl:sequence select="lower-case(string-join(f:words($name), '_'))"/>
   </xsl:function>
 
   <xsl:function name="fp:double-literal" as="xs:string">
@@ -479,7 +473,7 @@
     <xsl:param name="type" as="xs:string"/>
     <xsl:param name="pkg" as="xs:string"/>
     <xsl:variable name="item" as="xs:string+" select="fp:msg-parts($type, $pkg)"/>
-    <xsl:sequence select="concat($item[1], '/', $item[2], '.h'), concat($item[1], '::', $item[2])"/>
+    <xsl:sequence select="f:ros-header($item[1], $item[2], 'msg', '1'), concat($item[1], '::', $item[2])"/>
   </xsl:function>
 
   <!-- (header, C++ type) of "pkg/Name"; $kind msg or srv -->
@@ -488,7 +482,7 @@
     <xsl:param name="pkg" as="xs:string"/>
     <xsl:param name="kind" as="xs:string"/>
     <xsl:variable name="item" as="xs:string+" select="fp:msg-parts($type, $pkg)"/>
-    <xsl:sequence select="concat($item[1], '/', $kind, '/', fp:ros-snake($item[2]), '.hpp'), concat($item[1], '::', $kind, '::', $item[2])"/>
+    <xsl:sequence select="f:ros-header($item[1], $item[2], $kind, '2'), concat($item[1], '::', $kind, '::', $item[2])"/>
   </xsl:function>
 
   <!-- the packages whose messages the generated messages use: std_msgs for
