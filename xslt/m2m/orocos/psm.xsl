@@ -332,6 +332,13 @@
           <xsl:sequence select="fp:psm-doc(.)"/>
         </o:parameter>
       </xsl:for-each>
+      <!-- a result of a type of the model: the header it needs, the
+           typekit's type (types.xsl reads every typed element) -->
+      <xsl:if test="$result-type/@type-ref">
+        <o:result xmi-id="{$result/@id}">
+          <xsl:sequence select="fp:oro-typed($result-type)"/>
+        </o:result>
+      </xsl:if>
     </o:operation>
   </xsl:function>
 
