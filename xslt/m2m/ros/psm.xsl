@@ -30,7 +30,12 @@
       the component), except the lifecycle names, where a std_srvs service
       fits: no argument and no result -> std_srvs/Empty; no argument and a
       Boolean result -> std_srvs/Trigger; one Boolean argument -> std_srvs/
-      SetBool. Any other operation is left out with warning ROS101.
+      SetBool. An operation of a provided or required interface that fits
+      none: a service of the package's own (r:service-type, srv/<Op>.srv:
+      a request field per argument, a response field for the result, each
+      the message that carries the parameter's type; fp:own-service); one
+      that can have none (an out / inout parameter, a type no message
+      carries): ROS009. Any other operation is left out with warning ROS101.
   N4  parameters: the attributes R4 of the Orocos target selects
       (Configurable, else public/protected non-static non-read-only ones not
       named sample/priority/scheduler/cpuAffinity), with declared type and
@@ -92,8 +97,9 @@
     ROS011  a connection between an instance of the package and one on a
             middleware no transport reaches from it (names both ends)
     ROS009  an operation call ROS cannot make (an operation of a provided
-            or required interface that fits no std_srvs service, two ports
-            of one interface and role, two required operations of one name)
+            or required interface that fits no std_srvs service and can have
+            no service of its own, two ports of one interface and role, two
+            required operations of one name)
   Warnings (f:warn):
     ROS100  no instance is deployed on the target's middleware: the
             instances of the others are generated for ROS anyway (once)
@@ -162,6 +168,10 @@
   <xsl:key name="fp:connection-by-end" match="pim:connection"
       use="(pim:writer | pim:reader) ! (@instance || '/' || @data-port)"/>
   <xsl:key name="fp:node" match="r:node" use="@xmi-id"/>
+  <!-- N3: the interfaces' operations and the model's types by the name a
+       service of its own would have (fp:srv-name) -->
+  <xsl:key name="fp:operation-by-srv" match="pim:interface/pim:operation" use="f:upper-camel(@name)"/>
+  <xsl:key name="fp:type-by-srv" match="pim:datatype | pim:enumeration" use="f:upper-camel(@name)"/>
   <xsl:key name="fp:instance-by-name" match="pim:binding/pim:instance" use="@name"/>
   <xsl:key name="fp:process" match="pim:process" use="@xmi-id"/>
   <xsl:key name="fp:thread" match="pim:thread" use="@xmi-id"/>
@@ -230,7 +240,8 @@
                deploy-name="{f:snake-case(@name)}" source="{@source}">
       <xsl:variable name="children" as="element()*">
         <xsl:sequence select="$binding/pim:library ! fp:psm-library(., $package)"/>
-        <xsl:sequence select="fp:ros-types($components, $nodes/r:node/r:port, root(.))"/>
+        <xsl:sequence select="fp:ros-types($components, $nodes/r:node/(r:port, r:service, r:service-client)//r:message, root(.))"/>
+        <xsl:sequence select="fp:service-types($nodes/r:node)"/>
         <xsl:sequence select="$nodes/r:node"/>
         <xsl:sequence select="$hosts"/>
         <xsl:sequence select="fp:ros-processes($instances, $host-keys)"/>
@@ -449,22 +460,29 @@
     <xsl:variable name="what" as="xs:string" select="'port ''' || $data-port/@port-name || ''' (datum '''
         || $data-port/@datum-name || ''' of interface ''' || $data-port/@interface-name || ''')'"/>
     <xsl:variable name="type" as="element(ty:type)" select="fp:required-type($data-port, $data-port/@port, $what)"/>
+    <xsl:sequence select="(fp:message-of($data-port, $type),
+        f:fail('ROS001', $data-port/@port, $what || ' carries ''' || fp:type-label($data-port)
+               || ''': no standard message carries an array of that type (std_msgs has multi-array messages of numbers);'
+               || ' make the array an attribute of a data type, whose generated message carries it'))[1]"/>
+  </xsl:function>
+
+  <!-- the message that carries typed element $typed of ROS type $type;
+       () for an array no standard message carries -->
+  <xsl:function name="fp:message-of" as="element(r:message)?">
+    <xsl:param name="typed" as="element()"/>
+    <xsl:param name="type" as="element(ty:type)"/>
     <xsl:choose>
       <xsl:when test="$type/@kind = ('struct', 'enum')">
         <r:message msg="{$type/@msg}" field="" cpp-type="{$type/@cpp}" sample="{$type/@sample}" generated="true"
                    type="{$type/@type-ref}">
-          <xsl:if test="fp:stamped(fp:type-def($data-port))"><xsl:attribute name="stamped" select="'true'"/></xsl:if>
+          <xsl:if test="fp:stamped(fp:type-def($typed))"><xsl:attribute name="stamped" select="'true'"/></xsl:if>
         </r:message>
       </xsl:when>
       <xsl:when test="$type/@kind eq 'sequence' and $type/@msg ne ''">
         <r:message msg="{$type/@msg}" field="data" cpp-type="{$type/@cpp}" sample="{$type/@sample}" generated="false"
                    sequence="true"/>
       </xsl:when>
-      <xsl:when test="$type/@kind eq 'sequence'">
-        <xsl:sequence select="f:fail('ROS001', $data-port/@port, $what || ' carries ''' || fp:type-label($data-port)
-            || ''': no standard message carries an array of that type (std_msgs has multi-array messages of numbers);'
-            || ' make the array an attribute of a data type, whose generated message carries it')"/>
-      </xsl:when>
+      <xsl:when test="$type/@kind eq 'sequence'"/>
       <xsl:otherwise>
         <r:message msg="{$type/@msg}" field="{$type/@field}" cpp-type="{$type/@cpp}" sample="{$type/@sample}" generated="false"/>
       </xsl:otherwise>
@@ -587,15 +605,24 @@
     </xsl:for-each>
   </xsl:function>
 
-  <!-- N3: the services of a node; ROS101 names the operations no std_srvs
-       service fits -->
+  <!-- N3: the services of a node: a std_srvs service, else, for an
+       operation of a provided interface, a service of its own
+       (fp:own-service; ROS009 when it can have none); ROS101 names the
+       other operations no std_srvs service fits -->
   <xsl:function name="fp:services" as="element(r:service)*">
     <xsl:param name="bc" as="element(pim:bound-component)"/>
     <xsl:variable name="operations" as="element(pim:operation)*" select="fp:offered-operations($bc, $fp:lifecycle)"/>
-    <xsl:variable name="services" as="element(r:service)*" select="$operations ! fp:service(.)"/>
+    <xsl:variable name="services" as="element(r:service)*">
+      <xsl:for-each select="$operations">
+        <xsl:variable name="service" as="element(r:service)?" select="fp:service(.)"/>
+        <xsl:variable name="interface-op" as="element(pim:operation)?"
+            select="if (exists($service)) then () else fp:provided-interface-operation($bc, .)"/>
+        <xsl:sequence select="if (exists($service) or empty($interface-op)) then $service
+                              else fp:own-service-of(., $interface-op, 'provides')"/>
+      </xsl:for-each>
+    </xsl:variable>
     <xsl:sequence select="$services"/>
     <xsl:variable name="left-out" as="element(pim:operation)*" select="$operations[not(@id = $services/@xmi-id)]"/>
-    <xsl:sequence select="f:fail-all($left-out[exists(fp:provided-service($bc, .))] ! fp:no-std-srv(., fp:provided-service($bc, .), 'provides'))"/>
     <xsl:if test="exists($left-out)">
       <xsl:sequence select="f:warn('ROS101', $left-out[1]/@id, 'operation(s) ''' || string-join($left-out/@name, ''', ''')
           || ''' of ''' || fp:owner($bc)/@name || ''' fit no std_srvs service (Empty: no argument, no result; Trigger: no argument,'
@@ -603,16 +630,105 @@
     </xsl:if>
   </xsl:function>
 
-  <!-- ROS009 for operation $operation of interface $interface that a
-       component provides or requires ($role): no std_srvs service fits -->
-  <xsl:function name="fp:no-std-srv" as="map(*)">
+  <!-- the operation of a provided interface of $bc that $operation
+       implements (by name), or () -->
+  <xsl:function name="fp:provided-interface-operation" as="element(pim:operation)?">
+    <xsl:param name="bc" as="element(pim:bound-component)"/>
     <xsl:param name="operation" as="element(pim:operation)"/>
-    <xsl:param name="interface" as="xs:string"/>
+    <xsl:sequence select="fp:interface-operations($bc/pim:service-port[@role eq 'provided'])[@name eq $operation/@name][1]"/>
+  </xsl:function>
+
+  <!-- N3: the r:service of $operation, which is or implements operation
+       $interface-op of an interface, through a service of its own
+       (fp:own-service); ROS009 when it can have none (the component
+       $role: provides, requires) -->
+  <xsl:function name="fp:own-service-of" as="element(r:service)">
+    <xsl:param name="operation" as="element(pim:operation)"/>
+    <xsl:param name="interface-op" as="element(pim:operation)"/>
     <xsl:param name="role" as="xs:string"/>
+    <xsl:variable name="own" as="map(*)" select="fp:own-service($interface-op)"/>
+    <xsl:sequence select="f:fail-all($own?problem ! fp:no-srv($interface-op, $role, .))"/>
+    <r:service xmi-id="{$operation/@id}" name="{f:cpp-identifier($operation/@name)}" srv="{$own?srv}"
+               returns-bool="false" member="srv_{f:cpp-identifier($operation/@name)}_">
+      <xsl:sequence select="fp:psm-doc($operation), $own?parts"/>
+    </r:service>
+  </xsl:function>
+
+  <!-- N3: a service of its own for interface operation $operation
+       (srv/<Name>.srv, fp:service-types): its request one field per
+       argument (in), its response one field for the result, each field the
+       message that carries the parameter's type. A map: srv (the name,
+       fp:srv-name), parts (r:argument*, r:result?), problem (why it can be
+       none: an out or inout parameter, a type no message carries) -->
+  <xsl:function name="fp:own-service" as="map(*)">
+    <xsl:param name="operation" as="element(pim:operation)"/>
+    <xsl:variable name="parts" as="element()*">
+      <xsl:for-each select="$operation/pim:parameter[@direction = ('in', 'return')]">
+        <xsl:variable name="type" as="element(ty:type)?" select="fp:type(.)[@cpp ne 'void']"/>
+        <xsl:variable name="field" as="xs:string"
+            select="if (normalize-space(@name)) then f:snake-case(@name) else if (@direction eq 'return') then 'result' else 'argument'"/>
+        <xsl:element name="{if (@direction eq 'return') then 'r:result' else 'r:argument'}" namespace="urn:robomda:psm-ros:1">
+          <xsl:attribute name="name" select="f:cpp-identifier(if (normalize-space(@name)) then @name else $field)"/>
+          <xsl:attribute name="field" select="$field"/>
+          <xsl:attribute name="parameter" select="@id"/>
+          <xsl:sequence select="$type ! fp:message-of(current(), .)"/>
+        </xsl:element>
+      </xsl:for-each>
+    </xsl:variable>
+    <xsl:variable name="unmapped" as="element(pim:parameter)*"
+        select="$operation/pim:parameter[@id = $parts[empty(r:message)]/@parameter]"/>
+    <xsl:variable name="outs" as="element(pim:parameter)*" select="$operation/pim:parameter[@direction = ('out', 'inout')]"/>
+    <xsl:sequence select="map {
+        'srv': fp:srv-name($operation),
+        'parts': $parts,
+        'problem': if (exists($outs))
+                   then 'its parameter ''' || $outs[1]/@name || ''' is ' || $outs[1]/@direction
+                        || ': a ROS service answers with its response only; make it the result'
+                   else if (exists($unmapped))
+                   then 'its parameter ''' || $unmapped[1]/@name || ''' has type ''' || fp:type-label($unmapped[1])
+                        || ''', which no ROS message carries'
+                   else () }"/>
+  </xsl:function>
+
+  <!-- the name of operation $operation's service of its own: the
+       operation's name in UpperCamel, after its interface's where another
+       interface has an operation of that name, or a data type of the model
+       has it (or it with Request / Response: ROS 1 writes headers of those
+       names beside the messages') -->
+  <xsl:function name="fp:srv-name" as="xs:string">
+    <xsl:param name="operation" as="element(pim:operation)"/>
+    <xsl:variable name="name" as="xs:string" select="f:upper-camel($operation/@name)"/>
+    <xsl:variable name="root" as="document-node()" select="root($operation)"/>
+    <xsl:sequence select="if (count(distinct-values(key('fp:operation-by-srv', $name, $root)/../@id)) gt 1
+                              or exists(($name, $name || 'Request', $name || 'Response') ! key('fp:type-by-srv', ., $root)))
+                          then f:upper-camel($operation/../@name) || $name else $name"/>
+  </xsl:function>
+
+  <!-- ROS009 for operation $operation of an interface that a component
+       provides or requires ($role), which no service can carry ($why) -->
+  <xsl:function name="fp:no-srv" as="map(*)">
+    <xsl:param name="operation" as="element(pim:operation)"/>
+    <xsl:param name="role" as="xs:string"/>
+    <xsl:param name="why" as="xs:string"/>
     <xsl:sequence select="map { 'code': 'ROS009', 'id': string($operation/@id), 'message': 'operation '''
-        || $operation/@name || ''' of interface ''' || $interface || ''', which a component ' || $role
-        || ', fits no std_srvs service (Empty: no argument, no result; Trigger: no argument, Boolean result;'
-        || ' SetBool: one Boolean argument): the ROS targets call operations through std_srvs services only' }"/>
+        || $operation/@name || ''' of interface ''' || $operation/../@name || ''', which a component ' || $role
+        || ', fits no std_srvs service and can have no service of its own: ' || $why }"/>
+  </xsl:function>
+
+  <!-- N3: the types of the package's own services (srv/<Name>.srv), each
+       once, from the first node's service or client of it -->
+  <xsl:function name="fp:service-types" as="element(r:service-type)*">
+    <xsl:param name="nodes" as="element(r:node)*"/>
+    <xsl:for-each-group select="$nodes/(r:service, r:service-client)[r:argument or r:result]" group-by="@srv">
+      <r:service-type name="{current-grouping-key()}">
+        <xsl:for-each select="r:argument, r:result">
+          <xsl:element name="{if (self::r:result) then 'r:response' else 'r:request'}" namespace="urn:robomda:psm-ros:1">
+            <xsl:attribute name="field" select="@field"/>
+            <xsl:attribute name="msg" select="r:message/@msg"/>
+          </xsl:element>
+        </xsl:for-each>
+      </r:service-type>
+    </xsl:for-each-group>
   </xsl:function>
 
   <!-- a required interface (seed 003): a service client per operation,
@@ -623,16 +739,16 @@
     <xsl:param name="service-port" as="element(pim:service-port)"/>
     <xsl:param name="bc" as="element(pim:bound-component)"/>
     <xsl:for-each select="fp:interface-operations($service-port)">
-      <xsl:variable name="service" as="element(r:service)?" select="fp:service(.)"/>
-      <xsl:if test="empty($service)">
-        <xsl:sequence select="f:fail-all(fp:no-std-srv(., $service-port/@interface-name, 'requires'))"/>
-      </xsl:if>
+      <xsl:variable name="std" as="element(r:service)?" select="fp:service(.)"/>
+      <xsl:variable name="service" as="element(r:service)"
+          select="if (exists($std)) then $std else fp:own-service-of(., ., 'requires')"/>
       <r:service-client xmi-id="{@id}" name="{$service/@name}" srv="{$service/@srv}" returns-bool="{$service/@returns-bool}"
           member="client_{$service/@name}_" service="{$service-port/@interface-name}"
           forward="{fp:calls-declared($bc, $service-port, ., 'client client_' || $service/@name || '_', 'ROS106')}">
         <xsl:if test="$service/@srv eq 'std_srvs/SetBool'">
           <xsl:attribute name="argument" select="f:cpp-identifier((pim:parameter[@direction ne 'return']/@name[normalize-space(.)], 'data')[1])"/>
         </xsl:if>
+        <xsl:sequence select="$service/(r:argument, r:result)"/>
       </r:service-client>
     </xsl:for-each>
   </xsl:function>

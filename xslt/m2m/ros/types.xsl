@@ -129,17 +129,19 @@
   <!-- ====================================================== the types -->
   <!-- r:types of the package: the data types and enumerations the
        components use (ports, attributes, operations, and the types these
-       use), each before its users; a message for those a port carries (and
-       those these hold); () when there is none -->
+       use, and the operations of the interfaces they require), each before
+       its users; a message for those a message of $messages carries (a
+       port's, a service's: and those these hold); () when there is none -->
   <xsl:function name="fp:ros-types" as="element(r:types)?">
     <xsl:param name="components" as="element(pim:bound-component)*"/>
-    <xsl:param name="ports" as="element(r:port)*"/>
+    <xsl:param name="messages" as="element(r:message)*"/>
     <xsl:param name="root" as="document-node()"/>
     <xsl:variable name="typed" as="element()*"
-        select="$components ! (pim:data-port, fp:attributes(fp:owner(.)), fp:operations(fp:owner(.))/pim:parameter)"/>
+        select="$components ! (pim:data-port, fp:attributes(fp:owner(.)), fp:operations(fp:owner(.))/pim:parameter,
+                               fp:interface-operations(pim:service-port[@role eq 'required'])/pim:parameter)"/>
     <xsl:variable name="defs" as="element()*" select="fp:data-types($typed ! fp:type-def(.), 'ROS010')"/>
     <xsl:variable name="carried" as="element()*"
-        select="fp:type-closure(distinct-values($ports/r:message[@generated eq 'true']/@type) ! key('fp:id', ., $root))"/>
+        select="fp:type-closure(distinct-values($messages[@generated eq 'true']/@type) ! key('fp:id', ., $root))"/>
     <!-- the carried types as a set: whether a type is carried is one look-up, not a scan of them all -->
     <xsl:variable name="carried-set" as="map(xs:string, xs:boolean)" select="map:merge($carried ! map:entry(generate-id(.), true()))"/>
     <xsl:variable name="declared" as="element()*" select="$defs[map:contains($carried-set, generate-id(.)) or fp:declarable(.)]"/>

@@ -8,8 +8,12 @@
   Errors:  none. The target-neutral helpers (lines, banners, literals,
   guards, library paths) are in ../common/text.xsl.
     fp:double-literal($v)  a C++ / YAML floating literal of a number
-    fp:service-body($s, $rc, $acc)  the statements of a std_srvs callback
+    fp:service-body($s, $rc, $acc)  the statements of a service callback
     fp:client-method($c, $qualifier)  the signature of a method calling a required operation
+    fp:own-service($s), fp:own-signature($s, $qualifier, $names)  a service of
+                           the package's own (srv/<Name>.srv), its operation's C++ signature
+    fp:service-callback-names($s)  the callback's (request, response) names
+    fp:srv-file($t)        the text of srv/<Name>.srv
     fp:client-overrides($node)   their declarations in the node class
     fp:from-msg / fp:to-msg  datum <-> message conversion (ROS 1 and 2 alike)
     fp:ros-step($node, $types, $publish)  the body of a node's step()
@@ -153,12 +157,43 @@
   </xsl:function>
 
   <!-- the method that calls operation $client of a required interface:
-       "bool name(bool argument)"; $qualifier is '' or 'Class::' -->
+       "bool name(bool argument)" (std_srvs), else its own signature
+       (fp:own-signature); $qualifier is '' or 'Class::' -->
   <xsl:function name="fp:client-method" as="xs:string">
     <xsl:param name="client" as="element(r:service-client)"/>
     <xsl:param name="qualifier" as="xs:string"/>
-    <xsl:sequence select="concat(if (xs:boolean($client/@returns-bool)) then 'bool ' else 'void ', $qualifier, $client/@name,
-                                 '(', $client/@argument ! concat('bool ', .), ')')"/>
+    <xsl:sequence select="if (fp:own-service($client)) then fp:own-signature($client, $qualifier, true())
+                          else concat(if (xs:boolean($client/@returns-bool)) then 'bool ' else 'void ', $qualifier, $client/@name,
+                                      '(', $client/@argument ! concat('bool ', .), ')')"/>
+  </xsl:function>
+
+  <!-- true for a service or client $s of a service of the package's own
+       (its arguments and result: r:argument, r:result) -->
+  <xsl:function name="fp:own-service" as="xs:boolean">
+    <xsl:param name="s" as="element()"/>
+    <xsl:sequence select="exists($s/(r:argument, r:result))"/>
+  </xsl:function>
+
+  <!-- the C++ signature of the operation of service or client $s of the
+       package's own: "Result name(const Argument& argument)", the result
+       and arguments the C++ types of their data ($names false: the
+       argument names commented out, for a skeleton that uses none) -->
+  <xsl:function name="fp:own-signature" as="xs:string">
+    <xsl:param name="s" as="element()"/>
+    <xsl:param name="qualifier" as="xs:string"/>
+    <xsl:param name="names" as="xs:boolean"/>
+    <xsl:sequence select="($s/r:result/r:message/@cpp-type, 'void')[1] || ' ' || $qualifier || $s/@name || '('
+        || string-join($s/r:argument ! ('const ' || r:message/@cpp-type || '&amp; ' || (if ($names) then @name else '/*' || @name || '*/')), ', ')
+        || ')'"/>
+  </xsl:function>
+
+  <!-- the parameter names of the callback of service $service: (request,
+       response), each commented out where the callback does not use it -->
+  <xsl:function name="fp:service-callback-names" as="xs:string+">
+    <xsl:param name="service" as="element(r:service)"/>
+    <xsl:sequence select="(if ($service/@srv eq 'std_srvs/SetBool' or $service/r:argument) then 'request' else '/*request*/'),
+                          (if ($service/@srv eq 'std_srvs/Empty' or (fp:own-service($service) and empty($service/r:result)))
+                           then '/*response*/' else 'response')"/>
   </xsl:function>
 
   <!-- the declarations a node class adds for its required interfaces:
@@ -172,15 +207,21 @@
     </xsl:if>
   </xsl:function>
 
-  <!-- body of a std_srvs service callback; $acc is "." (ROS 1) or "->" (ROS 2) -->
+  <!-- body of a service callback; $acc is "." (ROS 1) or "->" (ROS 2): a
+       service of the package's own hands the request's fields to the
+       operation and its result to the response's field -->
   <xsl:function name="fp:service-body" as="xs:string*">
     <xsl:param name="service" as="element(r:service)"/>
     <xsl:param name="rc" as="xs:string"/>
     <xsl:param name="acc" as="xs:string"/>
     <xsl:variable name="call" as="xs:string"
-        select="concat($rc, '::', $service/@name, '(', (if ($service/@srv eq 'std_srvs/SetBool') then concat('request', $acc, 'data') else ''), ')')"/>
+        select="if (fp:own-service($service))
+                then $rc || '::' || $service/@name || '('
+                     || string-join($service/r:argument ! fp:from-msg(r:message, 'request' || $acc || @field), ', ') || ')'
+                else concat($rc, '::', $service/@name, '(', (if ($service/@srv eq 'std_srvs/SetBool') then concat('request', $acc, 'data') else ''), ')')"/>
     <xsl:sequence select="
-        if ($service/@srv eq 'std_srvs/Empty') then concat('  ', $call, ';')
+        if ($service/r:result) then fp:indent(2, fp:to-msg($service/r:result/r:message, 'response' || $acc || $service/r:result/@field, $call))
+        else if ($service/@srv eq 'std_srvs/Empty' or fp:own-service($service)) then concat('  ', $call, ';')
         else if (xs:boolean($service/@returns-bool)) then concat('  response', $acc, 'success = ', $call, ';')
         else (concat('  ', $call, ';'), concat('  response', $acc, 'success = true;'))"/>
   </xsl:function>
@@ -412,6 +453,21 @@
       <xsl:sequence select="fp:file('include/' || $package/@name || '/msg_conversions.hpp', 'generated', $fp:cpp-xsl,
                                     fp:ros-conversions($package, $fp:cpp-xsl))"/>
     </xsl:if>
+    <xsl:for-each select="$package/r:service-type">
+      <xsl:sequence select="fp:file('srv/' || @name || '.srv', 'generated', $fp:build-xsl, fp:srv-file(., $fp:build-xsl))"/>
+    </xsl:for-each>
+  </xsl:function>
+
+  <!-- a generated .srv file of a service of the package's own: its
+       request's fields (one message each), its response's -->
+  <xsl:function name="fp:srv-file" as="xs:string">
+    <xsl:param name="service" as="element(r:service-type)"/>
+    <xsl:param name="stylesheet" as="xs:string"/>
+    <xsl:sequence select="fp:lines((
+        fp:banner('# ', $stylesheet, 'service ''' || $service/@name || ''' of model ''' || $service/../@model-name || '''', false()),
+        $service/r:request ! (@msg || ' ' || @field),
+        '---',
+        $service/r:response ! (@msg || ' ' || @field)))"/>
   </xsl:function>
 
   <!-- a generated .msg file: a data type's fields (one per attribute; a
@@ -464,7 +520,7 @@
        message uses, or () -->
   <xsl:function name="fp:conversions-include" as="xs:string?">
     <xsl:param name="node" as="element(r:node)"/>
-    <xsl:sequence select="if ($node/r:port/r:message[@generated eq 'true'])
+    <xsl:sequence select="if ($node/(r:port, r:service, r:service-client)//r:message[@generated eq 'true'])
                           then '#include &lt;' || $node/@namespace || '/msg_conversions.hpp&gt;' else ()"/>
   </xsl:function>
 
@@ -492,7 +548,8 @@
     <xsl:param name="package" as="element(r:package)"/>
     <xsl:sequence select="sort(distinct-values((
         $package/r:types/*[@stamped eq 'true'][1] ! 'std_msgs',
-        $package/r:types/*/r:field[@element-kind eq 'message']/@msg-field ! substring-before(., '/'))))"/>
+        $package/r:types/*/r:field[@element-kind eq 'message']/@msg-field ! substring-before(., '/'),
+        $package/r:service-type/*/@msg[contains(., '/')] ! substring-before(., '/'))))"/>
   </xsl:function>
 
   <!-- the header of message "pkg/Name" in package $package, on its ROS version -->

@@ -90,7 +90,12 @@
           'decl': r:message/@cpp-type || ' ' || @accessor || '() const',
           'head': r:message/@cpp-type || ' ' || $user || '::' || @accessor || '() const',
           'body': ('  // port ' || @name || ' (' || @interface || '::' || @datum || ')', '  return ' || r:message/@sample || ';') },
-        $node/r:service ! (let $result := if (xs:boolean(@returns-bool)) then 'bool ' else 'void ' return map {
+        $node/r:service[fp:own-service(.)] ! map {
+          'group': 'services (~name, srv/' || @srv || '.srv): the node calls the operation for each request',
+          'decl': fp:own-signature(., '', true()),
+          'head': fp:own-signature(., $user || '::', false()),
+          'body': r:result ! ('  return ' || r:message/@sample || ';') },
+        $node/r:service[not(fp:own-service(.))] ! (let $result := if (xs:boolean(@returns-bool)) then 'bool ' else 'void ' return map {
           'group': 'services (~name, std_srvs): the node calls the operation for each request',
           'decl': $result || @name || '(' || (if (@srv eq 'std_srvs/SetBool') then 'bool data' else '') || ')',
           'head': $result || $user || '::' || @name || '(' || (if (@srv eq 'std_srvs/SetBool') then 'bool /*data*/' else '') || ')',
@@ -125,7 +130,7 @@
     <xsl:variable name="user" as="xs:string" select="$node/r:realizing-class/@name"/>
     <xsl:variable name="guard" as="xs:string" select="fp:guard($node/@namespace, $class)"/>
     <xsl:variable name="hooks" as="map(*)*" select="fp:ros-hooks($node)"/>
-    <xsl:variable name="types" as="element()*" select="$node/../r:types/*[@xmi-id = ($node/r:port/r:message/@type, $node/r:member/@type)]"/>
+    <xsl:variable name="types" as="element()*" select="$node/../r:types/*[@xmi-id = ($node//r:message/@type, $node/r:member/@type)]"/>
     <xsl:variable name="clients" as="element(r:service-client)*" select="$node/r:service-client[xs:boolean(@forward)]"/>
     <xsl:sequence select="fp:lines((
         fp:banner('// ', $fp:user-xsl, fp:what($node), false()),
@@ -133,11 +138,11 @@
         concat('#define ', $guard),
         '',
         '#include &lt;string&gt;',
-        if (some $t in ($node/r:port/r:message/@cpp-type, $node/r:member/@cpp-type) satisfies contains($t, 'std::vector'))
+        if (some $t in ($node//r:message/@cpp-type, $node/r:member/@cpp-type) satisfies contains($t, 'std::vector'))
         then '#include &lt;vector&gt;' else (),
         $types ! concat('#include &lt;', @header, '&gt;'),
         (: a datum that is a message of its own (a ROS library's, a type-map entry's): its header :)
-        distinct-values($node/r:port/r:message[@generated eq 'false'][@field eq '']/@msg
+        distinct-values($node//r:message[@generated eq 'false'][@field eq '']/@msg
                         ! concat('#include &lt;', fp:message-header(., $node/..), '&gt;')),
         '',
         concat('namespace ', $node/@namespace, ' {'),

@@ -328,9 +328,9 @@
         for $service in $node/r:service return (
           '',
           concat('bool ', $class, '::on_', $service/@name, '(', fp:ros1-type($service/@srv, $node/@namespace)[2], '::Request&amp; ',
-               (if ($service/@srv eq 'std_srvs/SetBool') then 'request' else '/*request*/'), ', ',
+               fp:service-callback-names($service)[1], ', ',
                fp:ros1-type($service/@srv, $node/@namespace)[2], '::Response&amp; ',
-               (if ($service/@srv eq 'std_srvs/Empty') then '/*response*/' else 'response'), ')'),
+               fp:service-callback-names($service)[2], ')'),
           '{',
           fp:service-body($service, $realizing-class, '.'),
           '  return true;',
@@ -341,12 +341,16 @@
           '{',
           concat('  ', fp:ros1-type($client/@srv, $node/@namespace)[2], ' srv;'),
           $client/@argument ! concat('  srv.request.data = ', ., ';'),
+          $client/r:argument ! fp:indent(2, fp:to-msg(r:message, 'srv.request.' || @field, @name)),
           concat('  if (!', $client/@member, '.call(srv)) {'),
           concat('    ROS_WARN_STREAM(ros::this_node::getName() &lt;&lt; &quot;: service &quot; &lt;&lt; ', $client/@member,
                  '.getService() &lt;&lt; &quot; (', $client/@service, ') did not answer&quot;);'),
-          if (xs:boolean($client/@returns-bool)) then '    return false;' else '    return;',
+          if (xs:boolean($client/@returns-bool)) then '    return false;'
+          else if ($client/r:result) then '    return ' || $client/r:result/r:message/@sample || ';'
+          else '    return;',
           '  }',
           if (xs:boolean($client/@returns-bool)) then '  return srv.response.success;' else (),
+          $client/r:result ! ('  return ' || fp:from-msg(r:message, 'srv.response.' || @field) || ';'),
           '}'))"/>
   </xsl:function>
 

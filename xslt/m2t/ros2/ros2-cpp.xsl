@@ -74,8 +74,16 @@
         distinct-values(($node/r:port/r:message/@msg ! (concat('#include &lt;', fp:ros2-type(., $package, 'msg')[1], '&gt;')),
                          ($node/r:service/@srv, $node/r:service-client/@srv) ! (concat('#include &lt;', fp:ros2-type(., $package, 'srv')[1], '&gt;')))),
         '#include &lt;memory&gt;',
+        if (fp:answers($node)) then '#include &lt;mutex&gt;' else (),
         '#include &lt;string&gt;',
         concat('#include &lt;', $node/r:realizing-class/@header, '&gt;'), fp:conversions-include($node))"/>
+  </xsl:function>
+
+  <!-- the clients of services of the package's own with a result whose
+       node keeps the latest answer (fp:ros2-own-call) -->
+  <xsl:function name="fp:answers" as="element(r:service-client)*">
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:sequence select="$node/r:service-client[xs:boolean(@forward)][r:result]"/>
   </xsl:function>
 
   <!-- the private members of a node class: step(), the callbacks, the
@@ -95,6 +103,8 @@
         $node/r:port[@direction eq 'in'] ! (concat('  rclcpp::Subscription&lt;', fp:ros2-type(r:message/@msg, $package, 'msg')[2], '&gt;::SharedPtr ', @member, ';')),
         $node/r:service ! (concat('  rclcpp::Service&lt;', fp:ros2-type(@srv, $package, 'srv')[2], '&gt;::SharedPtr ', @member, ';')),
         $node/r:service-client ! (concat('  rclcpp::Client&lt;', fp:ros2-type(@srv, $package, 'srv')[2], '&gt;::SharedPtr ', @member, ';')),
+        fp:answers($node) ! ('  ' || r:result/r:message/@cpp-type || ' answer_' || @name || '_;'),
+        if (fp:answers($node)) then '  std::mutex answers_mutex_;' else (),
         '  rclcpp::TimerBase::SharedPtr timer_;',
         '  double period_;',
         '  bool running_;')"/>
@@ -248,9 +258,9 @@
           '',
           concat('void ', $class, '::on_', $service/@name, '(const std::shared_ptr&lt;',
                  fp:ros2-type($service/@srv, $node/@namespace, 'srv')[2], '::Request&gt; ',
-               (if ($service/@srv eq 'std_srvs/SetBool') then 'request' else '/*request*/'), ','),
+               fp:service-callback-names($service)[1], ','),
           concat('  std::shared_ptr&lt;', fp:ros2-type($service/@srv, $node/@namespace, 'srv')[2], '::Response&gt; ',
-               (if ($service/@srv eq 'std_srvs/Empty') then '/*response*/' else 'response'), ')'),
+               fp:service-callback-names($service)[2], ')'),
           '{',
           fp:service-body($service, $realizing-class, '-&gt;'),
           '}'),
@@ -258,6 +268,7 @@
           '',
           fp:client-method($client, concat($class, '::')),
           '{',
+          if (fp:own-service($client)) then fp:ros2-own-call($client, $node) else (
           '  // asynchronous: a node must not wait for a service inside its own callback; the call is sent',
           concat('  if (!', $client/@member, '-&gt;service_is_ready()) {'),
           concat('    RCLCPP_WARN(get_logger(), &quot;service %s (', $client/@service, ') is not available&quot;, ',
@@ -267,8 +278,41 @@
           concat('  auto request = std::make_shared&lt;', fp:ros2-type($client/@srv, $node/@namespace, 'srv')[2], '::Request&gt;();'),
           $client/@argument ! concat('  request-&gt;data = ', ., ';'),
           concat('  ', $client/@member, '-&gt;async_send_request(request);'),
-          if (xs:boolean($client/@returns-bool)) then '  return true;  // sent (the answer is not awaited)' else (),
+          if (xs:boolean($client/@returns-bool)) then '  return true;  // sent (the answer is not awaited)' else ()),
           '}'))"/>
+  </xsl:function>
+
+  <!-- the body of the method that calls $client, a service of the
+       package's own: the request sent, never awaited (a node must not wait
+       inside its own callback); the answer, when it comes, kept under the
+       node's mutex: the method returns the latest answer received (the
+       result type's default until the first) -->
+  <xsl:function name="fp:ros2-own-call" as="xs:string+">
+    <xsl:param name="client" as="element(r:service-client)"/>
+    <xsl:param name="node" as="element(r:node)"/>
+    <xsl:variable name="srv" as="xs:string" select="fp:ros2-type($client/@srv, $node/@namespace, 'srv')[2]"/>
+    <xsl:variable name="answer" as="xs:string" select="'answer_' || $client/@name || '_'"/>
+    <xsl:variable name="send" as="xs:string+" select="
+        '  auto request_msg = std::make_shared&lt;' || $srv || '::Request&gt;();',
+        $client/r:argument ! fp:to-msg(r:message, 'request_msg-&gt;' || @field, @name) ! ('  ' || .),
+        if ($client/r:result)
+        then ('  ' || $client/@member || '-&gt;async_send_request(',
+              '    request_msg, [this](rclcpp::Client&lt;' || $srv || '&gt;::SharedFuture future) {',
+              '      std::lock_guard&lt;std::mutex&gt; lock(answers_mutex_);',
+              '      ' || $answer || ' = ' || fp:from-msg($client/r:result/r:message, 'future.get()-&gt;' || $client/r:result/@field) || ';',
+              '    });')
+        else '  ' || $client/@member || '-&gt;async_send_request(request_msg);'"/>
+    <xsl:variable name="unavailable" as="xs:string"
+        select="'    RCLCPP_WARN(get_logger(), &quot;service %s (' || $client/@service || ') is not available&quot;, '
+                || $client/@member || '-&gt;get_service_name());'"/>
+    <xsl:sequence select="
+        '  // asynchronous: a node must not wait for a service inside its own callback; the call is sent',
+        $client/r:result ! '  // and the latest answer received is returned (the default until the first)',
+        '  if (!' || $client/@member || '-&gt;service_is_ready()) {',
+        $unavailable,
+        if ($client/r:result)
+        then ('  } else {', fp:indent(2, $send), '  }', '  std::lock_guard&lt;std::mutex&gt; lock(answers_mutex_);', '  return ' || $answer || ';')
+        else ('    return;', '  }', $send)"/>
   </xsl:function>
 
   <xsl:function name="fp:ros2-main" as="xs:string">
