@@ -382,7 +382,20 @@ def test_p4r_components_services_and_patterns_mean_what_papyrus_for_robotics_mea
     patterns = {i.get("name"): (i.get("pattern"), i.get("provided-direction"),
                                 [a.get("type-name") for a in i.findall("p:attribute", NS)])
                 for i in pim.xpath("//p:interface", namespaces=NS)}
-    assert patterns == {"P_Image": ("Push", "out", ["Image"]), "S_Boxes": ("Send", "in", ["Boxes"])}
+    assert patterns == {"P_Image": ("Push", "out", ["Image"]), "S_Boxes": ("Send", "in", ["Boxes"]),
+                        "Q_Classify": ("Query", None, [])}
+    # a Query is one operation, from its request (the binding's first argument) to its answer (the last)
+    [classify] = pim.xpath("//p:interface[@name='Q_Classify']/p:operation", namespaces=NS)
+    assert classify.get("name") == "Classify"
+    assert [(p.get("name"), p.get("direction"), p.get("type-name")) for p in classify.findall("p:parameter", NS)] == \
+        [("request", "in", "Boxes"), ("answer", "return", "Verdict")]
+    # the detector asks, the logger answers: a service port each, one call between the instances
+    services = {(s.getparent().get("name"), s.get("name")): s.get("role")
+                for s in pim.xpath("//p:binding/p:bound-component/p:service-port", namespaces=NS)}
+    assert services == {("Detector", "classify"): "required", ("Logger", "classify"): "provided"}
+    [call] = pim.xpath("//p:binding/p:call", namespaces=NS)
+    assert (call.find("p:caller", NS).get("instance"), call.find("p:provider", NS).get("instance")) == \
+        ("detector", "logger")
     # Push provided publishes, required subscribes; Send required sends, provided receives
     data = {(d.getparent().get("name"), d.get("name")): d.get("direction")
             for d in pim.xpath("//p:binding/p:bound-component/p:data-port", namespaces=NS)}
@@ -401,19 +414,61 @@ def test_p4r_components_services_and_patterns_mean_what_papyrus_for_robotics_mea
     assert process.get("managed") == "true"
 
 
-def test_a_p4r_query_service_is_left_out_with_a_warning_naming_its_pattern(tmp_path: Path) -> None:
+@pytest.mark.parametrize("pattern, signature, name", [("Query", "_5u2FwCanEeiurq-kTHMlgA", "Q_Boxes"),
+                                                      ("Action", "_3PvFcDBhEeqxv6YJjwaRyw", "A_Boxes")])
+def test_a_p4r_service_robomda_cannot_read_is_left_out_with_a_warning_naming_its_pattern(
+        pattern: str, signature: str, name: str, tmp_path: Path) -> None:
     text = (P4R / "model.xmi").read_text(encoding="utf-8")
-    # the Send becomes a Query: request / response, which no target generates yet
-    text = text.replace("_6uKNsCanEeiurq-kTHMlgA", "_5u2FwCanEeiurq-kTHMlgA").replace('name="S_Boxes"', 'name="Q_Boxes"')
+    # the Send becomes a Query that binds its request only (no answer to read), or an Action
+    text = text.replace("_6uKNsCanEeiurq-kTHMlgA", signature).replace('name="S_Boxes"', f'name="{name}"')
     model = tmp_path / "query.uml"
     model.write_text(text, encoding="utf-8")
     found: list[Diagnostic] = []
     pim = _pim(model, found)
     warnings = [d for d in found if d.code == "BND004"]
     assert {d.xmi_id for d in warnings} == {"_p4r_det_boxes", "_p4r_log_boxes"}
-    assert all("a Query of Papyrus for Robotics::ServiceDefinition" in d.message for d in warnings)
+    assert all(f"a {pattern} of Papyrus for Robotics::ServiceDefinition" in d.message for d in warnings)
     assert [d.code for d in found if d.code == "BND031"] == ["BND031"]
     assert [c.get("name") for c in pim.xpath("//p:binding/p:connection", namespaces=NS)] == ["Connects1"]
+    # the Query the fixture draws in full is still a call
+    assert [c.get("name") for c in pim.xpath("//p:binding/p:call", namespaces=NS)] == ["Connects3"]
+
+
+@pytest.mark.parametrize("target, srv", [("ros2", "p4r/srv/classify.hpp"), ("ros1", "p4r/Classify.h")])
+def test_a_p4r_query_is_a_ros_service_of_the_package_own(target: str, srv: str, tmp_path: Path) -> None:
+    """A Query from Boxes to Verdict: srv/Classify.srv carries the request's and the answer's messages;
+    the logger's node serves it (~/Classify), the detector's calls it, remapped to the logger's."""
+    out = tmp_path / target
+    generate(P4R / "model.xmi", out, target)
+    lines = [line for line in (out / "srv" / "Classify.srv").read_text(encoding="utf-8").splitlines()
+             if not line.startswith("#")]
+    assert lines == ["Boxes request", "---", "Verdict answer"]
+    cmake = (out / "CMakeLists.txt").read_text(encoding="utf-8")
+    assert ('"srv/Classify.srv"' if target == "ros2" else "add_service_files(FILES Classify.srv)") in cmake
+    assert f"#include <{srv}>" in (out / "include" / "p4r" / "Logger.hpp").read_text(encoding="utf-8")
+    logger = (out / "src" / "Logger.cpp").read_text(encoding="utf-8")
+    assert "Classify(from_msg_value<::p4r::types::Boxes>(request" in logger and "answer);" in logger
+    detector = (out / "src" / "Detector.cpp").read_text(encoding="utf-8")
+    assert "::p4r::types::Verdict Detector::Classify(const ::p4r::types::Boxes& request)" in detector
+    # the user's class answers it: the generated base declares the operation for the user to implement
+    base = (out / "include" / "p4r" / "LoggerBase.hpp").read_text(encoding="utf-8")
+    assert "virtual ::p4r::types::Verdict Classify(const ::p4r::types::Boxes& request) = 0;" in base
+    launch = "\n".join(p.read_text(encoding="utf-8") for p in (out / "launch").iterdir())
+    assert 'from="Classify"' in launch and "logger/Classify" in launch
+
+
+def test_an_operation_no_ros_service_can_carry_is_refused_naming_why(tmp_path: Path) -> None:
+    """The Query's answer of a type no ROS message carries (a class): ROS009 says why, where."""
+    text = (P4R / "model.xmi").read_text(encoding="utf-8")
+    text = text.replace('actual="_p4r_verdict"', 'actual="_p4r_odd"').replace(
+        '</uml:Model>', '<packagedElement xmi:type="uml:Class" xmi:id="_p4r_odd" name="Odd"/>\n</uml:Model>')
+    model = tmp_path / "odd.uml"
+    model.write_text(text, encoding="utf-8")
+    with pytest.raises(RobomdaError) as caught:
+        generate(model, tmp_path / "out", "ros2")
+    [error] = [d for d in caught.value.diagnostics if d.code == "ROS009"]
+    assert "Classify" in error.message and "no ROS message carries" in error.message and error.line
+    assert not (tmp_path / "out").exists()
 
 
 # ------------------------------------------------------------- false refusals of real files (issue 51 item 5)

@@ -49,9 +49,14 @@ USER_OROCOS = {
     "p4r": {
         "src/Camera.cpp": ("  // write: port_image.write(value)\n",
                            "  ::p4r::types::Image image;\n  image.width = ++count_;\n  port_image.write(image);\n"),
+        # the detector asks the logger's Query (an operation) about what it read, and sends on the answer
         "src/Detector.cpp": ("  // read: port_image.read(sample)\n",
                              "  ::p4r::types::Image image;\n  while (port_image.read(image) == RTT::NewData) {\n"
-                             "    ::p4r::types::Boxes boxes;\n    boxes.count = image.width;\n    port_boxes.write(boxes);\n  }\n"),
+                             "    ::p4r::types::Boxes boxes;\n    boxes.count = image.width;\n"
+                             "    boxes.count = Classify(boxes).label;\n    port_boxes.write(boxes);\n  }\n"),
+        "src/Logger.cpp": ("Classify(const ::p4r::types::Boxes& /*request*/)\n{\n  return ::p4r::types::Verdict();",
+                           "Classify(const ::p4r::types::Boxes& request)\n{\n  ::p4r::types::Verdict verdict;\n"
+                           "  verdict.label = request.count + 1000;\n  return verdict;"),
     },
     # UML-RT: the sensor sends readings, the controller answers each with a request (a signal), which
     # the sensor receives: messages both ways on one pair of ports
@@ -71,13 +76,14 @@ USER_OROCOS = {
     },
 }
 COUNTERS = {"robotml": "double", "p4r": "int", "umlrt": "double", "sysml": "double"}
-# instances, reader ports that must be connected, the writers probed: (instance, port, RTT type);
-# the probed writers write only what went through the component before them
+# instances, reader ports that must be connected, the writers probed: (instance, port, RTT type[, a
+# field and the least value it must reach]); the probed writers write only what went through the
+# component before them (p4r's detector: the logger's answer, at least 1000)
 PROBES = {
     "robotml": (["odometry", "planner", "base"], [("planner", "pose"), ("base", "cmd")],
                 [("planner", "cmd", "/robotml/Twist")]),
     "p4r": (["camera", "detector", "logger"], [("detector", "image"), ("logger", "boxes")],
-            [("detector", "boxes", "/p4r/Boxes")]),
+            [("detector", "boxes", "/p4r/Boxes", "count", "1000")]),
     "umlrt": (["sensor", "controller"], [("controller", "sensor_reading"), ("sensor", "data_request")],
               [("controller", "sensor_request", "bool")]),
     "sysml": (["pump", "sensor", "controller"],
@@ -102,13 +108,17 @@ for _, w in ipairs({%(writers)s}) do
   local ip = rtt.InputPort(w[3])
   tc:addPort(ip, "probe_" .. w[2])
   check(depl:connect(w[1] .. "." .. w[2], "lua.probe_" .. w[2], rtt.Variable("ConnPolicy")), "probe of " .. w[1] .. "." .. w[2])
-  local seen = 0
+  local seen, reached = 0, 0
   for k = 1, 80 do
-    local fs = ip:read()
-    if fs == "NewData" then seen = seen + 1 end
+    local fs, v = ip:read()
+    if fs == "NewData" then
+      seen = seen + 1
+      if w[4] and tonumber(tostring(v[w[4]])) >= tonumber(w[5]) then reached = reached + 1 end
+    end
     rtt.sleep(0, 25000000)
   end
   check(seen >= 3, w[1] .. "." .. w[2] .. " carries what went through (" .. seen .. " samples)")
+  if w[4] then check(reached >= 3, w[1] .. "." .. w[2] .. "." .. w[4] .. " reaches " .. w[5] .. " (" .. reached .. " samples)") end
   ip:disconnect()
 end
 print(ok and "PROBE-RESULT: OK" or "PROBE-RESULT: FAILED")
@@ -176,6 +186,24 @@ ROS2_FIXTURES = ["robotml", "p4r", "umlrt", "sysml", "p4rlib"]
 # nodes whose output flows only on what they receive (no period): their topics flowing proves that the
 # connection into them carries data in the direction the dialect means
 MANAGED = {"p4r": ["/camera", "/detector", "/logger"], "p4rlib": ["/talker", "/relay", "/counter"]}
+# the user's code on ROS 2, as for Orocos: p4r's detector asks the logger's Query (a service of the
+# package's own, srv/Classify.srv) on each image and sends on the label of the latest answer; the
+# logger answers each request with its count + 1000
+USER_ROS2 = {
+    "p4r": {
+        "src/DetectorImpl.cpp": [("void DetectorImpl::update()\n{\n}",
+                                  "void DetectorImpl::update()\n{\n  ::p4r::types::Boxes boxes;\n  boxes.count = 41;\n"
+                                  "  boxes_.count = Classify(boxes).label;\n}"),
+                                 ("  return ::p4r::types::Boxes();", "  return boxes_;")],
+        "include/p4r/DetectorImpl.hpp": [("};\n", "\nprivate:\n  ::p4r::types::Boxes boxes_;\n};\n")],
+        "src/LoggerImpl.cpp": [("Classify(const ::p4r::types::Boxes& /*request*/)\n{\n  return ::p4r::types::Verdict();",
+                                "Classify(const ::p4r::types::Boxes& request)\n{\n  ::p4r::types::Verdict verdict;\n"
+                                "  verdict.label = request.count + 1000;\n  return verdict;")],
+    },
+}
+# (service, its type, a request, what the answer holds); (topic, what it carries once answers come back)
+QUERIES = {"p4r": (("/logger/Classify", "p4r/srv/Classify", "{request: {count: 1}}", "label=1001"),
+                   ("/Connects2", "count: 1041"))}
 
 
 def _fixture_model(fixture: str) -> Path:
@@ -194,6 +222,12 @@ def ros2_ws(tmp_path_factory):
     for fixture in ROS2_FIXTURES:
         out = ws / "src" / fixture
         generate(_fixture_model(fixture), out, "ros2")
+        for rel, edits in USER_ROS2.get(fixture, {}).items():
+            text = (out / rel).read_text(encoding="utf-8")
+            for old, new in edits:
+                assert text.count(old) == 1, f"{rel}: the skeleton robomda writes changed; update this test"
+                text = text.replace(old, new)
+            (out / rel).write_text(text, encoding="utf-8")
         packages[fixture] = fixture
     return ros2, ros2.Workspace(ws, packages, ros2.colcon_build(ws, "--continue-on-error "))
 
@@ -216,10 +250,18 @@ def test_ros2_package_builds_and_data_flows_on_every_connection(fixture: str, ro
             while not ros2._lifecycle_get(ws, node).startswith("active") and time.monotonic() < deadline:
                 time.sleep(2)
             assert ros2._lifecycle_get(ws, node).startswith("active [3]"), (node, launch.text()[-3000:])
-        topics = sorted({"/" + r.get("to") for f in ros2._launch_files(ws, pkg) for r in ET.parse(f).iter("remap")})
+        # the connection topics (a client's remap names its provider's service, under the namespace)
+        topics = sorted({"/" + r.get("to") for f in ros2._launch_files(ws, pkg) for r in ET.parse(f).iter("remap")
+                         if "$(" not in r.get("to")})
         assert topics, "no connection topic in the launch files"
         counts = ros2._count(ws, topics, 3.0)
         assert all(c > 0 for c in counts.values()), (counts, launch.text()[-3000:])
+        if fixture in QUERIES:
+            (service, srv, request, answer), (topic, carried) = QUERIES[fixture]
+            called = ws.run(f"timeout 60 ros2 service call {service} {srv} '{request}'", timeout=90)
+            assert answer in called.stdout, called.stdout[-2000:] + called.stderr[-2000:]
+            echoed = ws.run(f"timeout 15 ros2 topic echo {topic} || true", timeout=60)
+            assert carried in echoed.stdout, echoed.stdout[-2000:] + launch.text()[-2000:]
     finally:
         left = launch.stop()
     assert not left, f"processes outlived SIGINT: {left}"

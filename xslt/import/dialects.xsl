@@ -47,6 +47,7 @@
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
     xmlns:xs="http://www.w3.org/2001/XMLSchema"
+    xmlns:array="http://www.w3.org/2005/xpath-functions/array"
     xmlns:f="urn:robomda:xslt:function"
     xmlns:fp="urn:robomda:xslt:function:private"
     xmlns:tp="urn:robomda:xslt:template:private"
@@ -219,39 +220,87 @@
   <!-- the datum of interface $e that binds a pattern carrying one (Push,
        Send): a pim:attribute for the first argument of its template
        binding (its parameterSubstitution's id; named and typed by the
-       actual: a data type of the model, else the type a library's href
-       names, as fp:href-type names it: a ROS message sensor_msgs/Image
-       is the datum Image) -->
+       actual, fp:actual-typing: a ROS message sensor_msgs/Image is the
+       datum Image) -->
   <xsl:function name="fp:pattern-datum" as="element(pim:attribute)?">
     <xsl:param name="e" as="element()"/>
     <xsl:param name="root" as="element()"/>
     <xsl:if test="exists(fp:pattern($e)/@provided)">
       <xsl:variable name="substitution" as="element()?" select="($e/templateBinding/parameterSubstitution)[1]"/>
-      <xsl:variable name="actual" as="element()?" select="$substitution ! fp:targets(., 'actual')[1]"/>
-      <xsl:variable name="library" as="map(*)?"
-          select="if (exists($actual)) then () else ($substitution/actual/@href)[1] ! fp:href-type(.)"/>
-      <xsl:if test="exists($library)">
-        <xsl:variable name="name" as="xs:string" select="tokenize($library?name, '/')[last()]"/>
-        <pim:attribute id="{fp:id($substitution)}" name="{$name}"
-            qualified-name="{fp:qname($e, $root)}::{$name}" type-name="{$library?name}"
-            type-library="{$library?library}" visibility="public">
+      <xsl:variable name="typing" as="attribute()*" select="$substitution ! fp:actual-typing(.)"/>
+      <xsl:if test="exists($typing)">
+        <xsl:variable name="name" as="xs:string" select="tokenize($typing[name() eq 'type-name'], '/')[last()]"/>
+        <pim:attribute id="{fp:id($substitution)}" name="{$name}" qualified-name="{fp:qname($e, $root)}::{$name}">
+          <xsl:sequence select="$typing"/>
+          <xsl:attribute name="visibility" select="'public'"/>
+        </pim:attribute>
+      </xsl:if>
+    </xsl:if>
+  </xsl:function>
+
+  <!-- the operation of interface $e that binds a request / response
+       pattern (d:pattern/@parameters, Papyrus for Robotics' Query): named
+       after the interface without the pattern's prefix (Q_Detect: Detect,
+       the template binding's id), its parameters the binding's arguments
+       in order (each its parameterSubstitution's id, typed by
+       fp:actual-typing): the first the request (in), the last the answer
+       (return); () when an argument's type cannot be read (bind then says
+       the interface carries nothing: BND004) -->
+  <xsl:function name="fp:pattern-operation" as="element(pim:operation)?">
+    <xsl:param name="e" as="element()"/>
+    <xsl:param name="root" as="element()"/>
+    <xsl:variable name="pattern" as="element(d:pattern)?" select="fp:pattern($e)"/>
+    <xsl:variable name="names" as="xs:string*" select="tokenize($pattern/@parameters)"/>
+    <xsl:variable name="substitutions" as="element()*" select="($e/templateBinding/parameterSubstitution)[position() le count($names)]"/>
+    <xsl:variable name="typings" as="array(attribute()*)*" select="$substitutions ! array { fp:actual-typing(.) }"/>
+    <xsl:if test="exists($names) and count($typings[array:size(.) gt 0]) eq count($names)">
+      <xsl:variable name="name" as="xs:string"
+          select="if (starts-with($e/@name, $pattern/@prefix) and string-length($e/@name) gt string-length($pattern/@prefix))
+                  then substring($e/@name, string-length($pattern/@prefix) + 1) else string($e/@name)"/>
+      <xsl:variable name="qname" as="xs:string" select="fp:qname($e, $root) || '::' || $name"/>
+      <pim:operation id="{fp:id(($e/templateBinding)[1])}" name="{$name}" qualified-name="{$qname}"
+          visibility="public" static="false" abstract="true" query="false">
+        <xsl:for-each select="$names">
+          <xsl:variable name="n" as="xs:integer" select="position()"/>
+          <pim:parameter id="{fp:id($substitutions[$n])}" name="{.}" qualified-name="{$qname}::{.}">
+            <xsl:sequence select="$typings[$n]?*"/>
+            <xsl:attribute name="direction" select="if ($n eq count($names) and $n gt 1) then 'return' else 'in'"/>
+          </pim:parameter>
+        </xsl:for-each>
+      </pim:operation>
+    </xsl:if>
+  </xsl:function>
+
+  <!-- the pim:typed attributes of template argument $substitution: its
+       actual, a data type of the model (an id), else the type a library's
+       href names (fp:href-type); () when neither is there -->
+  <xsl:function name="fp:actual-typing" as="attribute()*">
+    <xsl:param name="substitution" as="element()"/>
+    <xsl:variable name="actual" as="element()?" select="fp:targets($substitution, 'actual')[1]"/>
+    <xsl:variable name="library" as="map(*)?"
+        select="if (exists($actual)) then () else ($substitution/actual/@href)[1] ! fp:href-type(.)"/>
+    <xsl:variable name="typing" as="element()">
+      <typing>
+        <xsl:if test="exists($library)">
+          <xsl:attribute name="type-name" select="$library?name"/>
+          <xsl:attribute name="type-library" select="$library?library"/>
           <xsl:for-each select="$library?kind">
             <xsl:attribute name="primitive" select="."/>
           </xsl:for-each>
-        </pim:attribute>
-      </xsl:if>
-      <xsl:if test="exists($actual)">
-        <pim:attribute id="{fp:id($substitution)}" name="{$actual/@name}"
-            qualified-name="{fp:qname($e, $root)}::{$actual/@name}" type="{fp:id($actual)}"
-            type-name="{$actual/@name}" type-library="local" visibility="public">
+        </xsl:if>
+        <xsl:if test="exists($actual)">
+          <xsl:attribute name="type" select="fp:id($actual)"/>
+          <xsl:attribute name="type-name" select="$actual/@name"/>
+          <xsl:attribute name="type-library" select="'local'"/>
           <xsl:if test="fp:is-primitive-like($actual)">
             <xsl:for-each select="fp:primitive-kind('local', $actual/@name)">
               <xsl:attribute name="primitive" select="."/>
             </xsl:for-each>
           </xsl:if>
-        </pim:attribute>
-      </xsl:if>
-    </xsl:if>
+        </xsl:if>
+      </typing>
+    </xsl:variable>
+    <xsl:sequence select="$typing/@*"/>
   </xsl:function>
 
   <!-- the «Protocol» applications that make interface $e a message set:

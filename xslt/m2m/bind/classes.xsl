@@ -236,7 +236,9 @@
 
   <!-- the operations of the service interfaces (operations, no datum)
        class $c provides (its pim:provides, its ports' explicit
-       pim:provided: a RobotML service port) that it declares under no name
+       pim:provided: a RobotML service port; else the interfaces their
+       types realize: a Papyrus for Robotics «ComponentService» that
+       realizes a Query) that it declares under no name
        of its own, copied as its own: a class drawn as a component declares
        no operation of the interfaces its ports provide; its user class
        implements them (ids robomda.op.<class>.<operation>, and likewise
@@ -245,7 +247,9 @@
     <xsl:param name="c" as="element(pim:class)"/>
     <xsl:variable name="root" as="document-node()" select="root($c)"/>
     <xsl:variable name="interfaces" as="element(pim:interface)*"
-        select="key('fp:id', distinct-values(($c/pim:provides, $c/pim:port/pim:provided)/@interface), $root)
+        select="key('fp:id', distinct-values(($c/pim:provides, $c/pim:port/pim:provided,
+                                              $c/pim:port[not(pim:provided or pim:required)]
+                                              ! key('fp:id', @type, $root)/self::pim:class/pim:provides)/@interface), $root)
                 /self::pim:interface[pim:operation][empty(pim:attribute)]"/>
     <xsl:variable name="own" as="xs:string*" select="$c/pim:operation/@name ! string(.)"/>
     <xsl:for-each select="$interfaces/pim:operation[not(@name = $own)]">

@@ -280,10 +280,14 @@
         <xsl:when test="$instance/self::pim:interface and empty($instance/pim:attribute)">
           <xsl:sequence select="f:warn('BND004', string($port/@id), 'port ''' || $port/@name || ''' of '
               || $component/@name || ' carries interface ''' || $instance/@name
-              || (if ($instance/@pattern)
+              || (if ($instance/@pattern eq 'Query')
+                  then ''', a Query of ' || $instance/@dialect || ' whose request and answer robomda cannot read (its'
+                       || ' template binding does not give both, or it is a service of a library the model does not ship):'
+                       || ' the port is left out of the generated component and of its connections'
+                  else if ($instance/@pattern)
                   then ''', a ' || $instance/@pattern || ' of ' || $instance/@dialect
-                       || ' (request / response, action or event), which no target generates yet (Push and Send are data ports)'
-                       || ': the port is left out of the generated component and of its connections'
+                       || ' (action or event), which no target generates yet (Push and Send are data ports, a Query a'
+                       || ' service port): the port is left out of the generated component and of its connections'
                   else ''', which has no attribute (its datum) and no operation: the port is left out of the generated '
                        || 'component and of its connections; give ''' || $instance/@name || ''' one attribute, the data it carries'
                        || ' (or operations, for calls)'))"/>
