@@ -112,8 +112,9 @@
     <xsl:variable name="root" as="document-node()" select="root($model[1])"/>
     <xsl:for-each select="$model/pim:application//pim:interface">
       <xsl:variable name="interface" as="element(pim:interface)" select="."/>
-      <!-- a UML-RT message set: one connection point per message -->
-      <xsl:for-each-group select="key('fp:ip-by-interface', @id, $work)" group-by="string(@message)">
+      <!-- a UML-RT message set: one connection point per message; a
+           service port's point is a call's (services.xsl), never data -->
+      <xsl:for-each-group select="key('fp:ip-by-interface', @id, $work)[not(@kind eq 'service')]" group-by="string(@message)">
         <xsl:variable name="writer" as="element(fp:ip)*" select="current-group()[@direction eq 'out']"/>
         <xsl:variable name="realization" as="element(fp:ip)*" select="current-group()[@direction eq 'in']"/>
         <xsl:if test="exists($writer) and exists($realization)">
