@@ -435,6 +435,91 @@ def test_a_p4r_service_robomda_cannot_read_is_left_out_with_a_warning_naming_its
 
 
 @pytest.mark.parametrize("target, srv", [("ros2", "p4r/srv/classify.hpp"), ("ros1", "p4r/Classify.h")])
+@st.composite
+def p4r_systems(draw) -> tuple[str, dict[str, tuple[str, str]]]:
+    """A Papyrus for Robotics system: component definitions whose ports each provide or use one of a
+    Push, a Send and a Query service (written by the p4r fixture's make.py), connected where a port that
+    provides a service meets one that uses it. Returns the file and, by port id, (pattern, role)."""
+    make = _load_make(P4R)
+    services = {"Push": ("_h_push", make.PUSH, ("_p4r_image",)), "Send": ("_h_send", make.SEND, ("_p4r_boxes",)),
+                "Query": ("_h_query", make.QUERY, ("_p4r_boxes", "_p4r_image"))}
+    body = ('  <packagedElement xmi:type="uml:Package" xmi:id="_h_svc" name="services">\n'
+            '    <packagedElement xmi:type="uml:DataType" xmi:id="_p4r_image" name="Image">\n'
+            + make._field("_p4r_image_w", "width", "Integer") + '    </packagedElement>\n'
+            '    <packagedElement xmi:type="uml:DataType" xmi:id="_p4r_boxes" name="Boxes">\n'
+            + make._field("_p4r_boxes_n", "count", "Integer") + '    </packagedElement>\n'
+            + "".join(make._service_definition(i, f"{p[0]}_{p}", pattern, *actuals)
+                      for p, (i, pattern, actuals) in services.items())
+            + '  </packagedElement>\n')
+    apps = [f'<robotics.services:ServiceDefinition xmi:id="{i}_s" base_Interface="{i}"/>' for i, _, _ in services.values()]
+    drawn: dict[str, tuple[str, str]] = {}
+    n = draw(st.integers(min_value=2, max_value=3))
+    for c in range(n):
+        ports = []
+        for k in range(draw(st.integers(min_value=1, max_value=3))):
+            pattern, role = draw(st.sampled_from(sorted(services))), draw(st.sampled_from(["provided", "required"]))
+            ports.append((f"p{k}", role, services[pattern][0]))
+            drawn[f"_h_c{c}_p{k}"] = (pattern, role)
+        body += make._component(f"_h_c{c}", f"Comp{c}", ports, [], apps)
+    system = '  <packagedElement xmi:type="uml:Class" xmi:id="_h_sys" name="System">\n'
+    for c in range(n):
+        system += f'    <ownedAttribute xmi:type="uml:Property" xmi:id="_h_sys_c{c}" name="c{c}" type="_h_c{c}"/>\n'
+        apps.append(f'<robotics.components:ComponentInstance xmi:id="_h_sys_c{c}_s" base_Property="_h_sys_c{c}"/>')
+    pairs = [(a, b) for a in drawn for b in drawn if a.split("_p")[0] < b.split("_p")[0]
+             and drawn[a][0] == drawn[b][0] and drawn[a][1] != drawn[b][1]]
+    for k, (a, b) in enumerate(draw(st.lists(st.sampled_from(pairs), unique=True, max_size=3)) if pairs else []):
+        system += (f'    <ownedConnector xmi:type="uml:Connector" xmi:id="_h_k{k}" name="Connects{k}">\n'
+                   f'      <end xmi:type="uml:ConnectorEnd" xmi:id="_h_k{k}a" partWithPort="_h_sys_{a.split("_")[2]}" role="{a}"/>\n'
+                   f'      <end xmi:type="uml:ConnectorEnd" xmi:id="_h_k{k}b" partWithPort="_h_sys_{b.split("_")[2]}" role="{b}"/>\n'
+                   f'    </ownedConnector>\n')
+        apps.append(f'<robotics.generics:Connects xmi:id="_h_k{k}_s" base_Connector="_h_k{k}"/>')
+    system += '  </packagedElement>\n'
+    apps.append('<robotics.components:System xmi:id="_h_sys_s" base_Class="_h_sys"/>')
+    xmlns = "".join(f' xmlns:{p}="{u}"' for p, u in make.NS.items())
+    text = ('<?xml version="1.0" encoding="UTF-8"?>\n<xmi:XMI xmi:version="20131001" '
+            'xmlns:xmi="http://www.omg.org/spec/XMI/20131001" xmlns:uml="http://www.eclipse.org/uml2/5.0.0/UML"'
+            + xmlns + '>\n<uml:Model xmi:id="_h_model" name="random">\n' + body + system + '</uml:Model>\n'
+            + "".join(f"{a}\n" for a in apps) + '</xmi:XMI>\n')
+    return text, drawn
+
+
+@settings(max_examples=EXAMPLES, derandomize=not RANDOM, deadline=None, database=None,
+          suppress_health_check=[HealthCheck.too_slow])
+@given(p4r_systems())
+def test_random_p4r_systems_mean_what_each_pattern_means(system: tuple[str, dict[str, tuple[str, str]]]) -> None:
+    """Whatever Papyrus for Robotics system is drawn: every port is bound as its pattern and role mean (Push:
+    provided writes; Send: provided reads; Query: a service port of that role), never inverted, and every
+    connector is a connection from the writer to the reader, or a call from the user to the provider."""
+    text, drawn = system
+    import tempfile
+    found: list[Diagnostic] = []
+    with tempfile.TemporaryDirectory() as tmp:
+        model = Path(tmp) / "random.uml"
+        model.write_text(text, encoding="utf-8")
+        try:
+            pim = _pim(model, found)
+        except RobomdaError as caught:
+            # with no connector drawn, a reader several writers feed or a Query several ports provide: the
+            # model's ambiguity, located
+            assert {d.code for d in caught.diagnostics if d.severity == "error"} <= {"BND008", "BND019"}, \
+                [d.format() for d in caught.diagnostics]
+            return
+    assert not [d for d in found if d.code in ("BND004", "BND007", "INTERNAL")], [d.format() for d in found]
+    data = {"Push": {"provided": "out", "required": "in"}, "Send": {"provided": "in", "required": "out"}}
+    got = {d.get("port"): ("data", d.get("direction"))
+           for d in pim.xpath("//p:binding/p:bound-component/p:data-port", namespaces=NS)}
+    got |= {s.get("port"): ("service", s.get("role"))
+            for s in pim.xpath("//p:binding/p:bound-component/p:service-port", namespaces=NS)}
+    assert got == {p: ("service", role) if pattern == "Query" else ("data", data[pattern][role])
+                   for p, (pattern, role) in drawn.items()}
+    for connection in pim.xpath("//p:binding/p:connection", namespaces=NS):
+        assert got[connection.find("p:writer", NS).get("port")] == ("data", "out")
+        assert got[connection.find("p:reader", NS).get("port")] == ("data", "in")
+    for call in pim.xpath("//p:binding/p:call", namespaces=NS):
+        assert drawn[call.find("p:caller", NS).get("port")] == ("Query", "required")
+        assert drawn[call.find("p:provider", NS).get("port")] == ("Query", "provided")
+
+
 def test_a_p4r_query_is_a_ros_service_of_the_package_own(target: str, srv: str, tmp_path: Path) -> None:
     """A Query from Boxes to Verdict: srv/Classify.srv carries the request's and the answer's messages;
     the logger's node serves it (~/Classify), the detector's calls it, remapped to the logger's."""
