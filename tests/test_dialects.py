@@ -75,6 +75,7 @@ FIXTURES = {  # fixture -> names its files must hold on every target
     "p4r": ("camera", "detector", "logger", "threshold"),
     "umlrt": ("sensor_reading", "data_request", "controller"),
     "sysml": ("fluid_pressure", "pump_command", "maxPressure"),
+    "designer": ("sensor", "filter", "reading_in", "scale"),
 }
 
 
@@ -434,7 +435,6 @@ def test_a_p4r_service_robomda_cannot_read_is_left_out_with_a_warning_naming_its
     assert [c.get("name") for c in pim.xpath("//p:binding/p:call", namespaces=NS)] == ["Connects3"]
 
 
-@pytest.mark.parametrize("target, srv", [("ros2", "p4r/srv/classify.hpp"), ("ros1", "p4r/Classify.h")])
 @st.composite
 def p4r_systems(draw) -> tuple[str, dict[str, tuple[str, str]]]:
     """A Papyrus for Robotics system: component definitions whose ports each provide or use one of a
@@ -520,6 +520,7 @@ def test_random_p4r_systems_mean_what_each_pattern_means(system: tuple[str, dict
         assert drawn[call.find("p:provider", NS).get("port")] == ("Query", "provided")
 
 
+@pytest.mark.parametrize("target, srv", [("ros2", "p4r/srv/classify.hpp"), ("ros1", "p4r/Classify.h")])
 def test_a_p4r_query_is_a_ros_service_of_the_package_own(target: str, srv: str, tmp_path: Path) -> None:
     """A Query from Boxes to Verdict: srv/Classify.srv carries the request's and the answer's messages;
     the logger's node serves it (~/Classify), the detector's calls it, remapped to the logger's."""

@@ -66,6 +66,19 @@ USER_OROCOS = {
                                "  double reading = 0.0;\n  while (port_sensor_reading.read(reading) == RTT::NewData) {\n"
                                "    port_sensor_request.write(true);\n  }\n"),
     },
+    # Papyrus Designer: the sensor writes a count, the filter (inside the composite) adds the gain the
+    # tuner sets through its required interface (an operation call), the monitor reads what comes out
+    "designer": {
+        "src/Sensor.cpp": ("  // write: port_reading.write(value)\n",
+                           "  ::designer::types::Sample sample;\n  sample.value = ++count_;\n  port_reading.write(sample);\n"),
+        "src/Filter.cpp": [("  // read: port_input.read(sample)\n  // write: port_output.write(value)\n",
+                            "  ::designer::types::Sample sample;\n  while (port_input.read(sample) == RTT::NewData) {\n"
+                            "    sample.value += gain_;\n    port_output.write(sample);\n  }\n"),
+                           ("double Filter::scale(double /*value*/)\n{\n  return 0.0;",
+                            "double Filter::scale(double value)\n{\n  gain_ = value;\n  return gain_;")],
+        "include/designer/Filter.hpp": ("  void reset() override;\n", "  void reset() override;\n\nprivate:\n  double gain_ = 0.0;\n"),
+        "src/Tuner.cpp": ("void Tuner::updateHook()\n{\n}", "void Tuner::updateHook()\n{\n  scale(1000.0);\n}"),
+    },
     # SysML: the pump writes its pressure through the proxy port, the controller answers with a command
     "sysml": {
         "src/Pump.cpp": ("  // write: port_fluid_pressure.write(value)\n", "  port_fluid_pressure.write(++count_);\n"),
@@ -75,7 +88,7 @@ USER_OROCOS = {
                                "    port_pump_command.write(pressure / 2);\n  }\n"),
     },
 }
-COUNTERS = {"robotml": "double", "p4r": "int", "umlrt": "double", "sysml": "double"}
+COUNTERS = {"robotml": "double", "p4r": "int", "umlrt": "double", "sysml": "double", "designer": "double"}
 # instances, reader ports that must be connected, the writers probed: (instance, port, RTT type[, a
 # field and the least value it must reach]); the probed writers write only what went through the
 # component before them (p4r's detector: the logger's answer, at least 1000)
@@ -86,6 +99,9 @@ PROBES = {
             [("detector", "boxes", "/p4r/Boxes", "count", "1000")]),
     "umlrt": (["sensor", "controller"], [("controller", "sensor_reading"), ("sensor", "data_request")],
               [("controller", "sensor_request", "bool")]),
+    "designer": (["sensor", "processing_filter", "monitor", "tuner"],
+                 [("processing_filter", "input"), ("monitor", "reading_in")],
+                 [("processing_filter", "output", "/designer/Sample", "value", "1000")]),
     "sysml": (["pump", "sensor", "controller"],
               [("controller", "pump_pressure"), ("pump", "fluid_command"), ("controller", "level")],
               [("controller", "pump_command", "double"), ("sensor", "level", "double")]),
@@ -133,14 +149,17 @@ def _lua_list(items) -> str:
                      for item in items)
 
 
-def _fill_in(out: Path, edits: dict[str, tuple[str, str]], counter_type: str) -> None:
-    """The user's code: each edit applied once to the user file robomda wrote; a source gets a counter."""
-    for rel, (old, new) in edits.items():
+def _fill_in(out: Path, edits: dict[str, tuple[str, str] | list[tuple[str, str]]], counter_type: str) -> None:
+    """The user's code: each edit (or list of edits) applied once to the user file robomda wrote; a source
+    gets a counter."""
+    for rel, change in edits.items():
         path = out / rel
         text = path.read_text(encoding="utf-8")
-        assert text.count(old) == 1, f"{rel}: the skeleton robomda writes changed; update this test"
-        path.write_text(text.replace(old, new), encoding="utf-8")
-        if "count_" in new:
+        for old, new in change if isinstance(change, list) else [change]:
+            assert text.count(old) == 1, f"{rel}: the skeleton robomda writes changed; update this test"
+            text = text.replace(old, new)
+        path.write_text(text, encoding="utf-8")
+        if "count_" in text and "count_ = 0" not in text:
             header = next((out / "include").rglob(Path(rel).stem + ".hpp"))
             htext = header.read_text(encoding="utf-8")
             htext = htext.replace("  void cleanupHook() override;\n",
@@ -182,7 +201,7 @@ def test_orocos_components_run_and_data_flows_as_the_dialect_means(fixture: str,
 # ------------------------------------------------------------------------------------------- ROS 2
 # the dialect fixtures, and fixtures/ros/p4rlib: Papyrus for Robotics ports typed by its ROS 2 library,
 # carried as std_msgs/String and std_msgs/Int32 themselves
-ROS2_FIXTURES = ["robotml", "p4r", "umlrt", "sysml", "p4rlib"]
+ROS2_FIXTURES = ["robotml", "p4r", "umlrt", "sysml", "designer", "p4rlib"]
 # nodes whose output flows only on what they receive (no period): their topics flowing proves that the
 # connection into them carries data in the direction the dialect means
 MANAGED = {"p4r": ["/camera", "/detector", "/logger"], "p4rlib": ["/talker", "/relay", "/counter"]}
@@ -200,10 +219,26 @@ USER_ROS2 = {
                                 "Classify(const ::p4r::types::Boxes& request)\n{\n  ::p4r::types::Verdict verdict;\n"
                                 "  verdict.label = request.count + 1000;\n  return verdict;")],
     },
+    # designer: the sensor writes 1, the filter adds the gain the tuner sets through its required
+    # interface (a service of the package's own, srv/Scale.srv), the monitor reads what comes out
+    "designer": {
+        "src/SensorImpl.cpp": [("  return ::designer::types::Sample();",
+                                "  ::designer::types::Sample sample;\n  sample.value = 1.0;\n  return sample;")],
+        "src/FilterImpl.cpp": [("FilterImpl::setInput(const ::designer::types::Sample& /*value*/)\n{\n",
+                                "FilterImpl::setInput(const ::designer::types::Sample& value)\n{\n  input_ = value;\n"),
+                               ("  return ::designer::types::Sample();",
+                                "  ::designer::types::Sample sample = input_;\n  sample.value += gain_;\n  return sample;"),
+                               ("double FilterImpl::scale(double /*value*/)\n{\n  return 0.0;",
+                                "double FilterImpl::scale(double value)\n{\n  gain_ = value;\n  return gain_;")],
+        "include/designer/FilterImpl.hpp": [("};\n", "\nprivate:\n  ::designer::types::Sample input_;\n  double gain_ = 0.0;\n};\n")],
+        "src/TunerImpl.cpp": [("void TunerImpl::update()\n{\n}", "void TunerImpl::update()\n{\n  scale(1000.0);\n}")],
+    },
 }
 # (service, its type, a request, what the answer holds); (topic, what it carries once answers come back)
 QUERIES = {"p4r": (("/logger/Classify", "p4r/srv/Classify", "{request: {count: 1}}", "label=1001"),
-                   ("/Connects2", "count: 1041"))}
+                   ("/Connects2", "count: 1041")),
+           "designer": (("/processing/filter/scale", "designer/srv/Scale", "{value: {data: 2.0}}", "data=2.0"),
+                        ("/filtered", "value: 1001.0"))}
 
 
 def _fixture_model(fixture: str) -> Path:

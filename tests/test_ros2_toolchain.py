@@ -279,7 +279,10 @@ def _launch_files(ws: Workspace, pkg: str) -> list[Path]:
 
 
 def _composable_nodes(ws: Workspace, pkg: str) -> list[str]:
-    return sorted({"/" + n.get("name") for f in _launch_files(ws, pkg) for n in ET.parse(f).iter("composable_node")})
+    """The fully qualified names of the launch files' composable nodes (a part of a composite in its
+    namespace: /processing/filter)."""
+    return sorted({"/" + "/".join(x.strip("/") for x in (n.get("namespace", ""), n.get("name")) if x.strip("/"))
+                   for f in _launch_files(ws, pkg) for n in ET.parse(f).iter("composable_node")})
 
 
 def _connection_topics(ws: Workspace, pkg: str) -> list[str]:

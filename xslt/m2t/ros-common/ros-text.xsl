@@ -176,14 +176,17 @@
 
   <!-- the C++ signature of the operation of service or client $s of the
        package's own: "Result name(const Argument& argument)", the result
-       and arguments the C++ types of their data ($names false: the
+       and arguments the C++ types of their data, a built-in type (no
+       namespace: double, int32_t) passed by value ($names false: the
        argument names commented out, for a skeleton that uses none) -->
   <xsl:function name="fp:own-signature" as="xs:string">
     <xsl:param name="s" as="element()"/>
     <xsl:param name="qualifier" as="xs:string"/>
     <xsl:param name="names" as="xs:boolean"/>
     <xsl:sequence select="($s/r:result/r:message/@cpp-type, 'void')[1] || ' ' || $qualifier || $s/@name || '('
-        || string-join($s/r:argument ! ('const ' || r:message/@cpp-type || '&amp; ' || (if ($names) then @name else '/*' || @name || '*/')), ', ')
+        || string-join($s/r:argument ! ((if (matches(r:message/@cpp-type, '^[a-z][a-z0-9_ ]*$')) then r:message/@cpp-type || ' '
+                                         else 'const ' || r:message/@cpp-type || '&amp; ')
+                                        || (if ($names) then @name else '/*' || @name || '*/')), ', ')
         || ')'"/>
   </xsl:function>
 
