@@ -10,7 +10,7 @@
     fp:double-literal($v)  a C++ / YAML floating literal of a number
     fp:service-body($s, $rc, $acc)  the statements of a service callback
     fp:client-method($c, $qualifier)  the signature of a method calling a required operation
-    fp:own-service($s), fp:own-signature($s, $qualifier, $names)  a service of
+    fp:is-own-service($s), fp:own-signature($s, $qualifier, $names)  a service of
                            the package's own (srv/<Name>.srv), its operation's C++ signature
     fp:service-callback-names($s)  the callback's (request, response) names
     fp:srv-file($t)        the text of srv/<Name>.srv
@@ -162,14 +162,14 @@
   <xsl:function name="fp:client-method" as="xs:string">
     <xsl:param name="client" as="element(r:service-client)"/>
     <xsl:param name="qualifier" as="xs:string"/>
-    <xsl:sequence select="if (fp:own-service($client)) then fp:own-signature($client, $qualifier, true())
+    <xsl:sequence select="if (fp:is-own-service($client)) then fp:own-signature($client, $qualifier, true())
                           else concat(if (xs:boolean($client/@returns-bool)) then 'bool ' else 'void ', $qualifier, $client/@name,
                                       '(', $client/@argument ! concat('bool ', .), ')')"/>
   </xsl:function>
 
   <!-- true for a service or client $s of a service of the package's own
        (its arguments and result: r:argument, r:result) -->
-  <xsl:function name="fp:own-service" as="xs:boolean">
+  <xsl:function name="fp:is-own-service" as="xs:boolean">
     <xsl:param name="s" as="element()"/>
     <xsl:sequence select="exists($s/(r:argument, r:result))"/>
   </xsl:function>
@@ -195,7 +195,7 @@
   <xsl:function name="fp:service-callback-names" as="xs:string+">
     <xsl:param name="service" as="element(r:service)"/>
     <xsl:sequence select="(if ($service/@srv eq 'std_srvs/SetBool' or $service/r:argument) then 'request' else '/*request*/'),
-                          (if ($service/@srv eq 'std_srvs/Empty' or (fp:own-service($service) and empty($service/r:result)))
+                          (if ($service/@srv eq 'std_srvs/Empty' or (fp:is-own-service($service) and empty($service/r:result)))
                            then '/*response*/' else 'response')"/>
   </xsl:function>
 
@@ -218,13 +218,13 @@
     <xsl:param name="rc" as="xs:string"/>
     <xsl:param name="acc" as="xs:string"/>
     <xsl:variable name="call" as="xs:string"
-        select="if (fp:own-service($service))
+        select="if (fp:is-own-service($service))
                 then $rc || '::' || $service/@name || '('
                      || string-join($service/r:argument ! fp:from-msg(r:message, 'request' || $acc || @field), ', ') || ')'
                 else concat($rc, '::', $service/@name, '(', (if ($service/@srv eq 'std_srvs/SetBool') then concat('request', $acc, 'data') else ''), ')')"/>
     <xsl:sequence select="
         if ($service/r:result) then fp:indent(2, fp:to-msg($service/r:result/r:message, 'response' || $acc || $service/r:result/@field, $call))
-        else if ($service/@srv eq 'std_srvs/Empty' or fp:own-service($service)) then concat('  ', $call, ';')
+        else if ($service/@srv eq 'std_srvs/Empty' or fp:is-own-service($service)) then concat('  ', $call, ';')
         else if (xs:boolean($service/@returns-bool)) then concat('  response', $acc, 'success = ', $call, ';')
         else (concat('  ', $call, ';'), concat('  response', $acc, 'success = true;'))"/>
   </xsl:function>

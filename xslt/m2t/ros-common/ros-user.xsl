@@ -90,12 +90,12 @@
           'decl': r:message/@cpp-type || ' ' || @accessor || '() const',
           'head': r:message/@cpp-type || ' ' || $user || '::' || @accessor || '() const',
           'body': ('  // port ' || @name || ' (' || @interface || '::' || @datum || ')', '  return ' || r:message/@sample || ';') },
-        $node/r:service[fp:own-service(.)] ! map {
+        $node/r:service[fp:is-own-service(.)] ! map {
           'group': 'services (~name, srv/' || @srv || '.srv): the node calls the operation for each request',
           'decl': fp:own-signature(., '', true()),
           'head': fp:own-signature(., $user || '::', false()),
           'body': r:result ! ('  return ' || r:message/@sample || ';') },
-        $node/r:service[not(fp:own-service(.))] ! (let $result := if (xs:boolean(@returns-bool)) then 'bool ' else 'void ' return map {
+        $node/r:service[not(fp:is-own-service(.))] ! (let $result := if (xs:boolean(@returns-bool)) then 'bool ' else 'void ' return map {
           'group': 'services (~name, std_srvs): the node calls the operation for each request',
           'decl': $result || @name || '(' || (if (@srv eq 'std_srvs/SetBool') then 'bool data' else '') || ')',
           'head': $result || $user || '::' || @name || '(' || (if (@srv eq 'std_srvs/SetBool') then 'bool /*data*/' else '') || ')',

@@ -268,7 +268,7 @@
           '',
           fp:client-method($client, concat($class, '::')),
           '{',
-          if (fp:own-service($client)) then fp:ros2-own-call($client, $node) else (
+          if (fp:is-own-service($client)) then fp:ros2-own-call($client, $node) else (
           '  // asynchronous: a node must not wait for a service inside its own callback; the call is sent',
           concat('  if (!', $client/@member, '-&gt;service_is_ready()) {'),
           concat('    RCLCPP_WARN(get_logger(), &quot;service %s (', $client/@service, ') is not available&quot;, ',
