@@ -22,7 +22,8 @@
            - pim:attribute/@direction of a flow property;
            - pim:interface/@pattern, @provided-direction, @dialect, @via of
              a communication pattern or a UML-RT message set, and its data
-             (fp:pattern-datum, fp:message-data);
+             or, for a request / response pattern, its operation
+             (fp:pattern-datum, fp:pattern-operation, fp:message-data);
            - pim:stereotype/@means and pim:tag/@means (a tool's stereotype
              that stands for a robomda one: RobotML «Software» for
              «Activity»);
