@@ -332,8 +332,9 @@
       </pim:part>
     </xsl:for-each>
     <xsl:apply-templates select="ownedOperation[not($messages)]" mode="mp:feature"/>
-    <!-- the operation of a request / response pattern it binds (dialects.xsl) -->
-    <xsl:sequence select="if (fp:meta(.) eq 'Interface') then fp:pattern-operation(., $root) else ()"/>
+    <!-- the operation of a request / response pattern it binds (dialects.xsl;
+         only an interface with a template binding binds one) -->
+    <xsl:sequence select="if (fp:meta(.) eq 'Interface' and templateBinding) then fp:pattern-operation(., $root) else ()"/>
     <xsl:apply-templates select="ownedConnector[not(end/role/@href or end/partWithPort/@href)]"
         mode="mp:feature"/>
     <xsl:apply-templates select="key('fp:stray-connector', $id)[not(end/role/@href or end/partWithPort/@href)]"
