@@ -42,7 +42,8 @@
     fp:offered-operations($bc, $excluded)  protected, not static, not excluded, or of a
                                  provided interface; never one of a required interface
     fp:interface-operations($service-ports)  the operations of their interfaces
-    fp:provided-service($bc, $operation)  the provided interface it implements, if any
+    fp:provided-interface-operation($bc, $operation)  the operation of a provided interface it implements, if any
+    fp:provided-service($bc, $operation)  that interface's name
     fp:check-services($components, $code)  one port per interface and role, one required operation per name
     fp:check-calls($calls, $targets, $code)  no call crosses middlewares
     fp:warn-unbound-services($instances, $code)  required interfaces no call binds
@@ -214,13 +215,20 @@
     <xsl:sequence select="$service-ports ! key('fp:id', @interface, root(.))/pim:operation"/>
   </xsl:function>
 
-  <!-- the interface name of the provided service port whose operation
-       $operation implements, or () -->
+  <!-- the operation (by name) of the first provided service port's
+       interface that $operation implements, or () -->
+  <xsl:function name="fp:provided-interface-operation" as="element(pim:operation)?">
+    <xsl:param name="bc" as="element(pim:bound-component)"/>
+    <xsl:param name="operation" as="element(pim:operation)"/>
+    <xsl:sequence select="fp:interface-operations($bc/pim:service-port[@role eq 'provided'])[@name eq $operation/@name][1]"/>
+  </xsl:function>
+
+  <!-- the name of that operation's interface (the service port's
+       interface-name), or () -->
   <xsl:function name="fp:provided-service" as="xs:string?">
     <xsl:param name="bc" as="element(pim:bound-component)"/>
     <xsl:param name="operation" as="element(pim:operation)"/>
-    <xsl:sequence select="($bc/pim:service-port[@role eq 'provided']
-                           [fp:interface-operations(.)/@name = $operation/@name])[1]/@interface-name"/>
+    <xsl:sequence select="fp:provided-interface-operation($bc, $operation)/../@name"/>
   </xsl:function>
 
   <!-- fails with $code where a component of $components has two service

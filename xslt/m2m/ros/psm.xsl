@@ -460,10 +460,11 @@
     <xsl:variable name="what" as="xs:string" select="'port ''' || $data-port/@port-name || ''' (datum '''
         || $data-port/@datum-name || ''' of interface ''' || $data-port/@interface-name || ''')'"/>
     <xsl:variable name="type" as="element(ty:type)" select="fp:required-type($data-port, $data-port/@port, $what)"/>
-    <xsl:sequence select="(fp:message-of($data-port, $type),
-        f:fail('ROS001', $data-port/@port, $what || ' carries ''' || fp:type-label($data-port)
+    <xsl:variable name="message" as="element(r:message)?" select="fp:message-of($data-port, $type)"/>
+    <xsl:sequence select="if (exists($message)) then $message
+        else f:fail('ROS001', $data-port/@port, $what || ' carries ''' || fp:type-label($data-port)
                || ''': no standard message carries an array of that type (std_msgs has multi-array messages of numbers);'
-               || ' make the array an attribute of a data type, whose generated message carries it'))[1]"/>
+               || ' make the array an attribute of a data type, whose generated message carries it')"/>
   </xsl:function>
 
   <!-- the message that carries typed element $typed of ROS type $type;
@@ -630,13 +631,7 @@
     </xsl:if>
   </xsl:function>
 
-  <!-- the operation of a provided interface of $bc that $operation
-       implements (by name), or () -->
-  <xsl:function name="fp:provided-interface-operation" as="element(pim:operation)?">
-    <xsl:param name="bc" as="element(pim:bound-component)"/>
-    <xsl:param name="operation" as="element(pim:operation)"/>
-    <xsl:sequence select="fp:interface-operations($bc/pim:service-port[@role eq 'provided'])[@name eq $operation/@name][1]"/>
-  </xsl:function>
+
 
   <!-- N3: the r:service of $operation, which is or implements operation
        $interface-op of an interface, through a service of its own
