@@ -137,12 +137,13 @@ class PackageInfo:
     version: str = ""
     maintainer: str = ""  # "Name <e-mail>"
     license: str = ""
+    year: str = ""  # of the copyright notices in generated sources; empty: none with a year
 
     def context(self) -> dict[str, str]:
         found = re.fullmatch(r"\s*(.*?)\s*<([^<>]*)>\s*", self.maintainer)
         name, email = (found.group(1), found.group(2)) if found else (self.maintainer.strip(), "")
         return {"package-version": self.version, "maintainer-name": name, "maintainer-email": email,
-                "license": self.license}
+                "license": self.license, "copyright-year": self.year}
 
 
 def _context(model: Path, out: Path | None, package_name: str, type_map: Path | None = None,

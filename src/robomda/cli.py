@@ -4,9 +4,12 @@ from __future__ import annotations
 
 import argparse
 import itertools
+import os
+import re
 import signal
 import sys
 import time
+from datetime import datetime, timezone
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -37,12 +40,32 @@ _EXIT_CODES = """exit codes:
   130 / 143  interrupted by SIGINT (Ctrl-C) / SIGTERM: no output folder is half-written"""
 
 
+def _year(text: str) -> str:
+    """--copyright-year: four digits."""
+    if not re.fullmatch(r"[0-9]{4}", text):
+        raise argparse.ArgumentTypeError(f"not a year: {text!r} (four digits, e.g. 2026)")
+    return text
+
+
+def _package(args: argparse.Namespace) -> tuple[str, str, str, str]:
+    """What the package options say: version, maintainer, license, copyright year (PackageInfo's fields)."""
+    year = args.copyright_year
+    if year is None:
+        epoch = os.environ.get("SOURCE_DATE_EPOCH", "")
+        stamp = datetime.fromtimestamp(int(epoch), timezone.utc) if epoch.isdigit() else datetime.now(timezone.utc)
+        year = f"{stamp.year:04d}"
+    return (args.package_version, args.maintainer, args.license, year)
+
+
 def _package_options(parser: argparse.ArgumentParser) -> None:
     """The options of what a package is made from and named: generate and watch share them."""
     parser.add_argument("--maintainer", default="", metavar="'NAME <E-MAIL>'",
                         help="the package maintainer written in package.xml")
     parser.add_argument("--license", default="", metavar="LICENSE", help="the package license (e.g. Apache-2.0)")
     parser.add_argument("--package-version", default="", metavar="X.Y.Z", help="the package version (default 0.0.0)")
+    parser.add_argument("--copyright-year", default=None, metavar="YYYY", type=_year,
+                        help="the year of the copyright notices written with --maintainer (default: the year of "
+                             "SOURCE_DATE_EPOCH when set, else this year)")
     parser.add_argument("-t", "--target", default=None, choices=targets(),
                         help="middleware target (default: the one the model deploys on; Orocos if it deploys on none, "
                              "ROS 2 if it deploys on none and runs managed nodes)")
@@ -273,7 +296,7 @@ def _batch(args: argparse.Namespace) -> int:
         return EXIT_INPUT
     check = "diff" if args.diff else "check" if args.check else ""
     report = run_batch(args.model, args.output, args.target, package_name=args.package_name, jobs=args.jobs,
-                       package=(args.package_version, args.maintainer, args.license),
+                       package=_package(args),
                        force=args.force, type_map=args.type_map, model_path=args.model_path,
                        progress=ProgressBar(), check=check)
     for result in report.results:
@@ -298,7 +321,7 @@ def _variants(args: argparse.Namespace) -> int:
     from robomda.batch import ProgressBar, run_variants
 
     report = run_variants(args.model, args.all_configurations, args.output, args.target, jobs=args.jobs,
-                          force=args.force, package=(args.package_version, args.maintainer, args.license),
+                          force=args.force, package=_package(args),
                           progress=ProgressBar())
     for result in report.results:
         for line in result.diagnostics:
@@ -381,7 +404,7 @@ def _watch(args: argparse.Namespace) -> int:
                  stop=(lambda: next(polls) >= args.polls) if args.polls else None,
                  target=args.target, package_name=args.package_name, type_map=args.type_map,
                  model_path=args.model_path,
-                 package=PackageInfo(args.package_version, args.maintainer, args.license))
+                 package=PackageInfo(*_package(args)))
 
 
 class Terminated(BaseException):
@@ -436,7 +459,7 @@ def _main(args: argparse.Namespace, fmt: str) -> int:
             done = generate(args.model, args.output, args.target, package_name=args.package_name,
                             type_map=args.type_map, model_path=args.model_path, diagrams=args.diagrams, check=checking,
                             features=args.features,
-                            package=PackageInfo(args.package_version, args.maintainer, args.license))
+                            package=PackageInfo(*_package(args)))
             _report(fmt, done.warnings, EXIT_OK)
             if checking:
                 from robomda.output import Drift

@@ -18,6 +18,10 @@ if [ -f "$ROS2_PREFIX/install_py/local_setup.bash" ]; then
   # shellcheck disable=SC1091
   source "$ROS2_PREFIX/install_py/local_setup.bash"
 fi
+# uncrustify at the version ament_uncrustify's configuration is for (build.sh builds it)
+if [ -x "$ROS2_PREFIX/tools/bin/uncrustify" ]; then
+  export PATH="$ROS2_PREFIX/tools/bin:$PATH"
+fi
 export RMW_IMPLEMENTATION=rmw_cyclonedds_cpp
 export ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST
 export ROS_DOMAIN_ID=${ROS_DOMAIN_ID:-42}

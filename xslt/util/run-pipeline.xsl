@@ -86,6 +86,9 @@
   <xsl:param name="license" as="xs:string" select="''">
     <!-- the package's license; empty = TODO -->
   </xsl:param>
+  <xsl:param name="copyright-year" as="xs:string" select="''">
+    <!-- the year of the copyright notices; empty = notices without a year -->
+  </xsl:param>
 
   <xsl:global-context-item as="document-node(element(p:pipeline))"/>
 
@@ -119,6 +122,7 @@
       else if ($param/@from = 'maintainer-name') then $maintainer-name
       else if ($param/@from = 'maintainer-email') then $maintainer-email
       else if ($param/@from = 'license') then $license
+      else if ($param/@from = 'copyright-year') then $copyright-year
       else if ($param/@from = 'model-path') then $model-path
       else if ($param/@from = 'features') then $features
       else if ($param/@from = 'feature-model') then $feature-model

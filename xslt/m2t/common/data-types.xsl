@@ -47,7 +47,7 @@
     <xsl:variable name="parts" as="xs:string+" select="tokenize($type/@cpp-name, '::')[. ne '']"/>
     <xsl:variable name="name" as="xs:string" select="$parts[last()]"/>
     <xsl:variable name="namespaces" as="xs:string*" select="$parts[position() lt last()]"/>
-    <xsl:variable name="guard" as="xs:string" select="string-join(('ROBOMDA_TYPE', $namespaces[1], $name, 'HPP'), '_')"/>
+    <xsl:variable name="guard" as="xs:string" select="fp:path-guard($type/@header)"/>
     <xsl:variable name="enum" as="xs:boolean" select="exists($type/*:literal)"/>
     <xsl:variable name="fields" as="element()*" select="$type/*:field"/>
     <xsl:variable name="includes" as="xs:string*" select="
@@ -62,7 +62,7 @@
         '#define ' || $guard,
         '',
         $includes, if (exists($includes)) then '' else (),
-        $namespaces ! ('namespace ' || . || ' {'), if (exists($namespaces)) then '' else (),
+        $namespaces ! ('namespace ' || ., '{'), if (exists($namespaces)) then '' else (),
         '/** ' || fp:doc-of($type, (if ($enum) then 'Enumeration ' else 'Data type ') || $type/@name || ' of the model.') || ' */',
         if ($enum) then (
           'enum ' || $name,
@@ -76,16 +76,16 @@
                      || (if (*:doc) then '  // ' || normalize-space(*:doc) else '')),
           '};'),
         if (exists($namespaces)) then ('', reverse($namespaces) ! ('}  // namespace ' || .)) else (),
-        '',
-        '#endif',
         if (exists($namespaces)) then (
           '',
           '// Code written for the global name (atomic code that one package and another',
-          '// both build) defines ROBOMDA_GLOBAL_TYPE_NAMES before it includes this header;',
-          '// outside the include guard, so that it holds after an earlier include too.',
+          '// both build) defines ROBOMDA_GLOBAL_TYPE_NAMES before it includes this header',
+          '// (the first include of it decides).',
           '#ifdef ROBOMDA_GLOBAL_TYPE_NAMES',
           'using ' || $type/@cpp-name || ';',
           '#endif')
-        else ()))"/>
+        else (),
+        '',
+        '#endif  // ' || $guard))"/>
   </xsl:function>
 </xsl:stylesheet>

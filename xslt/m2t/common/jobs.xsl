@@ -56,7 +56,7 @@
         '  std::vector&lt;std::string&gt; keep;  // never stopped',
         '};',
         '',
-        concat('const char* const kInitialJob = ', fp:cpp-string($coordinator/@initial-job), ';'),
+        concat('const char * const kInitialJob = ', fp:cpp-string($coordinator/@initial-job), ';'),
         '',
         '// the members of each job, in start order',
         'const std::map&lt;std::string, std::vector&lt;std::string&gt;&gt; kJobs = {',
@@ -66,10 +66,10 @@
         'const std::vector&lt;Switch&gt; kSwitches = {',
         for $t in $coordinator/*:transition return (
           concat('  {', fp:cpp-string($t/@from), ', ', fp:cpp-string($t/@event), ', ', fp:cpp-string($t/@to), ','),
-          concat('   {', string-join($t/*:stop ! fp:cpp-string(@instance), ', '), '},'),
-          concat('   {', string-join($t/*:reconfigure ! fp:job-member(., $version), ', '), '},'),
-          concat('   {', string-join($t/*:start ! fp:job-member(., $version), ', '), '},'),
-          concat('   {', string-join($t/*:keep ! fp:cpp-string(@instance), ', '), '}},')),
+          concat('    {', string-join($t/*:stop ! fp:cpp-string(@instance), ', '), '},'),
+          concat('    {', string-join($t/*:reconfigure ! fp:job-member(., $version), ', '), '},'),
+          concat('    {', string-join($t/*:start ! fp:job-member(., $version), ', '), '},'),
+          concat('    {', string-join($t/*:keep ! fp:cpp-string(@instance), ', '), '}},')),
         '};',
         '}  // namespace'"/>
   </xsl:function>

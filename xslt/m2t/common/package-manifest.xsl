@@ -4,10 +4,11 @@
 
   Reads:   nothing.  Writes: strings (package.xml lines), for every target's
            package.xml (catkin / ament / Orocos package format 3).
-  Params:  package-version, maintainer-name, maintainer-email, license
-           (the driver passes the options package-version, maintainer and
-           license of robomda; without them the placeholders below are written and the
-           driver warns, PKG002).  Errors: none.
+  Params:  package-version, maintainer-email here; maintainer-name and
+           license in text.xsl (the driver passes the options
+           package-version, maintainer and license of robomda; without them
+           the placeholders below are written and the driver warns, PKG002).
+  Errors:  none.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -19,16 +20,9 @@
   <xsl:param name="package-version" as="xs:string" select="''">
     <!-- the package's version (X.Y.Z); empty: 0.0.0 -->
   </xsl:param>
-  <xsl:param name="maintainer-name" as="xs:string" select="''">
-    <!-- the maintainer's name; empty: a placeholder -->
-  </xsl:param>
   <xsl:param name="maintainer-email" as="xs:string" select="''">
     <!-- the maintainer's e-mail address; empty: a placeholder -->
   </xsl:param>
-  <xsl:param name="license" as="xs:string" select="''">
-    <!-- the license (an SPDX name such as Apache-2.0); empty: TODO -->
-  </xsl:param>
-
   <!-- the version, description, maintainer and license lines of
        package.xml, indented by two; $description is the description line -->
   <xsl:function name="f:package-manifest-fields" as="xs:string+">

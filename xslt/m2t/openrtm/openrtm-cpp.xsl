@@ -501,6 +501,7 @@
       'endif()',
       'set(CMAKE_CXX_STANDARD 14)',
       'set(CMAKE_CXX_STANDARD_REQUIRED ON)',
+      fp:cmake-warnings(),
       '',
       '# OpenRTM-aist 2.0, by its OpenRTMConfig.cmake (OPENRTM_INCLUDE_DIRS, OPENRTM_LIBRARIES, OPENRTM_CFLAGS)',
       'find_package(OpenRTM REQUIRED)',

@@ -52,6 +52,7 @@
         '# RTT 2.10 headers do not compile as C++20: pin the standard.',
         'set(CMAKE_CXX_STANDARD 14)',
         'set(CMAKE_CXX_STANDARD_REQUIRED ON)',
+        fp:cmake-warnings(),
         'set(CMAKE_CXX_EXTENSIONS OFF)',
         '',
         'find_package(OROCOS-RTT REQUIRED)',

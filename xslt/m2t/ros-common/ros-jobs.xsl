@@ -66,9 +66,9 @@
     <xsl:param name="version" as="xs:string"/>
     <xsl:variable name="type" as="xs:string" select="if ($version eq '2') then $value/@param2 else $value/@param1"/>
     <xsl:variable name="typed" as="xs:string"
-        select="if (starts-with($value/@cpp, '{')) then $type || $value/@cpp else $type || '(' || $value/@cpp || ')'"/>
+        select="if (starts-with($value/@cpp, '{')) then $type || $value/@cpp else 'static_cast&lt;' || $type || '&gt;(' || $value/@cpp || ')'"/>
     <xsl:sequence select="if ($version eq '2') then 'rclcpp::Parameter(' || fp:cpp-string($value/@name) || ', ' || $typed || ')'
-        else '{' || fp:cpp-string(translate($value/@name, '.', '/')) || ', [](const std::string&amp; key) { ros::param::set(key, '
+        else '{' || fp:cpp-string(translate($value/@name, '.', '/')) || ', [](const std::string &amp; key) { ros::param::set(key, '
              || $typed || '); }}'"/>
   </xsl:function>
 
@@ -86,14 +86,18 @@
   </xsl:template>
 
   <!-- the main loop of a coordinator (after the initial job runs): $spin
-       runs the callbacks, which queue the events; switch(...) and
-       publish_job(...) are the version's own -->
+       runs the callbacks, which queue the events; $run-switch (a call of
+       found, the switch) and $publish-job (a call of job) are the version's
+       own; the log statements $info, $warn and $error ("ROS_INFO(") broken
+       where they would pass 100 columns -->
   <xsl:function name="fp:ros-job-event-loop" as="xs:string+">
     <xsl:param name="ok" as="xs:string"/>
     <xsl:param name="spin" as="xs:string"/>
     <xsl:param name="info" as="xs:string"/>
     <xsl:param name="warn" as="xs:string"/>
     <xsl:param name="error" as="xs:string"/>
+    <xsl:param name="run-switch" as="xs:string"/>
+    <xsl:param name="publish-job" as="xs:string"/>
     <xsl:sequence select="
         concat('  while (', $ok, ') {'),
         concat('    ', $spin, ';'),
@@ -103,19 +107,30 @@
         '    }',
         '    const std::string event = events.front();',
         '    events.pop_front();',
-        '    const auto found = std::find_if(kSwitches.begin(), kSwitches.end(),',
-        '                                    [&amp;](const Switch&amp; s) { return s.from == job &amp;&amp; s.event == event; });',
+        '    const auto found = std::find_if(',
+        '      kSwitches.begin(), kSwitches.end(),',
+        '      [&amp;](const Switch &amp; s) {return s.from == job &amp;&amp; s.event == event;});',
         '    if (found == kSwitches.end()) {',
-        concat('      ', $warn, '&quot;event %s: no switch from job %s&quot;, event.c_str(), job.c_str());'),
+        fp:ros-log(6, $warn, '&quot;event %s: no switch from job %s&quot;, event.c_str(), job.c_str());'),
         '      continue;',
         '    }',
-        '    if (!run_switch(*found)) {',
-        concat('      ', $error, '&quot;event %s: the switch from job %s to job %s failed&quot;, event.c_str(), job.c_str(), found-&gt;to.c_str());'),
+        '    if (!' || $run-switch || ') {',
+        fp:ros-log(6, $error, '&quot;event %s: the switch from job %s to job %s failed&quot;, event.c_str(), job.c_str(), found-&gt;to.c_str());'),
         '      continue;',
         '    }',
         '    job = found-&gt;to;',
-        concat('    ', $info, '&quot;job %s active (event %s)&quot;, job.c_str(), event.c_str());'),
-        '    publish_job(job);',
+        fp:ros-log(4, $info, '&quot;job %s active (event %s)&quot;, job.c_str(), event.c_str());'),
+        '    ' || $publish-job || ';',
         '  }'"/>
+  </xsl:function>
+
+  <!-- a log statement at $indent columns: macro and logger $log ("ROS_WARN(",
+       "RCLCPP_WARN(node->get_logger(), "), then $rest (message, arguments
+       and ");"), broken where it would pass 100 columns -->
+  <xsl:function name="fp:ros-log" as="xs:string+">
+    <xsl:param name="indent" as="xs:integer"/>
+    <xsl:param name="log" as="xs:string"/>
+    <xsl:param name="rest" as="xs:string"/>
+    <xsl:sequence select="fp:fit($indent, substring-before($log, '(') || '(', substring-after($log, '(') || $rest)"/>
   </xsl:function>
 </xsl:stylesheet>

@@ -29,7 +29,7 @@
                            library (cache variable as in the Orocos target)
     fp:yaml-string($s)     a YAML double-quoted scalar
     fp:yaml-mapping($values, $prefix)  parameter values as (nested) YAML lines
-    fp:parameter-assign($p, $type, $error)  a parameter's value into its member
+    fp:parameter-assign($p, $type, $error, $indent)  a parameter's value into its member
     fp:conversions-include($node)  the include of the message conversions, if used
     fp:ros-type-files($package)  include/<Type>.hpp, msg/<Type>.msg and
                            include/<pkg>/msg_conversions.hpp of the model's types
@@ -185,7 +185,7 @@
     <xsl:param name="names" as="xs:boolean"/>
     <xsl:sequence select="($s/r:result/r:message/@cpp-type, 'void')[1] || ' ' || $qualifier || $s/@name || '('
         || string-join($s/r:argument ! ((if (matches(r:message/@cpp-type, '^[a-z][a-z0-9_ ]*$')) then r:message/@cpp-type || ' '
-                                         else 'const ' || r:message/@cpp-type || '&amp; ')
+                                         else 'const ' || r:message/@cpp-type || ' &amp; ')
                                         || (if ($names) then @name else '/*' || @name || '*/')), ', ')
         || ')'"/>
   </xsl:function>
@@ -245,7 +245,7 @@
     <xsl:param name="msg" as="element(r:message)"/>
     <xsl:param name="var" as="xs:string"/>
     <xsl:param name="value" as="xs:string"/>
-    <xsl:sequence select="if ($msg/@generated eq 'true') then 'to_msg(' || $value || ', ' || $var || ');'
+    <xsl:sequence select="if ($msg/@generated eq 'true') then fp:fit(6, 'to_msg(', $value || ', ' || $var || ');') ! substring(., 7)
         else if ($msg/@sequence eq 'true')
         then ('const ' || $msg/@cpp-type || ' value = ' || $value || ';', $var || '.data.assign(value.begin(), value.end());',
               (: its layout: one dimension, named after the port, of the sample's size (issue 37: not empty) :)
@@ -328,7 +328,7 @@
     <xsl:param name="realizing-class" as="xs:string"/>
     <xsl:sequence select="(
         if (xs:boolean($port/@accessor-declared))
-        then concat('  ', $realizing-class, '::', $port/@accessor, '(', fp:from-msg($port/r:message, '(*msg)'), ');')
+        then fp:fit(2, $realizing-class || '::' || $port/@accessor || '(', fp:from-msg($port/r:message, '(*msg)') || ');')
         else concat('  (void)msg;  // ', $port/../r:realizing-class/@name, ' declares no ', $port/@accessor, '()'),
         '  if (period_ &lt;= 0.0) {',
         '    step();  // data-driven (period 0)',
@@ -347,7 +347,7 @@
   <xsl:function name="fp:ros-source-opening" as="xs:string+">
     <xsl:param name="node" as="element(r:node)"/>
     <xsl:sequence select="(fp:banner('// ', $fp:cpp-xsl, fp:what($node), false()),
-                           concat('#include &lt;', $node/@namespace, '/', $node/@class, '.hpp&gt;'))"/>
+                           concat('#include &quot;', $node/@namespace, '/', $node/@class, '.hpp&quot;'))"/>
   </xsl:function>
 
   <!-- package.xml up to the package's name (format 3) -->
@@ -373,17 +373,18 @@
         '# A folder with a CMakeLists.txt is built as an external project (a catkin / ament',
         '# package must not add_subdirectory() a folder outside itself); else a prebuilt',
         '# library is searched in the folder, its lib/ and build/.',
-        concat('set(', $lib/@cmake-var, ' &quot;', fp:library-dir($lib), '&quot; CACHE PATH'),
+        concat('set(', $lib/@cmake-var),
+        concat('    &quot;', fp:library-dir($lib), '&quot; CACHE PATH'),
         concat('    &quot;Directory of the atomic-code library ', $lib/@name, '&quot;)'),
         concat('if(NOT IS_DIRECTORY &quot;', $value, '&quot;)'),
-        concat('  message(FATAL_ERROR &quot;atomic-code library ', $lib/@name, ': no directory ', $value,
-               '; give its place with -D', $lib/@cmake-var, '=DIR&quot;)'),
+        concat('  message(FATAL_ERROR &quot;atomic-code library ', $lib/@name, ': no directory ', $value, '&quot;'),
+        concat('    &quot;; give its place with -D', $lib/@cmake-var, '=DIR&quot;)'),
         'endif()',
         concat('if(EXISTS &quot;', $value, '/CMakeLists.txt&quot;)'),
         '  include(ExternalProject)',
         concat('  set(', $var, '_LIBRARY'),
         concat('      &quot;', $bin, '/${CMAKE_STATIC_LIBRARY_PREFIX}', $lib/@target, '${CMAKE_STATIC_LIBRARY_SUFFIX}&quot;)'),
-        concat('  ExternalProject_Add(${PROJECT_NAME}_', $lib/@build-dir),
+        concat('  externalproject_add(${PROJECT_NAME}_', $lib/@build-dir),
         concat('    SOURCE_DIR &quot;', $value, '&quot;'),
         concat('    BINARY_DIR &quot;', $bin, '&quot;'),
         '    CMAKE_ARGS -DCMAKE_BUILD_TYPE=${CMAKE_BUILD_TYPE} -DCMAKE_POSITION_INDEPENDENT_CODE=ON',
@@ -394,11 +395,13 @@
         concat('  set(', $var, '_DEPENDS ${PROJECT_NAME}_', $lib/@build-dir, ')'),
         'else()',
         concat('  find_library(', $var, '_LIBRARY NAMES ', $lib/@target),
-        concat('    PATHS &quot;', $value, '&quot; &quot;', $value, '/lib&quot; &quot;', $value, '/build&quot; NO_DEFAULT_PATH)'),
+        concat('    PATHS &quot;', $value, '&quot; &quot;', $value, '/lib&quot;'),
+        concat('    &quot;', $value, '/build&quot; NO_DEFAULT_PATH)'),
         concat('  set(', $var, '_DEPENDS &quot;&quot;)'),
         concat('  if(NOT ', $var, '_LIBRARY)'),
-        concat('    message(FATAL_ERROR &quot;atomic-code library ', $lib/@name, ': neither a CMakeLists.txt nor a built library ',
-               $lib/@target, ' in ', $value, '; give its place with -D', $lib/@cmake-var, '=DIR&quot;)'),
+        concat('    message(FATAL_ERROR &quot;atomic-code library ', $lib/@name, ': neither a CMakeLists.txt&quot;'),
+        concat('      &quot; nor a built library ', $lib/@target, ' in ', $value, '&quot;'),
+        concat('      &quot;; give its place with -D', $lib/@cmake-var, '=DIR&quot;)'),
         '  endif()',
         'endif()',
         '# an imported target: the library and its include folders travel with the link,',
@@ -494,29 +497,35 @@
        $parameter, read into "value" as $param-type: a cast, an enumeration's
        literal by its name, an array's values (a fixed array: exactly its
        size); a value that does not fit is logged with $error ("ROS_ERROR(")
-       and the member keeps its value -->
+       and the member keeps its value; the lines indented by $indent, a
+       log statement broken where it would pass 100 columns -->
   <xsl:function name="fp:parameter-assign" as="xs:string+">
     <xsl:param name="parameter" as="element(r:parameter)"/>
     <xsl:param name="param-type" as="xs:string"/>
     <xsl:param name="error" as="xs:string"/>
+    <xsl:param name="indent" as="xs:integer"/>
     <xsl:variable name="member" as="xs:string" select="$parameter/../r:realizing-class/@cpp-name || '::' || $parameter/@member"/>
+    <xsl:variable name="log" as="xs:string" select="substring-before($error, '(') || '('"/>
+    <xsl:variable name="logger" as="xs:string" select="substring-after($error, '(')"/>
     <xsl:variable name="name" as="xs:string" select="fp:cpp-string($parameter/@name)"/>
-    <xsl:sequence select="
+    <xsl:sequence select="fp:indent($indent,
       if ($parameter/@kind eq 'enum') then (
         $parameter/r:choice ! ((if (position() eq 1) then 'if' else '} else if') || ' (value == ' || fp:cpp-string(@value) || ') {',
                                '  ' || $member || ' = ' || @cpp || ';'),
         '} else {',
-        '  ' || $error || '&quot;parameter %s: \&quot;%s\&quot; is none of ' || string-join($parameter/r:choice/@value, ', ')
-             || '&quot;, ' || $name || ', value.c_str());',
+        fp:fit($indent + 2, $log, $logger || '&quot;parameter %s: \&quot;%s\&quot; is none of '
+                                  || string-join($parameter/r:choice/@value, ', ') || '&quot;, ' || $name || ', value.c_str());')
+          ! substring(., $indent + 1),
         '}')
       else if ($parameter/@kind eq 'sequence') then (
         let $assign := if ($param-type eq $parameter/@cpp-type) then $member || ' = value;'
                        else $member || '.assign(value.begin(), value.end());'
         return if (empty($parameter/@size)) then $assign
         else ('if (value.size() == ' || $parameter/@size || ') {', '  ' || $assign, '} else {',
-              '  ' || $error || '&quot;parameter %s: %zu values, ' || $parameter/@size || ' expected&quot;, ' || $name || ', value.size());',
+              fp:fit($indent + 2, $log, $logger || '&quot;parameter %s: %zu values, ' || $parameter/@size || ' expected&quot;, '
+                                        || $name || ', value.size());') ! substring(., $indent + 1),
               '}'))
-      else $member || ' = ' || (if ($param-type eq $parameter/@cpp-type) then 'value' else 'static_cast&lt;' || $parameter/@cpp-type || '&gt;(value)') || ';'"/>
+      else $member || ' = ' || (if ($param-type eq $parameter/@cpp-type) then 'value' else 'static_cast&lt;' || $parameter/@cpp-type || '&gt;(value)') || ';')"/>
   </xsl:function>
 
   <!-- the include of the conversions a node with a port of a generated
@@ -524,7 +533,7 @@
   <xsl:function name="fp:conversions-include" as="xs:string?">
     <xsl:param name="node" as="element(r:node)"/>
     <xsl:sequence select="if ($node/(r:port, r:service, r:service-client)//r:message[@generated eq 'true'])
-                          then '#include &lt;' || $node/@namespace || '/msg_conversions.hpp&gt;' else ()"/>
+                          then '#include &quot;' || $node/@namespace || '/msg_conversions.hpp&quot;' else ()"/>
   </xsl:function>
 
   <!-- (header, C++ type) of a message or service type "pkg/Name" -->
@@ -586,14 +595,14 @@
         if ($types[@stamped eq 'true'] and $package/@ros-version ne '1') then '#include &lt;cmath&gt;' else (),
         $types ! ('#include &lt;' || @header || '&gt;'),
         $types ! ('#include &lt;' || fp:generated-msg(.)[1] || '&gt;'),
-        '', 'namespace ' || $package/@name || ' {', '',
+        '', 'namespace ' || $package/@name, '{', '',
         '// The model''s data types and enumerations (include/&lt;Type&gt;.hpp) to and from',
         '// their generated messages.',
         $types ! fp:conversion-functions(.),
         '',
         '/// The value of type Value that message m carries.',
-        'template &lt;typename Value, typename Message&gt;',
-        'Value from_msg_value(const Message&amp; m)',
+        'template&lt;typename Value, typename Message&gt;',
+        'Value from_msg_value(const Message &amp; m)',
         '{', '  Value v;', '  from_msg(m, v);', '  return v;', '}', '',
         '}  // namespace ' || $package/@name, '', '#endif  // ' || $guard))"/>
   </xsl:function>
@@ -603,11 +612,11 @@
     <xsl:variable name="msg" as="xs:string" select="fp:generated-msg($type)[2]"/>
     <xsl:variable name="empty" as="xs:string*" select="if ($type/self::r:struct[empty(r:field)]) then '  (void)m;' else ()"/>
     <xsl:sequence select="'',
-        'inline void from_msg(const ' || $msg || '&amp; m, ' || $type/@cpp-name || '&amp; v)', '{',
+        'inline void from_msg(const ' || $msg || ' &amp; m, ' || $type/@cpp-name || ' &amp; v)', '{',
         if ($type/self::r:enum) then '  v = static_cast&lt;' || $type/@cpp-name || '&gt;(m.value);'
         else ($empty, '  (void)v;'[exists($empty)], $type/r:field ! fp:field-conversion(., 'm', 'v', 'from_msg')),
         '}', '',
-        'inline void to_msg(const ' || $type/@cpp-name || '&amp; v, ' || $msg || '&amp; m)', '{',
+        'inline void to_msg(const ' || $type/@cpp-name || ' &amp; v, ' || $msg || ' &amp; m)', '{',
         if ($type/self::r:enum) then '  m.value = static_cast&lt;std::int32_t&gt;(v);'
         else ($empty, '  (void)v;'[exists($empty)], $type/r:field ! fp:field-conversion(., 'v', 'm', 'to_msg')),
         '}'"/>

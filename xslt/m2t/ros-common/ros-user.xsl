@@ -82,8 +82,8 @@
           'body': if ($bool) then '  return true;' else () }),
         $node/r:port[@direction eq 'in'] ! map {
           'group': 'input ports: the node hands each datum it receives, before update()',
-          'decl': 'void ' || @accessor || '(const ' || r:message/@cpp-type || '&amp; value)',
-          'head': 'void ' || $user || '::' || @accessor || '(const ' || r:message/@cpp-type || '&amp; /*value*/)',
+          'decl': 'void ' || @accessor || '(const ' || r:message/@cpp-type || ' &amp; value)',
+          'head': 'void ' || $user || '::' || @accessor || '(const ' || r:message/@cpp-type || ' &amp; /*value*/)',
           'body': '  // port ' || @name || ' (' || @interface || '::' || @datum || ')' },
         $node/r:port[@direction eq 'out'] ! map {
           'group': 'output ports: the node publishes what these return, after update()',
@@ -93,13 +93,13 @@
         $node/r:service[fp:is-own-service(.)] ! map {
           'group': 'services (~name, srv/' || @srv || '.srv): the node calls the operation for each request',
           'decl': fp:own-signature(., '', true()),
-          'head': fp:own-signature(., $user || '::', false()),
-          'body': r:result ! ('  return ' || r:message/@sample || ';') },
+          'head': fp:own-signature(., $user || '::', true()),
+          'body': (r:argument ! ('  (void)' || @name || ';'), r:result ! ('  return ' || r:message/@sample || ';')) },
         $node/r:service[not(fp:is-own-service(.))] ! (let $result := if (xs:boolean(@returns-bool)) then 'bool ' else 'void ' return map {
           'group': 'services (~name, std_srvs): the node calls the operation for each request',
           'decl': $result || @name || '(' || (if (@srv eq 'std_srvs/SetBool') then 'bool data' else '') || ')',
-          'head': $result || $user || '::' || @name || '(' || (if (@srv eq 'std_srvs/SetBool') then 'bool /*data*/' else '') || ')',
-          'body': if (xs:boolean(@returns-bool)) then '  return true;' else () })"/>
+          'head': $result || $user || '::' || @name || '(' || (if (@srv eq 'std_srvs/SetBool') then 'bool data' else '') || ')',
+          'body': (if (@srv eq 'std_srvs/SetBool') then '  (void)data;' else (), if (xs:boolean(@returns-bool)) then '  return true;' else ()) })"/>
   </xsl:function>
 
   <!-- the declarations of $hooks, $before and $after each, in their
@@ -145,7 +145,7 @@
         distinct-values($node//r:message[@generated eq 'false'][@field eq '']/@msg
                         ! concat('#include &lt;', fp:message-header(., $node/..), '&gt;')),
         '',
-        concat('namespace ', $node/@namespace, ' {'),
+        concat('namespace ', $node/@namespace), '{',
         '',
         '/**',
         concat(' * ', fp:doc-of($node, concat('The code of component ', $node/@name, '.'))),

@@ -46,6 +46,7 @@
         '',
         'set(CMAKE_CXX_STANDARD 14)',
         'set(CMAKE_CXX_STANDARD_REQUIRED ON)',
+        fp:cmake-warnings(),
         '',
         concat('find_package(catkin REQUIRED COMPONENTS ', string-join(($deps, if ($msgs) then 'message_generation' else ()), ' '), ')'),
         if ($msgs) then (

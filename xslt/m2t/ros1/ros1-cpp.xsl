@@ -286,7 +286,7 @@
           concat('    private_nh_.param&lt;', $parameter/@param1, '&gt;(', fp:cpp-string(translate($parameter/@name, '.', '/')), ', value, ',
                (if ($parameter/@param1 eq 'std::string') then concat('std::string(', $parameter/@cpp-default, ')')
                 else $parameter/@cpp-default), ');'),
-          fp:indent(4, fp:parameter-assign($parameter, $parameter/@param1, 'ROS_ERROR(')),
+          fp:parameter-assign($parameter, $parameter/@param1, 'ROS_ERROR(', 4),
           '  }'))"/>
   </xsl:function>
 

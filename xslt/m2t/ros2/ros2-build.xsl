@@ -15,6 +15,9 @@
   atomic-code library as in ROS 1; generated messages with
   rosidl_generate_interfaces. Headers install under include/<pkg>/ (the
   data types' include/<Type>.hpp too), exported as the include folder.
+  The option ROBOMDA_WARNINGS (on) adds -Wall -Wextra -Wpedantic; colcon
+  test runs ament_lint_common (fp:ros2-tests), package.xml test-depends on
+  it.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -47,6 +50,7 @@
         '',
         'set(CMAKE_CXX_STANDARD 17)',
         'set(CMAKE_CXX_STANDARD_REQUIRED ON)',
+        fp:cmake-warnings(),
         '',
         'find_package(ament_cmake REQUIRED)',
         $deps ! (concat('find_package(', ., ' REQUIRED)')),
@@ -60,17 +64,17 @@
         $package/r:library ! fp:library-external-project(.),
         '',
         '# every node class, as rclcpp components',
-        concat('add_library(', $lib, ' SHARED ', string-join(($package/r:node ! (concat('src/', @class, '.cpp'), fp:ros-user-sources(.)),
-                                                             $package/r:node[@lifecycle-type-name] ! concat('src/lifecycle/', @class, '.cpp')), ' '), ')'),
+        fp:cmake-call(0, 'add_library(' || $lib || ' SHARED', ($package/r:node ! (concat('src/', @class, '.cpp'), fp:ros-user-sources(.)),
+                                                            $package/r:node[@lifecycle-type-name] ! concat('src/lifecycle/', @class, '.cpp'))),
         concat('target_include_directories(', $lib, ' PUBLIC'),
         '  $&lt;BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include&gt;',
         '  $&lt;INSTALL_INTERFACE:include/${PROJECT_NAME}&gt;)',
-        concat('ament_target_dependencies(', $lib, ' ', string-join($deps, ' '), ')'),
+        fp:cmake-call(0, 'ament_target_dependencies(' || $lib, $deps),
         if ($msgs) then concat('target_link_libraries(', $lib, ' ${${PROJECT_NAME}_msgs_cpp})') else (),
         fp:library-depends($package/r:library, $lib),
         if ($package/r:library) then concat('target_link_libraries(', $lib, ' ', string-join(fp:library-vars($package/r:library), ' '), ')') else (),
-        concat('rclcpp_components_register_nodes(', $lib, ' ',
-               string-join(($package/r:node/@type-name, $package/r:node/@lifecycle-type-name) ! concat('&quot;', ., '&quot;'), ' '), ')'),
+        fp:cmake-call(0, 'rclcpp_components_register_nodes(' || $lib,
+                      ($package/r:node/@type-name, $package/r:node/@lifecycle-type-name) ! concat('&quot;', ., '&quot;')),
         for $n in $package/r:node return (
           '',
           concat('# node of component ', $n/@name),
@@ -92,9 +96,8 @@
         '  ARCHIVE DESTINATION lib',
         '  LIBRARY DESTINATION lib',
         '  RUNTIME DESTINATION bin)',
-        concat('install(TARGETS ', string-join(($package/r:node/@executable, $package/r:coordinator/@executable,
-                                                   $package/r:host[@lifecycle-manager][1] ! 'lifecycle_manager'), ' ')),
-        '  DESTINATION lib/${PROJECT_NAME})',
+        fp:cmake-call(0, 'install(TARGETS', ($package/r:node/@executable, $package/r:coordinator/@executable,
+                                             $package/r:host[@lifecycle-manager][1] ! 'lifecycle_manager', 'DESTINATION lib/${PROJECT_NAME}')),
         '# headers under include/${PROJECT_NAME}/: in a merged install, two packages'' data types',
         '# of one name (include/${PROJECT_NAME}/Type.hpp) stay apart',
         'install(DIRECTORY include/ DESTINATION include/${PROJECT_NAME})',
@@ -102,7 +105,32 @@
         '  DESTINATION share/${PROJECT_NAME})',
         'ament_export_include_directories(&quot;include/${PROJECT_NAME}&quot;)',
         '',
+        fp:ros2-tests($package),
+        '',
         'ament_package()'))"/>
+  </xsl:function>
+
+  <!-- colcon test: ROS 2's linters (ament_lint_common); without a copyright
+       notice ament_copyright accepts (f:copyright-checkable: a maintainer,
+       a year and a license licenses.xml has), ament_copyright is left out,
+       and without any notice cpplint's legal/copyright check too -->
+  <xsl:function name="fp:ros2-tests" as="xs:string+">
+    <xsl:param name="package" as="element(r:package)"/>
+    <xsl:variable name="notice" as="xs:boolean" select="normalize-space($maintainer-name) ne ''"/>
+    <xsl:sequence select="
+        '# colcon test: ROS 2''s linters (ament_lint_common)',
+        'if(BUILD_TESTING)',
+        '  find_package(ament_lint_auto REQUIRED)',
+        if (f:copyright-checkable()) then () else (
+          '  # no copyright notice ament_copyright recognises: generate with --maintainer and a',
+          '  # --license whose notice robomda writes (' || string-join($fp:license-notices/@spdx, ', ') || ')',
+          '  list(APPEND AMENT_LINT_AUTO_EXCLUDE ament_cmake_copyright)'),
+        if ($notice) then () else (
+          '  # no copyright line either: cpplint runs without its legal/copyright check',
+          '  list(APPEND AMENT_LINT_AUTO_EXCLUDE ament_cmake_cpplint)'),
+        '  ament_lint_auto_find_test_dependencies()',
+        if ($notice) then () else '  ament_cpplint(FILTERS &quot;-legal/copyright&quot;)',
+        'endif()'"/>
   </xsl:function>
 
   <xsl:function name="fp:ros2-package-xml" as="xs:string">
@@ -119,6 +147,9 @@
         if ($msgs) then ('  &lt;exec_depend&gt;rosidl_default_runtime&lt;/exec_depend&gt;',
                          '  &lt;member_of_group&gt;rosidl_interface_packages&lt;/member_of_group&gt;') else (),
         '  &lt;exec_depend&gt;ros2launch&lt;/exec_depend&gt;',
+        '',
+        '  &lt;test_depend&gt;ament_lint_auto&lt;/test_depend&gt;',
+        '  &lt;test_depend&gt;ament_lint_common&lt;/test_depend&gt;',
         '',
         '  &lt;export&gt;',
         '    &lt;build_type&gt;ament_cmake&lt;/build_type&gt;',

@@ -39,20 +39,19 @@
     <xsl:sequence select="fp:lines((
         fp:ros-header-opening($node),
         '',
-        '#include &lt;rclcpp/rclcpp.hpp&gt;',
-        fp:ros2-includes($node),
+        fp:ros2-includes($node, (), ()),
         '',
-        concat('namespace ', $package, ' {'),
+        concat('namespace ', $package), '{',
         '',
         '/**',
         concat(' * ', fp:doc-of($node, concat('ROS 2 node of component ', $node/@name, '.'))),
         concat(' * Wraps the atomic code ', $node/r:realizing-class/@cpp-name, ' (seed 000, R1); a component'),
         concat(' * (rclcpp_components) named ', $node/@type-name, '.'),
         ' */',
-        concat('class ', $class, ' : public rclcpp::Node, public ', $node/r:realizing-class/@cpp-name),
+        fp:class-line($class, 'rclcpp::Node', $node/r:realizing-class/@cpp-name),
         '{',
         'public:',
-        concat('  explicit ', $class, '(const rclcpp::NodeOptions&amp; options = rclcpp::NodeOptions());'),
+        concat('  explicit ', $class, '(const rclcpp::NodeOptions &amp; options = rclcpp::NodeOptions());'),
         concat('  ~', $class, '() override;'),
         fp:client-overrides($node),
         '',
@@ -65,18 +64,26 @@
         concat('#endif  // ', fp:guard($package, $class))))"/>
   </xsl:function>
 
-  <!-- the includes of a node's header after rclcpp's: its messages and
-       services, the realizing class, the message conversions -->
+  <!-- the includes of a node's header in cpplint's order: the standard
+       library's (and $std, each "<name>"), then rclcpp's and the $others
+       (paths), its messages and services, the realizing class, the message
+       conversions -->
   <xsl:function name="fp:ros2-includes" as="xs:string*">
     <xsl:param name="node" as="element(r:node)"/>
+    <xsl:param name="std" as="xs:string*"/>
+    <xsl:param name="others" as="xs:string*"/>
     <xsl:variable name="package" as="xs:string" select="$node/@namespace"/>
     <xsl:sequence select="(
-        distinct-values(($node/r:port/r:message/@msg ! (concat('#include &lt;', fp:ros2-type(., $package, 'msg')[1], '&gt;')),
-                         ($node/r:service/@srv, $node/r:service-client/@srv) ! (concat('#include &lt;', fp:ros2-type(., $package, 'srv')[1], '&gt;')))),
         '#include &lt;memory&gt;',
         if (fp:answers($node)) then '#include &lt;mutex&gt;' else (),
         '#include &lt;string&gt;',
-        concat('#include &lt;', $node/r:realizing-class/@header, '&gt;'), fp:conversions-include($node))"/>
+        $std ! ('#include ' || .),
+        '',
+        '#include &quot;rclcpp/rclcpp.hpp&quot;',
+        $others ! ('#include &quot;' || . || '&quot;'),
+        distinct-values(($node/r:port/r:message/@msg ! (concat('#include &quot;', fp:ros2-type(., $package, 'msg')[1], '&quot;')),
+                         ($node/r:service/@srv, $node/r:service-client/@srv) ! (concat('#include &quot;', fp:ros2-type(., $package, 'srv')[1], '&quot;')))),
+        concat('#include &quot;', $node/r:realizing-class/@header, '&quot;'), fp:conversions-include($node))"/>
   </xsl:function>
 
   <!-- the clients of services of the package's own with a result whose
@@ -96,8 +103,7 @@
     <xsl:sequence select="(
         '  void step();',
         $node/r:port[@direction eq 'in'] ! (concat('  void on_', @name, '(const ', fp:ros2-type(r:message/@msg, $package, 'msg')[2], '::ConstSharedPtr msg);')),
-        $node/r:service ! (concat('  void on_', @name, '(const std::shared_ptr&lt;', fp:ros2-type(@srv, $package, 'srv')[2], '::Request&gt; request,'),
-                        concat('    std::shared_ptr&lt;', fp:ros2-type(@srv, $package, 'srv')[2], '::Response&gt; response);')),
+        $node/r:service ! ('  void on_' || @name || '(', fp:indent(2, fp:ros2-service-parameters(., ('request', 'response'), ');'))),
         '',
         $node/r:port[@direction eq 'out'] ! (concat('  ', $publisher, '&lt;', fp:ros2-type(r:message/@msg, $package, 'msg')[2], '&gt;::SharedPtr ', @member, ';')),
         $node/r:port[@direction eq 'in'] ! (concat('  rclcpp::Subscription&lt;', fp:ros2-type(r:message/@msg, $package, 'msg')[2], '&gt;::SharedPtr ', @member, ';')),
@@ -121,13 +127,15 @@
         '#include &lt;cstdint&gt;',
         '#include &lt;functional&gt;',
         '#include &lt;stdexcept&gt;',
-        '#include &lt;rclcpp_components/register_node_macro.hpp&gt;',
         '',
-        concat('namespace ', $package, ' {'),
+        '#include &quot;rclcpp_components/register_node_macro.hpp&quot;',
         '',
-        concat($class, '::', $class, '(const rclcpp::NodeOptions&amp; options)'),
-        concat('  : rclcpp::Node(', fp:cpp-string($node/@default-name), ', options), period_(',
-               fp:double-literal($node/@period), '), running_(false)'),
+        concat('namespace ', $package), '{',
+        '',
+        concat($class, '::', $class, '(const rclcpp::NodeOptions &amp; options)'),
+        concat(': rclcpp::Node(', fp:cpp-string($node/@default-name), ', options),'),
+        concat('  period_(', fp:double-literal($node/@period), '),'),
+        '  running_(false)',
         '{',
         fp:ros2-constructor($node),
         '}',
@@ -164,17 +172,18 @@
     <xsl:sequence select="(
         '  // parameters (R4), declared with their type and the model default',
         for $p in $node/r:parameter return
-        let $read := concat('this->declare_parameter&lt;', $p/@param2, '&gt;(', fp:cpp-string($p/@name), ', ',
-                            (if ($p/@param2 eq 'std::string') then concat('std::string(', $p/@cpp-default, ')')
-                             (: a braced list names its type: an empty brace alone also converts to a ParameterDescriptor :)
-                             else if (starts-with($p/@cpp-default, '{')) then concat($p/@param2, $p/@cpp-default)
-                             else $p/@cpp-default), ')')
+        let $declare := 'this->declare_parameter&lt;' || $p/@param2 || '&gt;('
+        , $arguments := fp:cpp-string($p/@name) || ', '
+                          || (if ($p/@param2 eq 'std::string') then concat('std::string(', $p/@cpp-default, ')')
+                              (: a braced list names its type: an empty brace alone also converts to a ParameterDescriptor :)
+                              else if (starts-with($p/@cpp-default, '{')) then concat($p/@param2, $p/@cpp-default)
+                              else $p/@cpp-default) || ')'
+        , $member := $realizing-class || '::' || $p/@member || ' = '
         return if ($p/@kind = ('enum', 'sequence'))
-          then ('  {', '    const ' || $p/@param2 || ' value = ' || $read || ';',
-                fp:indent(4, fp:parameter-assign($p, $p/@param2, 'RCLCPP_ERROR(this->get_logger(), ')), '  }')
-          else concat('  ', $realizing-class, '::', $p/@member, ' = ',
-             (if ($p/@param2 eq $p/@cpp-type) then '' else concat('static_cast&lt;', $p/@cpp-type, '&gt;(')),
-             $read, (if ($p/@param2 eq $p/@cpp-type) then '' else ')'), ';'),
+          then ('  {', fp:fit(4, 'const ' || $p/@param2 || ' value = ' || $declare, $arguments || ';'),
+                fp:parameter-assign($p, $p/@param2, 'RCLCPP_ERROR(this->get_logger(), ', 4), '  }')
+          else if ($p/@param2 eq $p/@cpp-type) then fp:fit(2, $member || $declare, $arguments || ';')
+          else fp:fit(2, $member || 'static_cast&lt;' || $p/@cpp-type || '&gt;(', $declare || $arguments || ');'),
         '  period_ = this->declare_parameter&lt;double&gt;(&quot;update_period&quot;, period_);')"/>
   </xsl:function>
 
@@ -211,13 +220,13 @@
         $node/r:port[@direction eq 'in'] ! (
             concat('  ', @member, ' = this->create_subscription&lt;', fp:ros2-type(r:message/@msg, $package, 'msg')[2], '&gt;('),
             concat('    ', fp:cpp-string(@topic), ', ', fp:ros2-qos(r:qos), ','),
-            concat('    std::bind(&amp;', $class, '::on_', @name, ', this, std::placeholders::_1));')),
+            fp:fit(4, 'std::bind(', '&amp;' || $class || '::on_' || @name || ', this, std::placeholders::_1));')),
         $node/r:service ! (
             concat('  ', @member, ' = this->create_service&lt;', fp:ros2-type(@srv, $package, 'srv')[2], '&gt;('),
-            concat('    ', fp:cpp-string(concat('~/', @name)), ', std::bind(&amp;', $class, '::on_', @name,
-                   ', this, std::placeholders::_1, std::placeholders::_2));')),
-        $node/r:service-client ! concat('  ', @member, ' = this->create_client&lt;', fp:ros2-type(@srv, $package, 'srv')[2], '&gt;(',
-                   fp:cpp-string(@name), ');'))"/>
+            concat('    ', fp:cpp-string(concat('~/', @name)), ','),
+            fp:fit(4, 'std::bind(', '&amp;' || $class || '::on_' || @name || ', this, std::placeholders::_1, std::placeholders::_2));')),
+        $node/r:service-client ! fp:fit(2, @member || ' = this->create_client&lt;' || fp:ros2-type(@srv, $package, 'srv')[2] || '&gt;(',
+                                        fp:cpp-string(@name) || ');'))"/>
   </xsl:function>
 
   <!-- the timer that runs step(), when the node has a period: on the node's
@@ -256,11 +265,8 @@
           '}'),
         for $service in $node/r:service return (
           '',
-          concat('void ', $class, '::on_', $service/@name, '(const std::shared_ptr&lt;',
-                 fp:ros2-type($service/@srv, $node/@namespace, 'srv')[2], '::Request&gt; ',
-               fp:service-callback-names($service)[1], ','),
-          concat('  std::shared_ptr&lt;', fp:ros2-type($service/@srv, $node/@namespace, 'srv')[2], '::Response&gt; ',
-               fp:service-callback-names($service)[2], ')'),
+          'void ' || $class || '::on_' || $service/@name || '(',
+          fp:ros2-service-parameters($service, fp:service-callback-names($service)[not(starts-with(., '/*'))], ')'),
           '{',
           fp:service-body($service, $realizing-class, '-&gt;'),
           '}'),
@@ -271,8 +277,8 @@
           if (fp:is-own-service($client)) then fp:ros2-own-call($client, $node) else (
           '  // asynchronous: a node must not wait for a service inside its own callback; the call is sent',
           concat('  if (!', $client/@member, '-&gt;service_is_ready()) {'),
-          concat('    RCLCPP_WARN(get_logger(), &quot;service %s (', $client/@service, ') is not available&quot;, ',
-                 $client/@member, '-&gt;get_service_name());'),
+          fp:fit(4, 'RCLCPP_WARN(', 'get_logger(), &quot;service %s (' || $client/@service || ') is not available&quot;, '
+                 || $client/@member || '-&gt;get_service_name());'),
           if (xs:boolean($client/@returns-bool)) then '    return false;' else '    return;',
           '  }',
           concat('  auto request = std::make_shared&lt;', fp:ros2-type($client/@srv, $node/@namespace, 'srv')[2], '::Request&gt;();'),
@@ -280,6 +286,30 @@
           concat('  ', $client/@member, '-&gt;async_send_request(request);'),
           if (xs:boolean($client/@returns-bool)) then '  return true;  // sent (the answer is not awaited)' else ()),
           '}'))"/>
+  </xsl:function>
+
+  <!-- the line that opens the declaration of node class $class, a $base
+       and the realizing class $rc: both bases on it when it fits in 100
+       columns, else the second on the next line -->
+  <xsl:function name="fp:class-line" as="xs:string+">
+    <xsl:param name="class" as="xs:string"/>
+    <xsl:param name="base" as="xs:string"/>
+    <xsl:param name="rc" as="xs:string"/>
+    <xsl:variable name="line" as="xs:string" select="'class ' || $class || ' : public ' || $base || ', public ' || $rc"/>
+    <xsl:sequence select="if (string-length($line) le 100) then $line
+                          else ('class ' || $class || ' : public ' || $base || ',', '  public ' || $rc)"/>
+  </xsl:function>
+
+  <!-- the parameters of the callback of $service, a line each after the
+       line that opens them, indented by 2: (request, response), each named
+       when in $names (a callback names only those it uses), $end after -->
+  <xsl:function name="fp:ros2-service-parameters" as="xs:string+">
+    <xsl:param name="service" as="element(r:service)"/>
+    <xsl:param name="names" as="xs:string*"/>
+    <xsl:param name="end" as="xs:string"/>
+    <xsl:variable name="srv" as="xs:string" select="fp:ros2-type($service/@srv, $service/../@namespace, 'srv')[2]"/>
+    <xsl:sequence select="'  const std::shared_ptr&lt;' || $srv || '::Request&gt;' || ' request'[. = $names] || ',',
+                          '  std::shared_ptr&lt;' || $srv || '::Response&gt;' || ' response'[. = $names] || $end"/>
   </xsl:function>
 
   <!-- the body of the method that calls $client, a service of the
@@ -302,9 +332,9 @@
               '      ' || $answer || ' = ' || fp:from-msg($client/r:result/r:message, 'future.get()-&gt;' || $client/r:result/@field) || ';',
               '    });')
         else '  ' || $client/@member || '-&gt;async_send_request(request_msg);'"/>
-    <xsl:variable name="unavailable" as="xs:string"
-        select="'    RCLCPP_WARN(get_logger(), &quot;service %s (' || $client/@service || ') is not available&quot;, '
-                || $client/@member || '-&gt;get_service_name());'"/>
+    <xsl:variable name="unavailable" as="xs:string+"
+        select="fp:fit(4, 'RCLCPP_WARN(', 'get_logger(), &quot;service %s (' || $client/@service || ') is not available&quot;, '
+                || $client/@member || '-&gt;get_service_name());')"/>
     <xsl:sequence select="
         '  // asynchronous: a node must not wait for a service inside its own callback; the call is sent',
         $client/r:result ! '  // and the latest answer received is returned (the default until the first)',
@@ -319,11 +349,11 @@
     <xsl:param name="node" as="element(r:node)"/>
     <xsl:sequence select="fp:lines((
         fp:banner('// ', $fp:cpp-xsl, fp:what($node), false()),
-        concat('#include &lt;', $node/@namespace, '/', $node/@class, '.hpp&gt;'),
-        '',
         '#include &lt;memory&gt;',
         '',
-        'int main(int argc, char** argv)',
+        concat('#include &quot;', $node/@namespace, '/', $node/@class, '.hpp&quot;'),
+        '',
+        'int main(int argc, char ** argv)',
         '{',
         '  rclcpp::init(argc, argv);',
         concat('  rclcpp::spin(std::make_shared&lt;', $node/@type-name, '&gt;());'),

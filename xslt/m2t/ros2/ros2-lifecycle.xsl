@@ -54,19 +54,17 @@
     <xsl:param name="node" as="element(r:node)"/>
     <xsl:variable name="class" as="xs:string" select="$node/@class"/>
     <xsl:variable name="package" as="xs:string" select="$node/@namespace"/>
-    <xsl:variable name="guard" as="xs:string" select="fp:guard($package || '_lifecycle', $class)"/>
+    <xsl:variable name="guard" as="xs:string" select="fp:guard($package || '/lifecycle', $class)"/>
     <xsl:variable name="rc" as="xs:string" select="$node/r:realizing-class/@cpp-name"/>
     <xsl:sequence select="fp:lines((
         fp:banner('// ', $fp:lifecycle-xsl, fp:what($node), false()),
         concat('#ifndef ', $guard), concat('#define ', $guard),
         '',
-        '#include &lt;rclcpp/rclcpp.hpp&gt;',
-        '#include &lt;rclcpp_lifecycle/lifecycle_node.hpp&gt;',
-        '#include &lt;rclcpp_lifecycle/lifecycle_publisher.hpp&gt;',
-        fp:ros2-includes($node),
+        fp:ros2-includes($node, '&lt;vector&gt;'[fp:ros-switched($node)],
+                         ('rclcpp_lifecycle/lifecycle_node.hpp', 'rclcpp_lifecycle/lifecycle_publisher.hpp')),
         '',
-        concat('namespace ', $package, ' {'),
-        'namespace lifecycle {',
+        concat('namespace ', $package), '{',
+        'namespace lifecycle', '{',
         '',
         '/**',
         concat(' * ', fp:doc-of($node, concat('ROS 2 node of component ', $node/@name, '.'))),
@@ -75,22 +73,24 @@
         ' * cleanup() when cleaned up; it publishes and runs update() only while active.',
         concat(' * A component (rclcpp_components) named ', $node/@lifecycle-type-name, '.'),
         ' */',
-        concat('class ', $class, ' : public rclcpp_lifecycle::LifecycleNode, public ', $rc),
+        fp:class-line($class, 'rclcpp_lifecycle::LifecycleNode', $rc),
         '{',
         'public:',
         '  using CallbackReturn = rclcpp_lifecycle::node_interfaces::LifecycleNodeInterface::CallbackReturn;',
         '',
-        concat('  explicit ', $class, '(const rclcpp::NodeOptions&amp; options = rclcpp::NodeOptions());'),
+        concat('  explicit ', $class, '(const rclcpp::NodeOptions &amp; options = rclcpp::NodeOptions());'),
         concat('  ~', $class, '() override;'),
         '',
         ('configure', 'activate', 'deactivate', 'cleanup', 'shutdown')
-          ! concat('  CallbackReturn on_', ., '(const rclcpp_lifecycle::State&amp; previous_state) override;'),
+          ! concat('  CallbackReturn on_', ., '(const rclcpp_lifecycle::State &amp; previous_state) override;'),
         fp:client-overrides($node),
         '',
         'private:',
         fp:ros2-members($node, 'rclcpp_lifecycle::LifecyclePublisher'),
         '  bool configured_;',
-        if (fp:ros-switched($node)) then '  rclcpp::node_interfaces::PostSetParametersCallbackHandle::SharedPtr post_set_parameters_;' else (),
+        if (fp:ros-switched($node))
+        then ('  void on_parameters_set(const std::vector&lt;rclcpp::Parameter&gt; &amp; parameters);',
+              '  rclcpp::node_interfaces::PostSetParametersCallbackHandle::SharedPtr post_set_parameters_;') else (),
         '};',
         '',
         '}  // namespace lifecycle',
@@ -118,15 +118,20 @@
         '#include &lt;lifecycle_msgs/msg/state.hpp&gt;',
         '#include &lt;rclcpp_components/register_node_macro.hpp&gt;',
         '',
-        concat('namespace ', $package, ' {'),
-        'namespace lifecycle {',
+        concat('namespace ', $package), '{',
+        'namespace lifecycle', '{',
         '',
-        concat($class, '::', $class, '(const rclcpp::NodeOptions&amp; options)'),
-        concat('  : rclcpp_lifecycle::LifecycleNode(', fp:cpp-string($node/@default-name), ', options), period_(',
-               fp:double-literal($node/@period), '), running_(false), configured_(false)'),
+        concat($class, '::', $class, '(const rclcpp::NodeOptions &amp; options)'),
+        concat(': rclcpp_lifecycle::LifecycleNode(', fp:cpp-string($node/@default-name), ', options),'),
+        concat('  period_(', fp:double-literal($node/@period), '),'),
+        '  running_(false),',
+        '  configured_(false)',
         '{',
         fp:ros2-parameters($node),
-        if (fp:ros-switched($node)) then fp:ros2-post-set-parameters($node) else (),
+        if (fp:ros-switched($node))
+        then ('  // values a job switch sets (docs/jobs.md): into the atomic code at once, active or not',
+              '  post_set_parameters_ = add_post_set_parameters_callback(',
+              fp:fit(4, 'std::bind(', '&amp;' || $class || '::on_parameters_set, this, std::placeholders::_1));')) else (),
         '}',
         '',
         concat($class, '::~', $class, '()'),
@@ -134,7 +139,8 @@
         '  // finalized before it goes (its container stopping): on_shutdown winds the atomic code down;',
         '  // not once the context has shut down (Ctrl-C): the transition could not publish its event',
         '  if (get_node_base_interface()-&gt;get_context()-&gt;is_valid() &amp;&amp;',
-        '      get_current_state().id() != lifecycle_msgs::msg::State::PRIMARY_STATE_FINALIZED) {',
+        '    get_current_state().id() != lifecycle_msgs::msg::State::PRIMARY_STATE_FINALIZED)',
+        '  {',
         '    shutdown();',
         '  }',
         '  // and so here, where that transition could not run (the context already shut down)',
@@ -159,6 +165,7 @@
         fp:ros-step($node, $publishers ! fp:ros2-type(r:message/@msg, $package, 'msg')[2], '-&gt;publish'),
         '}',
         fp:ros2-callbacks($node),
+        if (fp:ros-switched($node)) then fp:ros2-post-set-parameters($node) else (),
         '',
         '}  // namespace lifecycle',
         concat('}  // namespace ', $package),
@@ -166,21 +173,23 @@
         concat('RCLCPP_COMPONENTS_REGISTER_NODE(', $node/@lifecycle-type-name, ')')))"/>
   </xsl:function>
 
-  <!-- the parameter callback of a node whose values a job switch sets: each
-       new value goes into the atomic code's member at once -->
+  <!-- the parameter callback (a method) of a node whose values a job
+       switch sets: each new value goes into the atomic code's member at
+       once -->
   <xsl:function name="fp:ros2-post-set-parameters" as="xs:string+">
     <xsl:param name="node" as="element(r:node)"/>
     <xsl:sequence select="
-        '  // values a job switch sets (docs/jobs.md): into the atomic code at once, active or not',
-        '  post_set_parameters_ = add_post_set_parameters_callback([this](const std::vector&lt;rclcpp::Parameter&gt;&amp; parameters) {',
-        '    for (const auto&amp; parameter : parameters) {',
+        '',
+        'void ' || $node/@class || '::on_parameters_set(const std::vector&lt;rclcpp::Parameter&gt; &amp; parameters)',
+        '{',
+        '  for (const auto &amp; parameter : parameters) {',
         for $k in 1 to count($node/r:parameter) return let $p := $node/r:parameter[$k] return (
-          concat('      ', if ($k eq 1) then '' else '} else ', 'if (parameter.get_name() == ', fp:cpp-string($p/@name), ') {'),
-          concat('        const auto value = parameter.get_value&lt;', $p/@param2, '&gt;();'),
-          fp:indent(8, fp:parameter-assign($p, $p/@param2, 'RCLCPP_ERROR(get_logger(), '))),
-        if ($node/r:parameter) then '      }' else (),
-        '    }',
-        '  });'"/>
+          concat('    ', if ($k eq 1) then '' else '} else ', 'if (parameter.get_name() == ', fp:cpp-string($p/@name), ') {'),
+          concat('      const auto value = parameter.get_value&lt;', $p/@param2, '&gt;();'),
+          fp:parameter-assign($p, $p/@param2, 'RCLCPP_ERROR(get_logger(), ', 6)),
+        if ($node/r:parameter) then '    }' else (),
+        '  }',
+        '}'"/>
   </xsl:function>
 
   <!-- on_configure: each configuration constant («Constant» input, seed
@@ -197,14 +206,18 @@
       <xsl:sequence select="
           concat('  {  // configuration constant ', @name, ': read before configure()'),
           '    rclcpp::SubscriptionOptions options;',
-          '    options.callback_group = create_callback_group(rclcpp::CallbackGroupType::MutuallyExclusive, false);',
-          concat('    auto constant = create_subscription&lt;', $type, '&gt;(', fp:cpp-string(@topic), ', ', fp:ros2-qos(r:qos), ','),
+          '    options.callback_group = create_callback_group(',
+          '      rclcpp::CallbackGroupType::MutuallyExclusive, false);',
+          concat('    auto constant = create_subscription&lt;', $type, '&gt;('),
+          concat('      ', fp:cpp-string(@topic), ', ', fp:ros2-qos(r:qos), ','),
           concat('      [](', $type, '::ConstSharedPtr) {}, options);'),
           '    rclcpp::WaitSet wait_set;',
           '    wait_set.add_subscription(constant);',
           concat('    auto msg = std::make_shared&lt;', $type, '&gt;();'),
           '    rclcpp::MessageInfo info;',
-          '    if (wait_set.wait(std::chrono::seconds(10)).kind() != rclcpp::WaitResultKind::Ready || !constant-&gt;take(*msg, info)) {',
+          '    if (wait_set.wait(std::chrono::seconds(10)).kind() != rclcpp::WaitResultKind::Ready ||',
+          '      !constant-&gt;take(*msg, info))',
+          '    {',
           '      RCLCPP_ERROR(get_logger(), &quot;no configuration constant on %s&quot;, constant-&gt;get_topic_name());',
           '      return CallbackReturn::FAILURE;',
           '    }',
@@ -221,8 +234,8 @@
     <xsl:param name="class" as="xs:string"/>
     <xsl:param name="name" as="xs:string"/>
     <xsl:param name="body" as="xs:string*"/>
-    <xsl:sequence select="'', concat($class, '::CallbackReturn ', $class, '::on_', $name,
-                                     '(const rclcpp_lifecycle::State&amp; /*previous_state*/)'),
+    <xsl:sequence select="'', fp:fit(0, $class || '::CallbackReturn ' || $class || '::on_' || $name || '(',
+                                     'const rclcpp_lifecycle::State &amp;)'),
                           '{', $body, '  return CallbackReturn::SUCCESS;', '}'"/>
   </xsl:function>
 
@@ -263,17 +276,18 @@
         '',
         fp:ros2-change-state(),
         '',
-        'int main(int argc, char** argv)',
+        'int main(int argc, char ** argv)',
         '{',
         '  rclcpp::init(argc, argv);',
         '  auto node = std::make_shared&lt;rclcpp::Node&gt;(&quot;lifecycle_manager&quot;);',
-        '  const auto names = node-&gt;declare_parameter&lt;std::vector&lt;std::string&gt;&gt;(&quot;node_names&quot;, std::vector&lt;std::string&gt;{});',
+        '  const auto names = node-&gt;declare_parameter&lt;std::vector&lt;std::string&gt;&gt;(',
+        '    &quot;node_names&quot;, std::vector&lt;std::string&gt;{});',
         '  const std::chrono::seconds timeout(node-&gt;declare_parameter&lt;std::int64_t&gt;(&quot;timeout&quot;, 30));',
         '  bool ok = true;',
-        '  for (const auto&amp; name : names) {',
+        '  for (const auto &amp; name : names) {',
         '    ok = ok &amp;&amp; change_state(node, name, Transition::TRANSITION_CONFIGURE, &quot;configure&quot;, timeout);',
         '  }',
-        '  for (const auto&amp; name : names) {',
+        '  for (const auto &amp; name : names) {',
         '    ok = ok &amp;&amp; change_state(node, name, Transition::TRANSITION_ACTIVATE, &quot;activate&quot;, timeout);',
         '  }',
         '  if (ok) {',
@@ -294,19 +308,22 @@
         'using lifecycle_msgs::srv::ChangeState;',
         '',
         '// asks node `target` (fully qualified) for `transition`; false when it refuses or does not answer',
-        'bool change_state(const rclcpp::Node::SharedPtr&amp; node, const std::string&amp; target, std::uint8_t transition,',
-        '                  const char* label, std::chrono::seconds timeout)',
+        'bool change_state(',
+        '  const rclcpp::Node::SharedPtr &amp; node, const std::string &amp; target, std::uint8_t transition,',
+        '  const char * label, std::chrono::seconds timeout)',
         '{',
         '  auto client = node-&gt;create_client&lt;ChangeState&gt;(target + &quot;/change_state&quot;);',
         '  if (!client-&gt;wait_for_service(timeout)) {',
-        '    RCLCPP_ERROR(node-&gt;get_logger(), &quot;%s: no change_state service after %lld s&quot;, target.c_str(),',
-        '                 static_cast&lt;long long&gt;(timeout.count()));',
+        '    RCLCPP_ERROR(',
+        '      node-&gt;get_logger(), &quot;%s: no change_state service after %d s&quot;, target.c_str(),',
+        '      static_cast&lt;int&gt;(timeout.count()));',
         '    return false;',
         '  }',
         '  auto request = std::make_shared&lt;ChangeState::Request&gt;();',
         '  request-&gt;transition.id = transition;',
         '  auto future = client-&gt;async_send_request(request);',
-        '  if (rclcpp::spin_until_future_complete(node, future, timeout) != rclcpp::FutureReturnCode::SUCCESS) {',
+        '  const auto answer = rclcpp::spin_until_future_complete(node, future, timeout);',
+        '  if (answer != rclcpp::FutureReturnCode::SUCCESS) {',
         '    RCLCPP_ERROR(node-&gt;get_logger(), &quot;%s: %s did not answer&quot;, target.c_str(), label);',
         '    return false;',
         '  }',
