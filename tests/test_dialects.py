@@ -532,14 +532,15 @@ def test_a_p4r_query_is_a_ros_service_of_the_package_own(target: str, srv: str, 
     assert lines == ["Boxes request", "---", "Verdict answer"]
     cmake = (out / "CMakeLists.txt").read_text(encoding="utf-8")
     assert ('"srv/Classify.srv"' if target == "ros2" else "add_service_files(FILES Classify.srv)") in cmake
-    assert f"#include <{srv}>" in (out / "include" / "p4r" / "Logger.hpp").read_text(encoding="utf-8")
+    include = f'#include "{srv}"' if target == "ros2" else f"#include <{srv}>"  # ROS 2: cpplint's style
+    assert include in (out / "include" / "p4r" / "Logger.hpp").read_text(encoding="utf-8")
     logger = (out / "src" / "Logger.cpp").read_text(encoding="utf-8")
     assert "Classify(from_msg_value<::p4r::types::Boxes>(request" in logger and "answer);" in logger
     detector = (out / "src" / "Detector.cpp").read_text(encoding="utf-8")
-    assert "::p4r::types::Verdict Detector::Classify(const ::p4r::types::Boxes& request)" in detector
+    assert "::p4r::types::Verdict Detector::Classify(const ::p4r::types::Boxes & request)" in detector
     # the user's class answers it: the generated base declares the operation for the user to implement
     base = (out / "include" / "p4r" / "LoggerBase.hpp").read_text(encoding="utf-8")
-    assert "virtual ::p4r::types::Verdict Classify(const ::p4r::types::Boxes& request) = 0;" in base
+    assert "virtual ::p4r::types::Verdict Classify(const ::p4r::types::Boxes & request) = 0;" in base
     launch = "\n".join(p.read_text(encoding="utf-8") for p in (out / "launch").iterdir())
     assert 'from="Classify"' in launch and "logger/Classify" in launch
 

@@ -50,12 +50,12 @@ def test_the_psm_holds_the_coordinator_and_the_idle_instances() -> None:
 def test_the_coordinator_runs_the_shared_tables() -> None:
     _, _, files = _generated()
     source = files["src/ArmCoordinator.cpp"]
-    assert 'const char* const kInitialJob = "teleoperation";' in source
+    assert 'const char * const kInitialJob = "teleoperation";' in source
     assert '  {"teleoperation", {"trackball", "robot", "invkin"}},\n  {"playback", {"player", "robot", "invkin"}},' in source
-    assert ('  {"teleoperation", "play", "playback",\n   {"trackball"},\n   {{"invkin", {{"gain", "2.0"}}}},\n'
-            '   {{"player", {{"duration", "4.0"}}}},\n   {"robot"}},') in source
-    assert ('  {"playback", "teleoperate", "teleoperation",\n   {"player"},\n   {{"invkin", {{"gain", "1.0"}}}},\n'
-            '   {{"trackball", {{"scale", "0.5"}}}},\n   {"robot"}},') in source
+    assert ('  {"teleoperation", "play", "playback",\n    {"trackball"},\n    {{"invkin", {{"gain", "2.0"}}}},\n'
+            '    {{"player", {{"duration", "4.0"}}}},\n    {"robot"}},') in source
+    assert ('  {"playback", "teleoperate", "teleoperation",\n    {"player"},\n    {{"invkin", {{"gain", "1.0"}}}},\n'
+            '    {{"trackball", {{"scale", "0.5"}}}},\n    {"robot"}},') in source
     assert "std::vector<std::pair<std::string, std::string>> values;" in source
     # the OpenRTM way: ports for events and the job, the lifecycle and configuration over CORBA
     for needle in ('m_eventIn("event", m_event)', 'm_jobOut("job", m_job)', "CORBA_RTCUtil::deactivate(rtc.in(), 0)",

@@ -172,7 +172,7 @@ def test_a_lifecycle_node_runs_its_hooks_in_the_transitions() -> None:
     """configure() in on_configure before the ports exist, start() in on_activate after the publishers
     are activated, stop() in on_deactivate; a hook that returns false fails the transition."""
     source = _files(generate(MANAGED / "model.xmi", None, "ros2", write=False))["src/lifecycle/ImpedanceController.cpp"]
-    bodies = dict(re.findall(r"::on_(configure|activate|deactivate|cleanup|shutdown)\(const rclcpp_lifecycle::State&[^)]*\)\n\{\n(.*?)\n\}",
+    bodies = dict(re.findall(r"::on_(configure|activate|deactivate|cleanup|shutdown)\(\s*const rclcpp_lifecycle::State &[^)]*\)\n\{\n(.*?)\n\}",
                              source, flags=re.S))
     assert set(bodies) == {"configure", "activate", "deactivate", "cleanup", "shutdown"}
     configure = bodies["configure"]

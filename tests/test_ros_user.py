@@ -58,24 +58,25 @@ def test_a_component_without_class_gets_a_base_and_a_user_class(target: str, tmp
     assert files["include/usercode/ArmBase.hpp"][0] == "generated"
     assert files["include/usercode/ArmImpl.hpp"][0] == files["src/ArmImpl.cpp"][0] == "user"
     base = files["include/usercode/ArmBase.hpp"][1]
-    for decl in ("virtual bool configure() = 0;", "virtual void setCmd(const double& value) = 0;",
+    for decl in ("virtual bool configure() = 0;", "virtual void setCmd(const double & value) = 0;",
                  "virtual double getState() const = 0;", "virtual void reset() = 0;", "virtual bool calibrate() = 0;",
                  "virtual void enable(bool data) = 0;", "::usercode::types::Mode mode = ::usercode::types::Mode::IDLE;", "::usercode::types::Gains gains;",
                  'std::string label = "left";', "int count = 3;", "double gain = 1.5;", "#include <Gains.hpp>"):
         assert decl in base, decl
     user = files["include/usercode/ArmImpl.hpp"][1]
     assert "This file is yours" in user and "class ArmImpl : public ArmBase" in user
-    assert "void setCmd(const double& value) override;" in user and "double getState() const override;" in user
+    assert "void setCmd(const double & value) override;" in user and "double getState() const override;" in user
     assert "bool ArmImpl::calibrate()\n{\n  return true;\n}" in files["src/ArmImpl.cpp"][1]
     # the node derives from the user's class and calls it; the build compiles the user's source
     node = files["include/usercode/Arm.hpp"][1]
-    assert "#include <usercode/ArmImpl.hpp>" in node and "public ::usercode::ArmImpl" in node
+    include = '#include "usercode/ArmImpl.hpp"' if target == "ros2" else "#include <usercode/ArmImpl.hpp>"  # cpplint
+    assert include in node and "public ::usercode::ArmImpl" in node
     assert "::usercode::ArmImpl::setCmd(" in files["src/Arm.cpp"][1]
     assert "src/ArmImpl.cpp" in files["CMakeLists.txt"][1] and "src/PlannerImpl.cpp" in files["CMakeLists.txt"][1]
     # what the user file implements, for OUT003 / OUT004
     done = generate(tmp_path / "model.xmi", None, target, write=False)
     node_el = next(n for n in etree.fromstring(done.stages["text"].encode()).iter(f"{FS}file") if n.get("path") == "src/ArmImpl.cpp")
-    assert node_el.get("implements") == "_u1" and "hook void setCmd(const double& value)" in node_el.get("signature")
+    assert node_el.get("implements") == "_u1" and "hook void setCmd(const double & value)" in node_el.get("signature")
 
 
 def test_a_hook_the_model_drops_or_adds_stops_the_users_class_compiling(tmp_path: Path) -> None:
@@ -90,14 +91,14 @@ def test_a_hook_the_model_drops_or_adds_stops_the_users_class_compiling(tmp_path
     renamed = Comp("1", "Arm", (Port("1", "order", "in"), Port("2", "state", "out")), (("1", "gain"),))
     done = generate(write(tmp_path / "model.xmi", (renamed,)), out, "ros1")
     drift = [w.message for w in done.warnings if w.code == "OUT004"]
-    assert any("no more hook void setCmd(const double& value)" in m and "new hook void setOrder(const double& value)" in m
+    assert any("no more hook void setCmd(const double & value)" in m and "new hook void setOrder(const double & value)" in m
                for m in drift), drift
     assert (out / "src" / "ArmImpl.cpp").read_text() == impl  # the user's file as it was
     dropped = _compile(gxx, out, impl)
     assert dropped.returncode != 0 and "setCmd" in dropped.stderr and "override" in dropped.stderr, dropped.stderr
     # with the stale hook taken out, the class is abstract: the node cannot be made until setOrder is written
     header = out / "include" / "usercode" / "ArmImpl.hpp"
-    header.write_text(header.read_text().replace("  void setCmd(const double& value) override;\n", ""))
+    header.write_text(header.read_text().replace("  void setCmd(const double & value) override;\n", ""))
     added = _compile(gxx, out, use)
     assert added.returncode != 0 and "abstract" in added.stderr and "setOrder" in added.stderr, added.stderr
 

@@ -6,13 +6,15 @@
 #   $ROS2_PREFIX/venv             colcon, empy 3.3.4 and the other PyPI tools, pinned (requirements.txt)
 #   $ROS2_PREFIX/install          stage 1: the C++ core (rclcpp, rclcpp_components, rclcpp_lifecycle,
 #                                 std_msgs, std_srvs, lifecycle_msgs, rmw_cyclonedds_cpp), merged install
-#   $ROS2_PREFIX/install_py       stage 2, an overlay: rclpy, launch, launch_ros, a ros2cli subset, and the
-#                                 interface packages again with their Python bindings (only to run launch files)
+#   $ROS2_PREFIX/install_py       stage 2, an overlay: rclpy, launch, launch_ros, launch_testing, a ros2cli
+#                                 subset, and the interface packages again with their Python bindings
+#   $ROS2_PREFIX/tools            uncrustify at the version ament_uncrustify's configuration is for (plain
+#                                 CMake; what uncrustify_vendor would fetch), for colcon test's linters
 #
 # Usage: build.sh [--check] [--no-apt] [--sources-only] [--stage1-only] [--cmake-clean-cache]
 #   --check              build nothing: report what is present and what is missing (Debian packages,
 #                        sources and their commits, venv pins, every package of both stages installed),
-#                        then run the tree once: import the Python type support of rcl_interfaces,
+#                        and uncrustify, then run the tree once: import the Python type support of rcl_interfaces,
 #                        lifecycle_msgs and std_msgs, and `ros2 launch` a tiny launch file; exit
 #                        status 1 if anything is missing or a run fails (a tree that cannot launch)
 #   --no-apt             do not install Debian packages (only check they are there)
@@ -43,18 +45,19 @@ for arg in "$@"; do
 done
 
 # Debian packages: compilers and tools, then the system libraries the vendor packages wrap
-APT_PACKAGES=(build-essential cmake git ca-certificates python3-venv python3-dev
+APT_PACKAGES=(build-essential cmake git ca-certificates python3-venv python3-dev cppcheck libxml2-utils
               libyaml-dev libspdlog-dev libconsole-bridge-dev libacl1-dev libssl-dev libtinyxml2-dev pybind11-dev)
 # what each stage is built up to (colcon --packages-up-to), and what it leaves out of its graph
 # (--packages-ignore: with --packages-skip the package stays in the graph and rcl waits for test_msgs)
 STAGE1_UP_TO=(rclcpp_components rclcpp_lifecycle std_msgs std_srvs lifecycle_msgs
-              rosidl_default_generators rosidl_default_runtime rmw_cyclonedds_cpp rmw_implementation)
+              rosidl_default_generators rosidl_default_runtime rmw_cyclonedds_cpp rmw_implementation
+              ament_lint_auto ament_lint_common)
 STAGE1_IGNORE=(test_msgs)
 STAGE2_PATHS=(src_py src/rcl_interfaces src/common_interfaces src/unique_identifier_msgs src/rpyutils src/rcl/rcl_action
               src/rosidl_defaults)
 STAGE2_FIRST=(rosidl_generator_py python_cmake_module)
 STAGE2_UP_TO=(rclpy launch launch_xml launch_yaml launch_ros ros2launch ros2lifecycle ros2topic ros2node ros2run
-              ros2pkg ros2component ros2param ros2service
+              ros2pkg ros2component ros2param ros2service launch_testing launch_testing_ros launch_testing_ament_cmake
               std_msgs std_srvs lifecycle_msgs composition_interfaces type_description_interfaces)
 STAGE2_IGNORE=(test_msgs ros2cli_test_interfaces test_launch_ros)
 
@@ -103,7 +106,7 @@ while IFS=$'\t' read -r dir name url ref commit; do
   fi
 done < "$HERE/sources.tsv"
 if [ $CHECK = 1 ] && [ $MISSING = 0 ]; then
-  say "sources: all present in $PREFIX/src, $PREFIX/src_py (exported trees without .git cannot show their commit)"
+  say "sources: all present in $PREFIX/src, $PREFIX/src_py, $PREFIX/tools (exported trees without .git cannot show their commit)"
 fi
 if [ $SOURCES_ONLY = 1 ] && [ $CHECK = 0 ]; then say "sources fetched into $PREFIX"; exit 0; fi
 
@@ -130,6 +133,22 @@ if [ -x "$VENV/bin/python" ]; then
   else
     "$VENV/bin/python" -m pip install -q -r "$HERE/requirements.txt"
   fi
+fi
+
+# --- uncrustify ----------------------------------------------------------------------------------------
+# ament_uncrustify's configuration is for uncrustify 0.78 (Debian ships 0.72, which formats otherwise):
+# built from tools/uncrustify (sources.tsv) into $PREFIX/tools; env.sh puts its bin/ on PATH
+UNCRUSTIFY=$PREFIX/tools/bin/uncrustify
+if [ -x "$UNCRUSTIFY" ]; then
+  say "uncrustify: $("$UNCRUSTIFY" --version)"
+elif [ $CHECK = 1 ]; then
+  missing "uncrustify in $PREFIX/tools/bin"
+elif [ -d "$PREFIX/tools/uncrustify" ]; then
+  say "uncrustify into $PREFIX/tools"
+  cmake -S "$PREFIX/tools/uncrustify" -B "$PREFIX/tools/uncrustify-build" -DCMAKE_BUILD_TYPE=Release \
+    -DNoGitVersionString=ON "-DCMAKE_INSTALL_PREFIX=$PREFIX/tools" >/dev/null
+  nice -n "$NICE" cmake --build "$PREFIX/tools/uncrustify-build" -j "$JOBS" >/dev/null
+  cmake --install "$PREFIX/tools/uncrustify-build" >/dev/null
 fi
 
 # --- colcon stages --------------------------------------------------------------------------------

@@ -17,6 +17,7 @@
              launch/<model>.launch.xml, launch/<model>_<host>.launch.xml,
              launch/<model>_<set>.launch.xml
              config/<instance>.yaml, config/<instance>.user.yaml (mode user)
+             test/test_<model>_launch.py  the system's launch test (ros2-test.xsl)
            One fs:file a line, as f:indent (common/indent.xsl) would indent
            the file set, written so directly (t:indented-content: no copy of
            all the text).
@@ -24,7 +25,7 @@
   Errors:  none (the PSM is complete and valid).
   Modules: ../../common/sequence.xsl, ../ros-common/ros-text.xsl, ../common/user-class.xsl,
            ../ros-common/ros-user.xsl, ros2-cpp.xsl, ros2-build.xsl, ros2-launch.xsl, ros2-lifecycle.xsl,
-           ../common/jobs.xsl, ../ros-common/ros-jobs.xsl, ros2-jobs.xsl.
+           ../common/jobs.xsl, ../ros-common/ros-jobs.xsl, ros2-jobs.xsl, ros2-test.xsl.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -53,6 +54,7 @@
   <xsl:include href="../common/jobs.xsl"/>
   <xsl:include href="../ros-common/ros-jobs.xsl"/>
   <xsl:include href="ros2-jobs.xsl"/>
+  <xsl:include href="ros2-test.xsl"/>
 
   <xsl:output method="xml" indent="no" encoding="UTF-8" cdata-section-elements="fs:file"/>
   <xsl:mode name="m:emit-files" on-no-match="fail"/>
@@ -88,6 +90,7 @@
       <xsl:sequence select="fp:ros-type-files(.)"/>
       <xsl:sequence select="fp:file('CMakeLists.txt', 'generated', $fp:build-xsl, fp:ros2-cmakelists(.))"/>
       <xsl:sequence select="fp:file('package.xml', 'generated', $fp:build-xsl, fp:ros2-package-xml(.))"/>
+      <xsl:sequence select="fp:file(fp:ros2-launch-test-path(.), 'generated', $fp:test-xsl, fp:ros2-launch-test(.))"/>
       <xsl:sequence select="fp:file(concat('launch/', @deploy-name, '.launch.xml'), 'generated', $fp:launch-xsl, fp:ros2-top-launch(.))"/>
       <xsl:for-each select="r:host">
         <xsl:sequence select="fp:file(concat('launch/', $package/@deploy-name, '_', @launch, '.launch.xml'), 'generated', $fp:launch-xsl,

@@ -110,7 +110,8 @@
         'ament_package()'))"/>
   </xsl:function>
 
-  <!-- colcon test: ROS 2's linters (ament_lint_common); without a copyright
+  <!-- colcon test: ROS 2's linters (ament_lint_common) and the system's
+       launch test (ros2-test.xsl); without a copyright
        notice ament_copyright accepts (f:copyright-checkable: a maintainer,
        a year and a license licenses.xml has), ament_copyright is left out,
        and without any notice cpplint's legal/copyright check too -->
@@ -118,7 +119,7 @@
     <xsl:param name="package" as="element(r:package)"/>
     <xsl:variable name="notice" as="xs:boolean" select="normalize-space($maintainer-name) ne ''"/>
     <xsl:sequence select="
-        '# colcon test: ROS 2''s linters (ament_lint_common)',
+        '# colcon test: ROS 2''s linters (ament_lint_common) and the launch test of the system',
         'if(BUILD_TESTING)',
         '  find_package(ament_lint_auto REQUIRED)',
         if (f:copyright-checkable()) then () else (
@@ -130,6 +131,7 @@
           '  list(APPEND AMENT_LINT_AUTO_EXCLUDE ament_cmake_cpplint)'),
         '  ament_lint_auto_find_test_dependencies()',
         if ($notice) then () else '  ament_cpplint(FILTERS &quot;-legal/copyright&quot;)',
+        fp:ros2-launch-test-cmake($package),
         'endif()'"/>
   </xsl:function>
 
@@ -150,6 +152,8 @@
         '',
         '  &lt;test_depend&gt;ament_lint_auto&lt;/test_depend&gt;',
         '  &lt;test_depend&gt;ament_lint_common&lt;/test_depend&gt;',
+        ('ament_index_python', 'launch', 'launch_testing', 'launch_testing_ament_cmake', 'lifecycle_msgs', 'python3-pytest',
+         'python3-yaml', 'rcl_interfaces', 'rclpy', 'rosidl_runtime_py') ! ('  &lt;test_depend&gt;' || . || '&lt;/test_depend&gt;'),
         '',
         '  &lt;export&gt;',
         '    &lt;build_type&gt;ament_cmake&lt;/build_type&gt;',
