@@ -27,7 +27,7 @@ command -v dot >/dev/null 2>&1 || need+=(graphviz)
 # stylesheets' instructions counted, the one measure a shared machine leaves steady
 command -v valgrind >/dev/null 2>&1 || need+=(valgrind)
 # ROS 1 (Debian's own packages) for tests/test_ros.py: catkin build, catkin_lint,
-# roslaunch loader, roscore / rostopic / rosnode / rosservice, std_msgs, std_srvs.
+# roslaunch loader, roscore / rostopic / rosnode / rosservice, rostest (the generated system tests), std_msgs, std_srvs.
 [ -x /usr/bin/catkin_make ] || need+=(catkin)
 [ -x /usr/bin/catkin_lint ] || need+=(catkin-lint)
 [ -x /usr/bin/roscore ] || need+=(ros-core-dev)
@@ -35,6 +35,9 @@ command -v valgrind >/dev/null 2>&1 || need+=(valgrind)
 [ -x /usr/bin/rostopic ] || need+=(python3-rostopic)
 [ -x /usr/bin/rosnode ] || need+=(python3-rosnode)
 [ -x /usr/bin/rosservice ] || need+=(python3-rosservice)
+[ -x /usr/bin/rostest ] || need+=(python3-rostest)
+/usr/bin/python3 -c 'import rosgraph, rospkg, yaml' >/dev/null 2>&1 || need+=(python3-rosgraph python3-rospkg python3-yaml)
+ls /usr/lib/*/cmake/rostest/rostestConfig.cmake >/dev/null 2>&1 || need+=(librostest-dev)
 [ -f /usr/include/std_msgs/Float64.h ] || need+=(ros-core-dev)
 [ -f /usr/include/std_srvs/Empty.h ] || need+=(libstd-srvs-dev)
 if [ "${#need[@]}" -gt 0 ]; then

@@ -30,7 +30,8 @@ CASES = sorted(p.parent for p in (ROOT / "fixtures" / "cases").glob("*/model.xmi
 SAXON_JAR = Path(os.environ.get("ROBOMDA_SAXON_JAR", "/usr/share/java/Saxon-HE.jar"))
 XSLT3 = Path(os.environ.get("ROBOMDA_XSLT3", ROOT / "tests" / "engines" / "node_modules" / "xslt3" / "xslt3.js"))
 CONTEXT = {"model-file-name": "model.xmi", "model-dir-from-output": "..", "package-name": "", "type-map": "",
-           "package-version": "", "maintainer-name": "", "maintainer-email": "", "license": "", "model-path": "", "replace": ""}
+           "package-version": "", "maintainer-name": "", "maintainer-email": "", "license": "", "copyright-year": "", "model-path": "",
+           "replace": ""}
 
 
 def _stages() -> dict[str, tuple[Path, str, str | None, dict[str, str], str]]:

@@ -317,6 +317,49 @@ def test_ros1_package_builds_with_catkin(case: Path, catkin_ws: Path) -> None:
         assert exe.is_file() and os.access(exe, os.X_OK), exe
 
 
+def _rostest(ws: Path, target: str, home: Path) -> subprocess.CompletedProcess[str]:
+    """rostest of ``target`` (PACKAGE FILE.test, or a .test path) in the built workspace: a master of its own."""
+    return subprocess.run(["bash", "-c", f"source {ws}/devel/setup.bash && rostest {target}"], cwd=ws,
+                          env=_ros_env(ROS_HOME=str(home)), capture_output=True, text=True, timeout=600)
+
+
+@pytest.mark.parametrize("case", CASES, ids=[c.name for c in CASES])
+def test_ros1_system_passes_its_own_rostest(case: Path, catkin_ws: Path, tmp_path: Path) -> None:
+    """The package's generated test (test/<model>.test: the system as modelled, issue 52) passes under rostest."""
+    _need("rostest")
+    package = catkin_ws / "src" / case.name
+    name = etree.parse(str(package / "package.xml")).findtext("name")
+    test = next((package / "test").glob("*.test"))
+    done = _rostest(catkin_ws, f"{name} {test.name}", tmp_path)
+    said = done.stdout + done.stderr
+    assert done.returncode == 0 and "FAILURES: 0" in said and "ERRORS: 0" in said, said[-4000:]
+
+
+def test_ros1_rostest_names_the_connection_a_launch_file_breaks(catkin_ws: Path, tmp_path: Path) -> None:
+    """With one remap taken out of the host launch file (a copy), the generated test fails naming that connection."""
+    _need("rostest")
+    package = catkin_ws / "src" / "pid"
+    host = next(p for p in (package / "launch").glob("pid_*.launch"))
+    text = host.read_text(encoding="utf-8")
+    remap = re.search(r'<remap from="(\w+)" to="(\w+)"/>', text)
+    broken = tmp_path / host.name
+    broken.write_text(text.replace(remap.group(0), "", 1), encoding="utf-8")
+    test = (package / "test" / "pid.test").read_text(encoding="utf-8")
+    # rostest runs a .test file of a package: this one at the package's root, out of test/ (which the
+    # test above reads), gone afterwards
+    broken_test = package / f"broken-{os.getpid()}-{tmp_path.name}.test"
+    broken_test.write_text(re.sub(r'<include file="[^"]*"/>', f'<include file="{broken}"/>', test), encoding="utf-8")
+    try:
+        done = _rostest(catkin_ws, str(broken_test), tmp_path)
+    finally:
+        broken_test.unlink()
+    said = done.stdout + done.stderr
+    assert done.returncode != 0, said[-3000:]
+    assert re.search(rf"connection \w+\.{remap.group(1)} -> \w+\.\w+: \w+ does not publish on a topic {remap.group(2)}"
+                     rf"|connection \w+\.\w+ -> \w+\.{remap.group(1)}: \w+ does not publish on a topic {remap.group(2)}", said), \
+        said[-4000:]
+
+
 @pytest.mark.parametrize("case", CASES, ids=[c.name for c in CASES])
 def test_ros1_catkin_lint_no_error(case: Path, tmp_path: Path) -> None:
     lint = _need("catkin_lint")

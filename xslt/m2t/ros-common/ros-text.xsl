@@ -22,6 +22,7 @@
                            banner and include of a node's C++ files
     fp:ros-package-xml-opening($package)  package.xml up to its name
     fp:ros-on-input($port, $rc)  the body of a subscription callback
+    fp:ros-fqn($i)         the full name of an instance's node
     fp:msg-parts($msg, $pkg)  (package, Name) of a message: a generated
                            message (no "/") lives in package $pkg
     fp:library-external-project / fp:library-vars / fp:library-depends  CMake lines
@@ -98,6 +99,14 @@
       <xsl:apply-templates select="r:package" mode="m:emit-files"/>
     </xsl:document>
   </xsl:template>
+
+  <!-- the full name of the node of instance $i, relative to the namespace
+       its launch file runs in: /name, or /namespace/name for a part of a
+       composite (seed 003) -->
+  <xsl:function name="fp:ros-fqn" as="xs:string">
+    <xsl:param name="i" as="element(r:instance)"/>
+    <xsl:sequence select="if ($i/@namespace) then concat('/', $i/@namespace, '/', $i/@node-name) else concat('/', $i/@name)"/>
+  </xsl:function>
 
   <!-- the name attributes of a launch file's node: name="..." and, for a
        node inside a composite part (seed 003), its namespace in the

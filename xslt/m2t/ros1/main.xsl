@@ -14,6 +14,7 @@
              config/<instance>.yaml
              src/<subsystem>_coordinator.cpp, launch/<model>_<job>_<instance>.launch
                                      per job coordinator (ros1-jobs.xsl)
+             test/<model>.test, test/test_<model>_system.py  the system's rostest (ros1-test.xsl)
            One fs:file a line, as f:indent (common/indent.xsl) would indent
            the file set, written so directly (t:indented-content: no copy of
            all the text).
@@ -21,7 +22,8 @@
   Errors:  none (the PSM is complete and valid).
   Modules: ../ros-common/ros-text.xsl, ../common/user-class.xsl,
            ../ros-common/ros-user.xsl, ros1-cpp.xsl, ros1-build.xsl, ros1-launch.xsl,
-           ../common/jobs.xsl, ../ros-common/ros-jobs.xsl, ros1-jobs.xsl.
+           ../common/jobs.xsl, ../ros-common/ros-jobs.xsl, ros1-jobs.xsl,
+           ../ros-common/ros-test.xsl, ros1-test.xsl.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -48,6 +50,8 @@
   <xsl:include href="../common/jobs.xsl"/>
   <xsl:include href="../ros-common/ros-jobs.xsl"/>
   <xsl:include href="ros1-jobs.xsl"/>
+  <xsl:include href="../ros-common/ros-test.xsl"/>
+  <xsl:include href="ros1-test.xsl"/>
 
   <xsl:output method="xml" indent="no" encoding="UTF-8" cdata-section-elements="fs:file"/>
   <xsl:mode name="m:emit-files" on-no-match="fail"/>
@@ -71,6 +75,8 @@
       <xsl:sequence select="fp:ros-type-files(.)"/>
       <xsl:sequence select="fp:file('CMakeLists.txt', 'generated', $fp:build-xsl, fp:ros1-cmakelists(.))"/>
       <xsl:sequence select="fp:file('package.xml', 'generated', $fp:build-xsl, fp:ros1-package-xml(.))"/>
+      <xsl:sequence select="fp:file(fp:ros1-test-paths(.)[1], 'generated', $fp:test-xsl, fp:ros1-test-launch(.)),
+                            fp:file(fp:ros1-test-paths(.)[2], 'generated', $fp:test-xsl, fp:ros1-test-node(.))"/>
       <xsl:sequence select="fp:file(concat('launch/', @deploy-name, '.launch'), 'generated', $fp:launch-xsl, fp:ros1-top-launch(.))"/>
       <xsl:for-each select="r:host">
         <xsl:sequence select="fp:file(concat('launch/', $package/@deploy-name, '_', @launch, '.launch'), 'generated', $fp:launch-xsl,

@@ -84,7 +84,8 @@
         'install(DIRECTORY include/${PROJECT_NAME}/',
         '  DESTINATION ${CATKIN_PACKAGE_INCLUDE_DESTINATION})',
         'install(DIRECTORY config launch',
-        '  DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})'))"/>
+        '  DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})',
+        fp:ros1-test-cmake($package)))"/>
   </xsl:function>
 
   <xsl:function name="fp:ros1-package-xml" as="xs:string">
@@ -100,6 +101,7 @@
         if ($msgs) then ('  &lt;build_depend&gt;message_generation&lt;/build_depend&gt;',
                          '  &lt;exec_depend&gt;message_runtime&lt;/exec_depend&gt;') else (),
         '  &lt;exec_depend&gt;roslaunch&lt;/exec_depend&gt;',
+        ('python3-yaml', 'rosgraph', 'rospy', 'rostest') ! ('  &lt;test_depend&gt;' || . || '&lt;/test_depend&gt;'),
         '&lt;/package&gt;'))"/>
   </xsl:function>
 </xsl:stylesheet>

@@ -25,7 +25,7 @@
   Errors:  none (the PSM is complete and valid).
   Modules: ../../common/sequence.xsl, ../ros-common/ros-text.xsl, ../common/user-class.xsl,
            ../ros-common/ros-user.xsl, ros2-cpp.xsl, ros2-build.xsl, ros2-launch.xsl, ros2-lifecycle.xsl,
-           ../common/jobs.xsl, ../ros-common/ros-jobs.xsl, ros2-jobs.xsl, ros2-test.xsl.
+           ../common/jobs.xsl, ../ros-common/ros-jobs.xsl, ros2-jobs.xsl, ../ros-common/ros-test.xsl, ros2-test.xsl.
 -->
 <xsl:stylesheet version="3.0"
     xmlns:xsl="http://www.w3.org/1999/XSL/Transform"
@@ -54,6 +54,7 @@
   <xsl:include href="../common/jobs.xsl"/>
   <xsl:include href="../ros-common/ros-jobs.xsl"/>
   <xsl:include href="ros2-jobs.xsl"/>
+  <xsl:include href="../ros-common/ros-test.xsl"/>
   <xsl:include href="ros2-test.xsl"/>
 
   <xsl:output method="xml" indent="no" encoding="UTF-8" cdata-section-elements="fs:file"/>

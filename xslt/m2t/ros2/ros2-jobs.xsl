@@ -8,7 +8,7 @@
   Params:  none.  Errors: none.
   Uses:    ../ros-common/ros-jobs.xsl (tables, event loop),
            ros2-lifecycle.xsl (fp:ros2-change-state), ros2-launch.xsl
-           (fp:ros2-fqn).
+           (fp:ros-fqn).
 
   src/<subsystem>_coordinator.cpp: node <subsystem>_coordinator. The jobs'
   instances are lifecycle nodes loaded unconfigured; the coordinator
@@ -69,7 +69,7 @@
         '// the fully qualified name of each instance',
         'const std::map&lt;std::string, std::string&gt; kNodes = {',
         distinct-values($coordinator/r:job/r:member/@instance)
-          ! concat('  {', fp:cpp-string(.), ', ', fp:cpp-string(fp:ros2-fqn(fp:ros-job-instance($coordinator, .))), '},'),
+          ! concat('  {', fp:cpp-string(.), ', ', fp:cpp-string(fp:ros-fqn(fp:ros-job-instance($coordinator, .))), '},'),
         '};',
         '',
         '// sets the values of node `target` through its parameter service',

@@ -148,15 +148,9 @@
         '  &lt;!-- the managed (lifecycle) nodes on this host: configured, then activated, in the deployment sequence --&gt;',
         concat('  &lt;node pkg=&quot;', $package/@name, '&quot; exec=&quot;lifecycle_manager&quot; name=&quot;', $host/@lifecycle-manager,
                '&quot; namespace=&quot;/&quot; output=&quot;screen&quot;&gt;'),
-        concat('    &lt;param name=&quot;node_names&quot; value=&quot;', string-join(fp:in-start-order($managed) ! ($fp:ros2-root || fp:ros2-fqn(.)), ','),
+        concat('    &lt;param name=&quot;node_names&quot; value=&quot;', string-join(fp:in-start-order($managed) ! ($fp:ros2-root || fp:ros-fqn(.)), ','),
                '&quot; value-sep=&quot;,&quot;/&gt;'),
         '  &lt;/node&gt;'"/>
-  </xsl:function>
-
-  <!-- the fully qualified node name of instance $i -->
-  <xsl:function name="fp:ros2-fqn" as="xs:string">
-    <xsl:param name="i" as="element(r:instance)"/>
-    <xsl:sequence select="if ($i/@namespace) then concat('/', $i/@namespace, '/', $i/@node-name) else concat('/', $i/@name)"/>
   </xsl:function>
 
   <!-- a component set (seed 002): the containers of the processes wholly

@@ -6,7 +6,8 @@
   Reads:   r:package of urn:robomda:psm-ros:1 (ros-version 2).
   Writes:  the text of test/test_<model>_launch.py (wrapped into fs:file by
            main.xsl) and the CMake lines that run it (fp:ros2-launch-test-cmake).
-  Params:  none.  Errors: none.
+  Params:  none.  Errors: none.  Modules: ../ros-common/ros-test.xsl (the
+  tables and the helpers both ROS targets' tests share).
 
   The test starts the whole system as launch/<model>.launch.xml does (every
   host's file on this machine) and checks what the model says:
@@ -46,39 +47,11 @@
         '  add_launch_test(' || fp:ros2-launch-test-path($package) || ' TIMEOUT 180)'"/>
   </xsl:function>
 
-  <!-- a Python string literal (single quotes, as flake8-quotes wants) -->
-  <xsl:function name="fp:py-string" as="xs:string">
-    <xsl:param name="text" as="xs:string?"/>
-    <xsl:sequence select="'''' || replace(replace(string($text), '\\', '\\\\'), '''', '\\''') || ''''"/>
-  </xsl:function>
 
-  <!-- the lifecycle state instance $i is in once the system is up: active,
-       unconfigured when only a job other than the initial one runs it, ()
-       when it is not managed -->
-  <xsl:function name="fp:ros2-expected-state" as="xs:string?">
-    <xsl:param name="i" as="element(r:instance)"/>
-    <xsl:variable name="jobs" as="element(r:job)*" select="$i/../r:coordinator/r:job[r:member/@instance = $i/@name]"/>
-    <xsl:sequence select="if (not(xs:boolean(($i/@managed, 'false')[1]))) then ()
-                          else if (empty($jobs) or $jobs/../@initial-job = $jobs/@name) then 'active'
-                          else 'unconfigured'"/>
-  </xsl:function>
 
-  <!-- whether the writer of topic $t sends samples without being asked:
-       it runs periodically, is active (not only in a job other than the
-       initial one) and its node publishes the port -->
-  <xsl:function name="fp:ros2-sends" as="xs:boolean">
-    <xsl:param name="t" as="element(r:topic)"/>
-    <xsl:param name="writer" as="element(r:instance)?"/>
-    <xsl:variable name="port" as="element(r:port)?"
-        select="$writer/../r:node[@class eq $writer/@node]/r:port[@direction eq 'out'][@name eq $t/r:writer/@port]"/>
-    <xsl:sequence select="exists($port) and xs:boolean($port/@accessor-declared)
-                          and ($port/@constant = 'true' or $writer/@periodic = 'true')
-                          and not(fp:ros2-expected-state($writer) = 'unconfigured')"/>
-  </xsl:function>
 
   <xsl:function name="fp:ros2-launch-test" as="xs:string">
     <xsl:param name="package" as="element(r:package)"/>
-    <xsl:variable name="instances" as="element(r:instance)*" select="$package/r:instance"/>
     <xsl:sequence select="fp:lines((
         fp:banner('# ', $fp:test-xsl, 'model ''' || $package/@model-name || '''', false()),
         '',
@@ -104,45 +77,14 @@
         'from rosidl_runtime_py.utilities import get_message',
         'import yaml',
         '',
-        'PACKAGE = ' || fp:py-string($package/@name),
         'LAUNCH_FILE = ' || fp:py-string($package/@deploy-name || '.launch.xml'),
-        '# the full name of each instance (relative to the namespace a launch file may push)',
-        'NODES = {',
-        $instances ! ('    ' || fp:py-string(@name) || ': ' || fp:py-string(fp:ros2-fqn(.)) || ','),
-        '}',
-        '# (writer, its port, reader, its port, topic, samples expected, reliable, latched)',
-        'CONNECTIONS = [',
-        for $t in $package/r:topic, $w in $t/r:writer, $rd in $t/r:reader return
-          let $writer := $instances[@name eq $w/@instance],
-              $from := fp:py-string($w/@instance) || ', ' || fp:py-string($w/@port),
-              $to := fp:py-string($rd/@instance) || ', ' || fp:py-string($rd/@port),
-              $flags := string-join((fp:ros2-sends($t, $writer), $t/r:qos/@reliability eq 'reliable',
-                                     $t/r:qos/@durability eq 'transient_local') ! fp:py-bool(.), ', '),
-              $line := '    (' || string-join(($from, $to, fp:py-string($t/@name), $flags), ', ') || '),'
-          return if (string-length($line) le 99) then $line
-                 else ('    (' || $from || ',', '     ' || $to || ',', '     ' || fp:py-string($t/@name) || ',', '     ' || $flags || '),'),
-        ']',
-        '# the lifecycle state of each managed instance once the system is up',
-        'STATES = {',
-        for $i in $instances, $state in fp:ros2-expected-state($i)
-        return '    ' || fp:py-string($i/@name) || ': ' || fp:py-string($state) || ',',
-        '}',
-        '# the parameter files of each instance, in the order its launch file loads them',
-        'PARAMETER_FILES = {',
-        $instances ! ('    ' || fp:py-string(@name) || ': [' || fp:py-string(@name || '.yaml') || ', '
-                      || fp:py-string(@name || '.user.yaml') || '],'),
-        '}',
-        'TIMEOUT = 30.0',
-        $fp:launch-test-code))"/>
+        fp:ros-test-tables($package),
+        $fp:launch-test-code, $fp:ros-test-helpers, $fp:launch-test-cases))"/>
   </xsl:function>
 
-  <!-- a Python boolean -->
-  <xsl:function name="fp:py-bool" as="xs:string">
-    <xsl:param name="value" as="xs:boolean"/>
-    <xsl:sequence select="if ($value) then 'True' else 'False'"/>
-  </xsl:function>
 
-  <!-- the code of the test, after its tables: the same for every model -->
+  <!-- the code of the test, after its tables: the same for every model
+       (the helpers of ../ros-common/ros-test.xsl between its two parts) -->
   <xsl:variable name="fp:launch-test-code" as="xs:string">
     <xsl:text>
 
@@ -155,17 +97,6 @@ def generate_test_description():
     return launch.LaunchDescription([system, launch_testing.actions.ReadyToTest()])
 
 
-def flat(values, prefix=''):
-    """Return the parameters of a YAML mapping, the keys of nested ones joined by dots."""
-    found = {}
-    for key, value in values.items():
-        if isinstance(value, dict):
-            found.update(flat(value, prefix + str(key) + '.'))
-        else:
-            found[prefix + str(key)] = value
-    return found
-
-
 def modelled_parameters(instance):
     """Return the values the parameter files of an instance give (a later file wins)."""
     share = get_package_share_directory(PACKAGE)
@@ -175,18 +106,11 @@ def modelled_parameters(instance):
             loaded = yaml.safe_load(stream) or {}
         for section in loaded.values():
             values.update(flat((section or {}).get('ros__parameters') or {}))
-    return values
+    return values</xsl:text>
+  </xsl:variable>
 
-
-def same(found, expected):
-    """Return whether a parameter's value is the one expected (numbers to 1e-9)."""
-    if isinstance(expected, (list, tuple)):
-        found = list(found)
-        return len(found) == len(expected) and all(map(same, found, expected))
-    if isinstance(expected, float) or isinstance(found, float):
-        return abs(float(found) - float(expected)) &lt;= 1e-9 * max(1.0, abs(float(expected)))
-    return found == expected
-
+  <xsl:variable name="fp:launch-test-cases" as="xs:string">
+    <xsl:text>
 
 class TestSystem(unittest.TestCase):
     """The running system is the modelled one."""
