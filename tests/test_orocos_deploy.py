@@ -114,6 +114,35 @@ def test_self_check_reads_back_the_modelled_values(model: str, tmp_root: Path) -
     assert run.returncode == 0 and "DEPLOY-RESULT: OK" in run.stdout, run.stdout[-4000:] + run.stderr[-2000:]
 
 
+@pytest.mark.parametrize("model", MODELS)
+def test_ctest_runs_the_self_check_and_it_passes(model: str, tmp_root: Path) -> None:
+    """The package's own test (issue 52): after make install, ctest runs each process's -check.lua; the build
+    had -Wall -Wextra -Wpedantic on (ROBOMDA_WARNINGS) and no warning points into the generated package."""
+    out, _ = _built(model, tmp_root)
+    cache = (out / "build" / "CMakeCache.txt").read_text()
+    assert "ROBOMDA_WARNINGS:BOOL=ON" in cache
+    run = _bash(f"ctest --test-dir {out}/build --output-on-failure", out.parent)
+    assert run.returncode == 0 and "tests passed" in run.stdout and "0 tests failed" in run.stdout, run.stdout[-4000:]
+    rebuilt = _bash(f"touch {out}/src/components.cpp && cmake --build {out}/build 2>&1", out.parent)
+    ours = [line for line in rebuilt.stdout.splitlines() if "warning:" in line and str(out) in line]
+    assert rebuilt.returncode == 0 and not ours, "\n".join(ours[:20])
+
+
+def test_the_self_check_names_a_connection_the_deployment_does_not_make(tmp_root: Path) -> None:
+    """One connect() taken out of (a copy of) the Lua deployment: its check fails, naming the connection."""
+    out, _ = _built("headlamp/model.xmi", tmp_root)
+    broken = tmp_root / "broken"
+    shutil.rmtree(broken, ignore_errors=True)
+    shutil.copytree(out / "deploy", broken)
+    lua = broken / "headlamp.lua"
+    text = lua.read_text(encoding="utf-8")
+    line = next(l for l in text.splitlines() if "depl:connect(\"camera.visionValue\"" in l)
+    lua.write_text(text.replace(line + "\n", ""), encoding="utf-8")
+    run = _bash(f"oro_add_prefix {out}/install && timeout -s INT 120 rttlua {broken}/headlamp-check.lua </dev/null", tmp_root)
+    assert run.returncode != 0 and "DEPLOY-CHECK FAILED: connection visionValueConn: camera.visionValue connected" in run.stdout, \
+        run.stdout[-3000:]
+
+
 def test_a_constant_read_before_its_writer_configures_fails_the_configure(tmp_root: Path) -> None:
     """pidswap's controller reads the robot interface's torque limit («Constant») in configureHook: it
     configures (the deployment above runs) because a StartAfter puts the robot interface first. Without it

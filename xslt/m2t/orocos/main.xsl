@@ -104,7 +104,7 @@
         <xsl:sequence select="$fp:file-margin, fp:file(concat('deploy/', @file, '.xml'), 'generated', $fp:deploy-xsl, fp:deploy-xml($view))"/>
         <xsl:sequence select="$fp:file-margin, fp:file(concat('deploy/', @file, '.ops'), 'generated', $fp:deploy-xsl, fp:deploy-ops($view))"/>
         <xsl:sequence select="$fp:file-margin, fp:file(concat('deploy/', @file, '.lua'), 'generated', $fp:deploy-xsl, fp:deploy-lua($view))"/>
-        <xsl:sequence select="$fp:file-margin, fp:file(concat('deploy/', @file, '-check.lua'), 'generated', $fp:deploy-xsl, fp:deploy-check-lua($view))"/>
+        <xsl:sequence select="$fp:file-margin, fp:file(concat('deploy/', @file, '-check.lua'), 'generated', $fp:deploy-xsl, fp:deploy-check-lua($view, $deployment))"/>
       </xsl:for-each>
       <!-- the job coordinators' programs (orocos-jobs.xsl, docs/jobs.md) -->
       <xsl:for-each select="o:coordinator">

@@ -60,6 +60,8 @@
         '  message(FATAL_ERROR &quot;Could not find Orocos-RTT. Source env.sh first.&quot;)',
         'endif()',
         'include(${OROCOS-RTT_USE_FILE_PATH}/UseOROCOS-RTT.cmake)',
+        '# RTT''s headers as system headers: the warnings are the generated code''s, not RTT''s own',
+        'include_directories(SYSTEM ${OROCOS-RTT_INCLUDE_DIRS})',
         '',
         'include_directories(${CMAKE_CURRENT_SOURCE_DIR}/include)',
         $deployment/o:library ! fp:library-subdirectory(.),
@@ -74,7 +76,30 @@
         '',
         concat('orocos_install_headers(', string-join($headers, ' '), ')'),
         $deployment/o:library ! fp:library-install-headers(., $pkg),
-        'orocos_generate_package()'))"/>
+        'orocos_generate_package()',
+        fp:orocos-tests($deployment)))"/>
+  </xsl:function>
+
+  <!-- ctest (after make install): each process's self-check
+       (deploy/<process>-check.lua: every component Running with its
+       modelled period, affinity and property values, every connection
+       connected and carrying data); a process of several (CORBA) needs
+       the others running, which its start script does: not a test here -->
+  <xsl:function name="fp:orocos-tests" as="xs:string+">
+    <xsl:param name="deployment" as="element(o:deployment)"/>
+    <xsl:variable name="alone" as="element(o:process)*" select="$deployment/o:process[not(@corba = 'true')]"/>
+    <xsl:sequence select="
+        '',
+        '# ctest, after make install: the deployment checks itself (deploy/*-check.lua)',
+        'enable_testing()',
+        'find_program(ROBOMDA_RTTLUA rttlua)',
+        if (empty($alone)) then '# (every process is one of several: run the start scripts, then each -check.lua)' else (
+        'if(ROBOMDA_RTTLUA)',
+        $alone ! ('  add_test(NAME ' || @file || '-check COMMAND ${CMAKE_COMMAND} -E env',
+                  '    &quot;RTT_COMPONENT_PATH=${CMAKE_INSTALL_PREFIX}/lib/orocos:$ENV{RTT_COMPONENT_PATH}&quot;',
+                  '    &quot;LD_LIBRARY_PATH=${CMAKE_INSTALL_PREFIX}/lib:$ENV{LD_LIBRARY_PATH}&quot;',
+                  '    ${ROBOMDA_RTTLUA} ${CMAKE_CURRENT_SOURCE_DIR}/deploy/' || @file || '-check.lua)'),
+        'endif()')"/>
   </xsl:function>
 
   <xsl:function name="fp:library-subdirectory" as="xs:string*">

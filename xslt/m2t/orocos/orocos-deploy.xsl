@@ -10,7 +10,9 @@
            deploy/<model>.lua        the same deployment for `deployer -s` or
                                      `rttlua -i`: it keeps running
            deploy/<model>-check.lua  runs <model>.lua for a second, reads the
-                                     modelled (or tuned) values back, stops
+                                     modelled (or tuned) values back, checks
+                                     every connection (connected; data where
+                                     its writer is periodic), stops
                                      everything and exits 0 / 1 with a verdict
            deploy/<instance>.user.cpf  the user's tuned values (fp:user-cpf-text,
                                      a user file: main.xsl writes it once)
@@ -700,8 +702,36 @@
     </xsl:for-each>
   </xsl:function>
 
+  <!-- check script: both ends of each connection of this process connected,
+       and, where the writer runs periodically (and is not an instance of a
+       job that runs later) and writes its port, data at the reader's port
+       (a DATA connection keeps its last sample; an input port read outside
+       its component: the check runs once the deployment has run); $whole:
+       the deployment of every process, with the task contexts -->
+  <xsl:function name="fp:lua-connection-checks" as="xs:string*">
+    <xsl:param name="deployment" as="element(o:deployment)"/>
+    <xsl:param name="whole" as="element(o:deployment)"/>
+    <xsl:variable name="here" as="xs:string*" select="$deployment/o:instance/@name"/>
+    <xsl:for-each select="$deployment/o:connection">
+      <xsl:variable name="connection" as="element(o:connection)" select="."/>
+      <xsl:variable name="writer" as="element(o:instance)?" select="$deployment/o:instance[@name eq current()/o:writer[1]/@instance]"/>
+      <xsl:variable name="sends" as="xs:boolean" select="exists($writer) and $writer/o:activity/@periodic = 'true'
+          and exists(o:reader) and exists($whole/o:task-context[@name eq $writer/@task-context]/o:port[@direction eq 'out']
+                     [@name eq $connection/o:writer[1]/@port][@accessor-declared = 'true'])"/>
+      <xsl:sequence select="(o:writer, o:reader)[@instance = $here] ! concat('  check(comps[', fp:cpp-string(@instance), ']:getPort(',
+              fp:cpp-string(@port), '):connected(), &quot;connection ', $connection/@name, ': ', @instance, '.', @port, ' connected&quot;)'),
+          o:reader[$sends][@instance = $here] ! (
+              concat('  if not (deployment.idle or {})[', fp:cpp-string($writer/@name), '] then'),
+              concat('    local fs = comps[', fp:cpp-string(@instance), ']:getPort(', fp:cpp-string(@port), '):read()'),
+              concat('    check(fs ~= &quot;NoData&quot;, &quot;connection ', $connection/@name, ': data from ', $writer/@name, '.',
+                     $connection/o:writer[1]/@port, ' at ', @instance, '.', @port, ' (read &quot; .. tostring(fs) .. &quot;)&quot;)'),
+              '  end')"/>
+    </xsl:for-each>
+  </xsl:function>
+
   <xsl:function name="fp:deploy-check-lua" as="xs:string">
     <xsl:param name="deployment" as="element(o:deployment)"/>
+    <xsl:param name="whole" as="element(o:deployment)"/>
     <xsl:variable name="file" as="xs:string" select="concat($deployment/@deploy-name, '-check.lua')"/>
     <xsl:variable name="corba" as="xs:boolean" select="$deployment/@corba = 'true'"/>
     <xsl:sequence select="fp:lines((
@@ -712,8 +742,9 @@
           concat('-- instead of this process (', $deployment/@start-script, ' starts it), with the processes before it running.'))
         else concat('-- Run: rttlua ', $file, '   (or deployer -s ', $file, ')'),
         concat('-- Runs ', $deployment/@deploy-name, '.lua (beside this file) for one second, checks that every component is Running'),
-        '-- with the modelled period, CPU affinity and property values, stops and unloads everything, and',
-        '-- exits 0 when all is as modelled, 1 otherwise.',
+        '-- with the modelled period, CPU affinity and property values, that both ends of every connection',
+        '-- are connected and data reached each reader whose writer runs periodically, stops and unloads',
+        '-- everything, and exits 0 when all is as modelled, 1 otherwise.',
         'require(&quot;rttlib&quot;)',
         'rttlib.color = false',
         '',
@@ -760,6 +791,7 @@
         then '  local function enum_int(v) local i = rtt.Variable(&quot;int&quot;); i:assign(v); return i:tolua() end' else (),
         fp:lua-tuned-values(exists($deployment/o:instance/o:property-value/o:value)),
         $deployment/o:instance ! fp:lua-instance-checks(.),
+        fp:lua-connection-checks($deployment, $whole),
         $deployment/o:proxy ! concat('  check(depl:getPeer(', fp:cpp-string(@name), '):getState() == &quot;Running&quot;, &quot;', @name,
                  ' (a component of another process) Running&quot;)'),
         if ($deployment/o:coordinator) then (

@@ -3,8 +3,9 @@
 -- Do not edit: this file is overwritten on every generation.
 -- Run: rttlua headlamp-check.lua   (or deployer -s headlamp-check.lua)
 -- Runs headlamp.lua (beside this file) for one second, checks that every component is Running
--- with the modelled period, CPU affinity and property values, stops and unloads everything, and
--- exits 0 when all is as modelled, 1 otherwise.
+-- with the modelled period, CPU affinity and property values, that both ends of every connection
+-- are connected and data reached each reader whose writer runs periodically, stops and unloads
+-- everything, and exits 0 when all is as modelled, 1 otherwise.
 require("rttlib")
 rttlib.color = false
 
@@ -61,6 +62,42 @@ if loaded then
   check(near(comps["controller"]:getPeriod(), 0.003), "controller period 0.003 (is " .. tostring(comps["controller"]:getPeriod()) .. ")")
   check(comps["controller"]:getProperty("stiffness"):get() == want("controller", "stiffness", 500), "property controller.stiffness = " .. tostring(want("controller", "stiffness", 500)) .. " (is " .. tostring(comps["controller"]:getProperty("stiffness"):get()) .. ")")
   check(comps["controller"]:getProperty("damping"):get() == want("controller", "damping", 20), "property controller.damping = " .. tostring(want("controller", "damping", 20)) .. " (is " .. tostring(comps["controller"]:getProperty("damping"):get()) .. ")")
+  check(comps["camera"]:getPort("visionValue"):connected(), "connection visionValueConn: camera.visionValue connected")
+  check(comps["vision"]:getPort("visionValue"):connected(), "connection visionValueConn: vision.visionValue connected")
+  if not (deployment.idle or {})["camera"] then
+    local fs = comps["vision"]:getPort("visionValue"):read()
+    check(fs ~= "NoData", "connection visionValueConn: data from camera.visionValue at vision.visionValue (read " .. tostring(fs) .. ")")
+  end
+  check(comps["vision"]:getPort("channelPosition"):connected(), "connection channelPositionConn: vision.channelPosition connected")
+  check(comps["controller"]:getPort("channelPosition"):connected(), "connection channelPositionConn: controller.channelPosition connected")
+  if not (deployment.idle or {})["vision"] then
+    local fs = comps["controller"]:getPort("channelPosition"):read()
+    check(fs ~= "NoData", "connection channelPositionConn: data from vision.channelPosition at controller.channelPosition (read " .. tostring(fs) .. ")")
+  end
+  check(comps["forceSensor"]:getPort("wrench"):connected(), "connection wrenchConn: forceSensor.wrench connected")
+  check(comps["controller"]:getPort("wrench"):connected(), "connection wrenchConn: controller.wrench connected")
+  if not (deployment.idle or {})["forceSensor"] then
+    local fs = comps["controller"]:getPort("wrench"):read()
+    check(fs ~= "NoData", "connection wrenchConn: data from forceSensor.wrench at controller.wrench (read " .. tostring(fs) .. ")")
+  end
+  check(comps["arm"]:getPort("armState"):connected(), "connection armStateConn: arm.armState connected")
+  check(comps["controller"]:getPort("armState"):connected(), "connection armStateConn: controller.armState connected")
+  if not (deployment.idle or {})["arm"] then
+    local fs = comps["controller"]:getPort("armState"):read()
+    check(fs ~= "NoData", "connection armStateConn: data from arm.armState at controller.armState (read " .. tostring(fs) .. ")")
+  end
+  check(comps["controller"]:getPort("armCommand"):connected(), "connection armCommandConn: controller.armCommand connected")
+  check(comps["arm"]:getPort("armCommand"):connected(), "connection armCommandConn: arm.armCommand connected")
+  if not (deployment.idle or {})["controller"] then
+    local fs = comps["arm"]:getPort("armCommand"):read()
+    check(fs ~= "NoData", "connection armCommandConn: data from controller.armCommand at arm.armCommand (read " .. tostring(fs) .. ")")
+  end
+  check(comps["arm"]:getPort("toolPose"):connected(), "connection toolPoseConn: arm.toolPose connected")
+  check(comps["vision"]:getPort("toolPose"):connected(), "connection toolPoseConn: vision.toolPose connected")
+  if not (deployment.idle or {})["arm"] then
+    local fs = comps["vision"]:getPort("toolPose"):read()
+    check(fs ~= "NoData", "connection toolPoseConn: data from arm.toolPose at vision.toolPose (read " .. tostring(fs) .. ")")
+  end
   -- in the reverse start order
   for i = #names, 1, -1 do comps[names[i]]:stop() end
   for i = #names, 1, -1 do comps[names[i]]:cleanup() end
