@@ -98,7 +98,8 @@
         $alone ! ('  add_test(NAME ' || @file || '-check COMMAND ${CMAKE_COMMAND} -E env',
                   '    &quot;RTT_COMPONENT_PATH=${CMAKE_INSTALL_PREFIX}/lib/orocos:$ENV{RTT_COMPONENT_PATH}&quot;',
                   '    &quot;LD_LIBRARY_PATH=${CMAKE_INSTALL_PREFIX}/lib:$ENV{LD_LIBRARY_PATH}&quot;',
-                  '    ${ROBOMDA_RTTLUA} ${CMAKE_CURRENT_SOURCE_DIR}/deploy/' || @file || '-check.lua)'),
+                  '    ${ROBOMDA_RTTLUA} ${CMAKE_CURRENT_SOURCE_DIR}/deploy/' || @file || '-check.lua)',
+                  '  set_tests_properties(' || @file || '-check PROPERTIES PASS_REGULAR_EXPRESSION &quot;DEPLOY-RESULT: OK&quot;)'),
         'endif()')"/>
   </xsl:function>
 

@@ -719,7 +719,7 @@
           and exists(o:reader) and exists($whole/o:task-context[@name eq $writer/@task-context]/o:port[@direction eq 'out']
                      [@name eq $connection/o:writer[1]/@port][@accessor-declared = 'true'])"/>
       <xsl:sequence select="(o:writer, o:reader)[@instance = $here] ! concat('  check(comps[', fp:cpp-string(@instance), ']:getPort(',
-              fp:cpp-string(@port), '):connected(), &quot;connection ', $connection/@name, ': ', @instance, '.', @port, ' connected&quot;)'),
+              fp:cpp-string(@port), '):info().connected, &quot;connection ', $connection/@name, ': ', @instance, '.', @port, ' connected&quot;)'),
           o:reader[$sends][@instance = $here] ! (
               concat('  if not (deployment.idle or {})[', fp:cpp-string($writer/@name), '] then'),
               concat('    local fs = comps[', fp:cpp-string(@instance), ']:getPort(', fp:cpp-string(@port), '):read()'),
@@ -790,10 +790,14 @@
         if ($deployment//o:value[@enum = 'true'])
         then '  local function enum_int(v) local i = rtt.Variable(&quot;int&quot;); i:assign(v); return i:tolua() end' else (),
         fp:lua-tuned-values(exists($deployment/o:instance/o:property-value/o:value)),
+        '  -- a Lua error in a check is a failed check (rttlua would exit 0 on it)',
+        '  local checked, failure = pcall(function()',
         $deployment/o:instance ! fp:lua-instance-checks(.),
         fp:lua-connection-checks($deployment, $whole),
         $deployment/o:proxy ! concat('  check(depl:getPeer(', fp:cpp-string(@name), '):getState() == &quot;Running&quot;, &quot;', @name,
                  ' (a component of another process) Running&quot;)'),
+        '  end)',
+        '  check(checked, &quot;the check itself: &quot; .. tostring(failure))',
         if ($deployment/o:coordinator) then (
           '  -- the coordinators first (no switch while the rest stops)',
           '  for c, coordinator in pairs(deployment.coordinators) do coordinator:stop(); coordinator:cleanup(); depl:unloadComponent(c) end')

@@ -308,8 +308,8 @@
     <xsl:param name="names" as="xs:string*"/>
     <xsl:param name="end" as="xs:string"/>
     <xsl:variable name="srv" as="xs:string" select="fp:ros2-type($service/@srv, $service/../@namespace, 'srv')[2]"/>
-    <xsl:sequence select="'  const std::shared_ptr&lt;' || $srv || '::Request&gt;' || ' request'[. = $names] || ',',
-                          '  std::shared_ptr&lt;' || $srv || '::Response&gt;' || ' response'[. = $names] || $end"/>
+    <xsl:sequence select="'  const std::shared_ptr&lt;' || $srv || '::Request&gt;' || ' request'[$names = 'request'] || ',',
+                          '  std::shared_ptr&lt;' || $srv || '::Response&gt;' || ' response'[$names = 'response'] || $end"/>
   </xsl:function>
 
   <!-- the body of the method that calls $client, a service of the

@@ -49,6 +49,8 @@ if loaded then
     v = v:gsub("&lt;", "<"):gsub("&gt;", ">"):gsub("&quot;", "\""):gsub("&apos;", "'")
     return (v:gsub("&amp;", "&"))
   end
+  -- a Lua error in a check is a failed check (rttlua would exit 0 on it)
+  local checked, failure = pcall(function()
   check(near(comps["camera"]:getPeriod(), 0.003), "camera period 0.003 (is " .. tostring(comps["camera"]:getPeriod()) .. ")")
   check(comps["camera"]:getProperty("guid"):get() == want("camera", "guid", "000A47010C0A3D12"), "property camera.guid = " .. tostring(want("camera", "guid", "000A47010C0A3D12")) .. " (is " .. tostring(comps["camera"]:getProperty("guid"):get()) .. ")")
   check(near(comps["forceSensor"]:getPeriod(), 0.003), "forceSensor period 0.003 (is " .. tostring(comps["forceSensor"]:getPeriod()) .. ")")
@@ -62,42 +64,44 @@ if loaded then
   check(near(comps["controller"]:getPeriod(), 0.003), "controller period 0.003 (is " .. tostring(comps["controller"]:getPeriod()) .. ")")
   check(comps["controller"]:getProperty("stiffness"):get() == want("controller", "stiffness", 500), "property controller.stiffness = " .. tostring(want("controller", "stiffness", 500)) .. " (is " .. tostring(comps["controller"]:getProperty("stiffness"):get()) .. ")")
   check(comps["controller"]:getProperty("damping"):get() == want("controller", "damping", 20), "property controller.damping = " .. tostring(want("controller", "damping", 20)) .. " (is " .. tostring(comps["controller"]:getProperty("damping"):get()) .. ")")
-  check(comps["camera"]:getPort("visionValue"):connected(), "connection visionValueConn: camera.visionValue connected")
-  check(comps["vision"]:getPort("visionValue"):connected(), "connection visionValueConn: vision.visionValue connected")
+  check(comps["camera"]:getPort("visionValue"):info().connected, "connection visionValueConn: camera.visionValue connected")
+  check(comps["vision"]:getPort("visionValue"):info().connected, "connection visionValueConn: vision.visionValue connected")
   if not (deployment.idle or {})["camera"] then
     local fs = comps["vision"]:getPort("visionValue"):read()
     check(fs ~= "NoData", "connection visionValueConn: data from camera.visionValue at vision.visionValue (read " .. tostring(fs) .. ")")
   end
-  check(comps["vision"]:getPort("channelPosition"):connected(), "connection channelPositionConn: vision.channelPosition connected")
-  check(comps["controller"]:getPort("channelPosition"):connected(), "connection channelPositionConn: controller.channelPosition connected")
+  check(comps["vision"]:getPort("channelPosition"):info().connected, "connection channelPositionConn: vision.channelPosition connected")
+  check(comps["controller"]:getPort("channelPosition"):info().connected, "connection channelPositionConn: controller.channelPosition connected")
   if not (deployment.idle or {})["vision"] then
     local fs = comps["controller"]:getPort("channelPosition"):read()
     check(fs ~= "NoData", "connection channelPositionConn: data from vision.channelPosition at controller.channelPosition (read " .. tostring(fs) .. ")")
   end
-  check(comps["forceSensor"]:getPort("wrench"):connected(), "connection wrenchConn: forceSensor.wrench connected")
-  check(comps["controller"]:getPort("wrench"):connected(), "connection wrenchConn: controller.wrench connected")
+  check(comps["forceSensor"]:getPort("wrench"):info().connected, "connection wrenchConn: forceSensor.wrench connected")
+  check(comps["controller"]:getPort("wrench"):info().connected, "connection wrenchConn: controller.wrench connected")
   if not (deployment.idle or {})["forceSensor"] then
     local fs = comps["controller"]:getPort("wrench"):read()
     check(fs ~= "NoData", "connection wrenchConn: data from forceSensor.wrench at controller.wrench (read " .. tostring(fs) .. ")")
   end
-  check(comps["arm"]:getPort("armState"):connected(), "connection armStateConn: arm.armState connected")
-  check(comps["controller"]:getPort("armState"):connected(), "connection armStateConn: controller.armState connected")
+  check(comps["arm"]:getPort("armState"):info().connected, "connection armStateConn: arm.armState connected")
+  check(comps["controller"]:getPort("armState"):info().connected, "connection armStateConn: controller.armState connected")
   if not (deployment.idle or {})["arm"] then
     local fs = comps["controller"]:getPort("armState"):read()
     check(fs ~= "NoData", "connection armStateConn: data from arm.armState at controller.armState (read " .. tostring(fs) .. ")")
   end
-  check(comps["controller"]:getPort("armCommand"):connected(), "connection armCommandConn: controller.armCommand connected")
-  check(comps["arm"]:getPort("armCommand"):connected(), "connection armCommandConn: arm.armCommand connected")
+  check(comps["controller"]:getPort("armCommand"):info().connected, "connection armCommandConn: controller.armCommand connected")
+  check(comps["arm"]:getPort("armCommand"):info().connected, "connection armCommandConn: arm.armCommand connected")
   if not (deployment.idle or {})["controller"] then
     local fs = comps["arm"]:getPort("armCommand"):read()
     check(fs ~= "NoData", "connection armCommandConn: data from controller.armCommand at arm.armCommand (read " .. tostring(fs) .. ")")
   end
-  check(comps["arm"]:getPort("toolPose"):connected(), "connection toolPoseConn: arm.toolPose connected")
-  check(comps["vision"]:getPort("toolPose"):connected(), "connection toolPoseConn: vision.toolPose connected")
+  check(comps["arm"]:getPort("toolPose"):info().connected, "connection toolPoseConn: arm.toolPose connected")
+  check(comps["vision"]:getPort("toolPose"):info().connected, "connection toolPoseConn: vision.toolPose connected")
   if not (deployment.idle or {})["arm"] then
     local fs = comps["vision"]:getPort("toolPose"):read()
     check(fs ~= "NoData", "connection toolPoseConn: data from arm.toolPose at vision.toolPose (read " .. tostring(fs) .. ")")
   end
+  end)
+  check(checked, "the check itself: " .. tostring(failure))
   -- in the reverse start order
   for i = #names, 1, -1 do comps[names[i]]:stop() end
   for i = #names, 1, -1 do comps[names[i]]:cleanup() end
