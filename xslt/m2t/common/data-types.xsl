@@ -76,16 +76,17 @@
                      || (if (*:doc) then '  // ' || normalize-space(*:doc) else '')),
           '};'),
         if (exists($namespaces)) then ('', reverse($namespaces) ! ('}  // namespace ' || .)) else (),
+        '',
+        '#endif  // ' || $guard,
         if (exists($namespaces)) then (
           '',
           '// Code written for the global name (atomic code that one package and another',
-          '// both build) defines ROBOMDA_GLOBAL_TYPE_NAMES before it includes this header',
-          '// (the first include of it decides).',
+          '// both build) defines ROBOMDA_GLOBAL_TYPE_NAMES before it includes this header;',
+          '// outside the include guard, so that it holds after an earlier include too (and',
+          '// so not the last #endif cpplint takes for the guard''s: NOLINT on that line only).',
           '#ifdef ROBOMDA_GLOBAL_TYPE_NAMES',
           'using ' || $type/@cpp-name || ';',
-          '#endif')
-        else (),
-        '',
-        '#endif  // ' || $guard))"/>
+          '#endif  // ROBOMDA_GLOBAL_TYPE_NAMES NOLINT(build/header_guard)')
+        else ()))"/>
   </xsl:function>
 </xsl:stylesheet>
